@@ -1,0 +1,79 @@
+#include "ferro/contact/kalker_coefficients.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace ferro::contact {
+namespace {
+
+// Annex A.2 (Kalker 1967). Rows 0-9: a/b = 0.1 ... 1.0; rows 10-18: b/a = 0.9 ... 0.1.
+// Columns: nu = 0, 1/4, 1/2.
+constexpr int kRows = 19;
+using Column3 = std::array<double, 3>;
+constexpr std::array<Column3, kRows> kC11 = {{
+    {2.51, 3.31, 4.85}, {2.59, 3.37, 4.81}, {2.68, 3.44, 4.80}, {2.78, 3.53, 4.82},
+    {2.88, 3.62, 4.83}, {2.98, 3.72, 4.91}, {3.09, 3.81, 4.97}, {3.19, 3.91, 5.05},
+    {3.29, 4.01, 5.12}, {3.40, 4.12, 5.20}, {3.51, 4.22, 5.30}, {3.65, 4.36, 5.42},
+    {3.82, 4.54, 5.58}, {4.06, 4.78, 5.80}, {4.37, 5.10, 6.11}, {4.84, 5.57, 6.57},
+    {5.57, 6.34, 7.34}, {6.96, 7.78, 8.82}, {10.7, 11.7, 12.9}}};
+constexpr std::array<Column3, kRows> kC22 = {{
+    {2.51, 2.52, 2.53}, {2.59, 2.63, 2.66}, {2.68, 2.75, 2.81}, {2.78, 2.88, 2.98},
+    {2.88, 3.01, 3.14}, {2.98, 3.14, 3.31}, {3.09, 3.28, 3.48}, {3.19, 3.41, 3.65},
+    {3.29, 3.54, 3.82}, {3.40, 3.67, 3.98}, {3.51, 3.81, 4.16}, {3.65, 3.99, 4.39},
+    {3.82, 4.21, 4.67}, {4.06, 4.50, 5.04}, {4.37, 4.90, 5.56}, {4.84, 5.48, 6.31},
+    {5.57, 6.40, 7.51}, {6.96, 8.14, 9.79}, {10.7, 12.8, 16.0}}};
+constexpr std::array<Column3, kRows> kC23 = {{
+    {0.334, 0.473, 0.731}, {0.483, 0.603, 0.809}, {0.607, 0.715, 0.889}, {0.720, 0.823, 0.977},
+    {0.827, 0.929, 1.07},  {0.930, 1.03, 1.18},   {1.03, 1.14, 1.29},    {1.13, 1.25, 1.40},
+    {1.23, 1.36, 1.51},    {1.33, 1.47, 1.63},    {1.44, 1.59, 1.77},    {1.58, 1.75, 1.94},
+    {1.76, 1.95, 2.18},    {2.01, 2.23, 2.50},    {2.35, 2.62, 2.96},    {2.88, 3.24, 3.70},
+    {3.79, 4.32, 5.01},    {5.72, 6.63, 7.89},    {12.2, 14.6, 18.0}}};
+constexpr std::array<Column3, kRows> kC33 = {{
+    {6.42, 8.28, 11.7},    {3.46, 4.27, 5.66},    {2.49, 2.96, 3.72},    {2.02, 2.32, 2.77},
+    {1.74, 1.93, 2.22},    {1.56, 1.68, 1.86},    {1.43, 1.50, 1.60},    {1.34, 1.37, 1.42},
+    {1.27, 1.27, 1.27},    {1.21, 1.19, 1.16},    {1.16, 1.11, 1.06},    {1.10, 1.04, 0.954},
+    {1.05, 0.965, 0.852},  {1.01, 0.892, 0.751},  {0.958, 0.819, 0.650}, {0.912, 0.747, 0.549},
+    {0.868, 0.674, 0.446}, {0.828, 0.601, 0.341}, {0.795, 0.526, 0.228}}};
+
+// Ellipse parameter of row i: a/b for rows 0-9, 2 - b/a for rows 10-18 (so it increases).
+constexpr double row_parameter(int i) { return i <= 9 ? 0.1 * (i + 1) : 2.0 - 0.1 * (18 - i + 1); }
+
+// Quadratic Lagrange interpolation in nu through the nodes 0, 1/4, 1/2.
+double in_poisson(const Column3& c, double nu) {
+  constexpr double n0 = 0.0, n1 = 0.25, n2 = 0.5;
+  const double l0 = (nu - n1) * (nu - n2) / ((n0 - n1) * (n0 - n2));
+  const double l1 = (nu - n0) * (nu - n2) / ((n1 - n0) * (n1 - n2));
+  const double l2 = (nu - n0) * (nu - n1) / ((n2 - n0) * (n2 - n1));
+  return l0 * c[0] + l1 * c[1] + l2 * c[2];
+}
+
+double lookup(const std::array<Column3, kRows>& table, double t, double nu) {
+  if (t <= row_parameter(0)) return in_poisson(table[0], nu);
+  if (t >= row_parameter(kRows - 1)) return in_poisson(table[kRows - 1], nu);
+  int i = 0;
+  while (i < kRows - 2 && t > row_parameter(i + 1)) ++i;
+  const double t0 = row_parameter(i), t1 = row_parameter(i + 1);
+  const double w = (t - t0) / (t1 - t0);
+  return (1.0 - w) * in_poisson(table[i], nu) + w * in_poisson(table[i + 1], nu);
+}
+
+}  // namespace
+
+KalkerCoefficients kalker_coefficients_table(double a, double b, double poisson) {
+  if (!(a > 0.0) || !(b > 0.0) || !std::isfinite(a) || !std::isfinite(b)) {
+    throw std::invalid_argument(
+        fmt::format("kalker_coefficients_table: semi-axes must be positive, got a={}, b={}", a, b));
+  }
+  if (!(poisson >= 0.0 && poisson <= 0.5)) {
+    throw std::invalid_argument(
+        fmt::format("kalker_coefficients_table: poisson must lie in [0, 0.5], got {}", poisson));
+  }
+  const double t = a <= b ? a / b : 2.0 - b / a;
+  return KalkerCoefficients{lookup(kC11, t, poisson), lookup(kC22, t, poisson),
+                            lookup(kC23, t, poisson), lookup(kC33, t, poisson)};
+}
+
+}  // namespace ferro::contact
