@@ -3,6 +3,7 @@
 
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 #include "ferro/scenarios/cli.hpp"
 
@@ -12,12 +13,24 @@ int run_main(int argc, char** argv) {
   CLI::App app{"ferrodyn: railway vehicle dynamics with a research-grade wheel-rail contact layer"};
   app.set_version_flag("--version", std::string("ferrodyn ") + FERRO_VERSION);
   app.require_subcommand(1);
+  VerbHandler handler;
+  add_scene_commands(app, handler);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
   }
-  return 0;
+  if (!handler) return kExitOk;
+  try {
+    return handler();
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "ferrodyn: error: {}\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ferrodyn: failure: {}\n", e.what());
+    return kExitRunFailure;
+  }
 }
 
 }  // namespace ferro::cli

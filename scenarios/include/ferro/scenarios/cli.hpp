@@ -1,5 +1,12 @@
 #pragma once
-// The ferrodyn command line. Each verb group registers its subcommands on the root app.
+// The ferrodyn command line. Each verb group (one file in scenarios/src/cli/) registers its
+// subcommands on the root app; the chosen subcommand stores its handler, which run_main calls.
+//
+// Error convention for handlers: throw std::invalid_argument for bad user input (the message
+// names the file, key or option and the allowed values) -> exit code 2; throw
+// std::runtime_error for a failed run -> exit code 1. Handlers return their own exit code.
+
+#include <functional>
 
 namespace CLI {
 class App;
@@ -7,9 +14,17 @@ class App;
 
 namespace ferro::cli {
 
+using VerbHandler = std::function<int()>;
+
+/// Exit codes of the ferrodyn program.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitRunFailure = 1;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitInterrupted = 130;
+
 /// Parses argv, runs the chosen verb, returns the process exit code.
-/// Exit codes: 0 success, 1 run failure (solver, I/O), 2 bad input (scene, options),
-/// 130 interrupted by SIGINT/SIGTERM (output kept).
 int run_main(int argc, char** argv);
 
-}  // namespace ferro::cli
+// Verb groups. Each adds its subcommands to `app` and, from the subcommand's callback, sets
+// `handler` to the work to do once parsing has finished.
+void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, plot, validate
