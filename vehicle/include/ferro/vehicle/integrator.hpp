@@ -1,0 +1,69 @@
+#pragma once
+// Time integrators behind one interface: SUNDIALS CVODE (BDF + Newton with a dense or banded
+// linear solver; Adams + fixed-point), SUNDIALS ARKODE (explicit Runge-Kutta), Boost.Odeint
+// (runge_kutta_dopri5 with dense output, rosenbrock4). No physics in here.
+
+#include <functional>
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ferro/vehicle/ode_system.hpp"
+
+namespace ferro::vehicle {
+
+/// Integrator choice and tolerances, as read from a scene's `solver` part.
+struct IntegratorSettings {
+  std::string method = "cvode_bdf";  ///< one of available_integrators()
+  double rtol = 1e-8;                ///< relative tolerance [-]
+  double atol = 1e-10;               ///< absolute tolerance [state units]
+  double max_step = std::numeric_limits<double>::infinity();  ///< [s]
+  double initial_step = 0.0;  ///< [s]; 0 lets the integrator choose
+  std::string linear_solver = "dense";  ///< cvode_bdf only: "dense" or "band"
+  long max_steps = 1000000;             ///< internal steps allowed between two outputs
+  int erk_order = 4;                    ///< arkode_erk: method order (2..8)
+
+  /// Throws std::invalid_argument naming the field and the allowed values.
+  void validate(const std::string& where = "solver") const;
+};
+
+/// Names accepted in IntegratorSettings::method.
+[[nodiscard]] const std::vector<std::string>& available_integrators();
+
+/// Called at every output time with the interpolated state; return false to stop the run
+/// (interruption). t is the output time.
+using Observer = std::function<bool(double t, std::span<const double> x)>;
+
+struct IntegrationResult {
+  enum class Status { kCompleted, kInterrupted, kSolverFailure };
+  Status status = Status::kCompleted;
+  double t_reached = 0.0;         ///< last time with a valid state [s]
+  std::vector<double> state;      ///< state at t_reached
+  std::string message;            ///< cause of a failure, empty otherwise
+  long steps = 0;                 ///< internal steps taken
+  long rhs_evaluations = 0;       ///< right-hand-side calls
+};
+
+[[nodiscard]] std::string to_string(IntegrationResult::Status status);
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  /// Integrates from (output_times.front(), x0) through every output time, calling `observer`
+  /// at each (including the first). Never throws for solver trouble: the result says what
+  /// happened, when, and in which state.
+  virtual IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
+                                      const std::vector<double>& output_times,
+                                      const Observer& observer) = 0;
+};
+
+/// Factory from settings; throws std::invalid_argument for an unknown method.
+[[nodiscard]] std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
+
+/// Output times t0, t0+dt, ..., t_end (t_end included even if not a multiple of dt).
+[[nodiscard]] std::vector<double> output_grid(double t0, double t_end, double dt);
+
+}  // namespace ferro::vehicle

@@ -1,0 +1,53 @@
+#pragma once
+// A first-order ODE system x' = f(t, x) as the integrators see it, plus the named output
+// signals a run records. Integrators contain no physics; models contain no integrator.
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace ferro::vehicle {
+
+/// Return codes of rhs(), SUNDIALS' contract: 0 ok, > 0 recoverable (the solver retries with a
+/// smaller step), < 0 fatal (the run stops and reports the cause).
+inline constexpr int kRhsOk = 0;
+inline constexpr int kRhsRecoverable = 1;
+inline constexpr int kRhsFatal = -1;
+
+/// A named output signal with its SI unit.
+struct SignalInfo {
+  std::string name;
+  std::string unit;
+  std::string description;
+};
+
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+
+  /// Number of states.
+  [[nodiscard]] virtual std::size_t size() const = 0;
+  /// x' = f(t, x). Must be a pure function of (t, x): no hidden mutable state (FSAL steppers reuse
+  /// derivatives). Returns kRhsOk, a positive recoverable code or a negative fatal code.
+  virtual int rhs(double t, std::span<const double> x, std::span<double> xdot) const = 0;
+  /// State names with units, e.g. "y [m]"; size() entries.
+  [[nodiscard]] virtual std::vector<SignalInfo> state_info() const = 0;
+  /// Output signals derived from (t, x) (forces, creepages, ...), written beside the states.
+  [[nodiscard]] virtual std::vector<SignalInfo> signal_info() const { return {}; }
+  /// Evaluates signal_info().size() derived signals into `out`.
+  virtual void signals(double t, std::span<const double> x, std::span<double> out) const {}
+  /// Optional half-bandwidths of the Jacobian (upper, lower) for banded linear solvers;
+  /// {-1, -1} when unknown (dense).
+  [[nodiscard]] virtual std::pair<int, int> jacobian_bandwidth() const { return {-1, -1}; }
+};
+
+/// Central-difference Jacobian J = df/dx at (t, x), row-major size() x size(). Step per state:
+/// h_j = rel_step * max(|x_j|, scale_j) with scale_j = 1 when not given. Throws
+/// std::runtime_error when rhs fails.
+[[nodiscard]] std::vector<double> numerical_jacobian(const OdeSystem& system, double t,
+                                                     std::span<const double> x,
+                                                     double rel_step = 1e-7,
+                                                     std::span<const double> scale = {});
+
+}  // namespace ferro::vehicle

@@ -1,0 +1,48 @@
+#pragma once
+// Linear stability: eigenvalues of the Jacobian of an OdeSystem at an equilibrium, damping
+// ratio of the least damped mode against speed, and the speed where it crosses zero.
+
+#include <complex>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "ferro/vehicle/ode_system.hpp"
+
+namespace ferro::vehicle {
+
+struct Mode {
+  std::complex<double> eigenvalue;  ///< [1/s]
+  double damping_ratio = 0.0;       ///< zeta = -Re(lambda)/|lambda| [-]
+  double frequency_hz = 0.0;        ///< |Im(lambda)| / 2 pi [Hz]
+};
+
+/// Modes of the system linearised at (t, x_eq) by central differences, sorted by increasing
+/// damping ratio (least damped first). Eigenvalues with |lambda| < 1e-9 /s (neutral rigid-body
+/// modes) are left out.
+[[nodiscard]] std::vector<Mode> linear_modes(const OdeSystem& system, double t,
+                                             std::span<const double> x_eq);
+
+/// Builds the system at a given speed [m/s].
+using SystemAtSpeed = std::function<std::unique_ptr<OdeSystem>(double speed)>;
+
+struct SweepPoint {
+  double speed = 0.0;          ///< [m/s]
+  Mode least_damped;           ///< least damped mode at that speed
+};
+
+/// Least damped mode at each speed.
+[[nodiscard]] std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory,
+                                                    const std::vector<double>& speeds,
+                                                    std::span<const double> x_eq);
+
+/// Lowest speed in [v_min, v_max] where the least damped mode's damping ratio crosses zero
+/// (stable below): scan on `scan_points` speeds, then bisection to a relative width `rel_tol`.
+/// Empty when no crossing is found in the range.
+[[nodiscard]] std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
+                                                   double v_max, std::span<const double> x_eq,
+                                                   int scan_points = 64, double rel_tol = 1e-10);
+
+}  // namespace ferro::vehicle

@@ -1,0 +1,162 @@
+// Boost.Odeint adapters: runge_kutta_dopri5 with dense output, and rosenbrock4 (linearly
+// implicit, 4th order) with a central-difference Jacobian of the system.
+//
+// Known deviations: Odeint has no notion of a recoverable right-hand-side error; a positive
+// return code from rhs() is reported as a solver failure (with time, state and cause) instead of
+// being retried with a smaller step as SUNDIALS does.
+#include <fmt/format.h>
+
+#include <boost/numeric/odeint/integrate/integrate.hpp>
+#include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "integrator_impl.hpp"
+#include "odeint_rosenbrock_raw.hpp"
+
+namespace ferro::vehicle::detail {
+namespace odeint = boost::numeric::odeint;
+namespace {
+
+struct RhsFailure : std::runtime_error {
+  RhsFailure(int code, double t)
+      : std::runtime_error(fmt::format("right-hand side returned {} ({}) at t = {:.9g} s", code,
+                                       code > 0 ? "recoverable; Odeint cannot retry" : "fatal", t)),
+        time(t) {}
+  double time;
+};
+
+struct StepLimit : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Runs a dense-output stepper through the output times. State type V is std::vector<double> or
+// ublas::vector<double>.
+template <class Dense, class System, class V>
+IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<double>& times,
+                             const Observer& observer, const IntegratorSettings& s, long& rhs_count) {
+  IntegrationResult result;
+  const std::size_t n = x.size();
+  auto record = [&](double t, const V& state) {
+    result.t_reached = t;
+    result.state.assign(state.begin(), state.end());
+    return observer(t, result.state);
+  };
+  if (!record(times.front(), x)) {
+    result.status = IntegrationResult::Status::kInterrupted;
+    return result;
+  }
+  const double span = times.back() - times.front();
+  double dt0 = s.initial_step > 0.0 ? s.initial_step : std::max(span, 1e-12) * 1e-6;
+  if (std::isfinite(s.max_step)) dt0 = std::min(dt0, s.max_step);
+  stepper.initialize(x, times.front(), dt0);
+  std::size_t next = 1;
+  long steps_since_output = 0;
+  V out(n);
+  try {
+    while (next < times.size()) {
+      while (next < times.size() && times[next] <= stepper.current_time()) {
+        stepper.calc_state(times[next], out);
+        if (!record(times[next], out)) {
+          result.status = IntegrationResult::Status::kInterrupted;
+          return result;
+        }
+        ++next;
+        steps_since_output = 0;
+      }
+      if (next >= times.size()) break;
+      if (++steps_since_output > s.max_steps) {
+        throw StepLimit(fmt::format("more than max_steps = {} steps before output t = {:.9g} s",
+                                    s.max_steps, times[next]));
+      }
+      stepper.do_step(sys);
+      ++result.steps;
+      const auto& xc = stepper.current_state();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(xc[i])) {
+          throw std::runtime_error(fmt::format("state {} became non-finite at t = {:.9g} s", i,
+                                               stepper.current_time()));
+        }
+      }
+    }
+  } catch (const std::exception& e) {
+    result.status = IntegrationResult::Status::kSolverFailure;
+    result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}", s.method,
+                                 stepper.current_time(), result.t_reached, e.what());
+    result.t_reached = stepper.current_time();
+    const auto& xc = stepper.current_state();
+    result.state.assign(xc.begin(), xc.end());
+  }
+  result.rhs_evaluations = rhs_count;
+  return result;
+}
+
+class OdeintIntegrator final : public Integrator {
+ public:
+  explicit OdeintIntegrator(IntegratorSettings s) : s_(std::move(s)) {}
+  [[nodiscard]] std::string name() const override { return s_.method; }
+
+  IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
+                              const std::vector<double>& times, const Observer& observer) override {
+    const std::size_t n = system.size();
+    long rhs_count = 0;
+    const double max_dt = std::isfinite(s_.max_step) ? s_.max_step : 0.0;
+    if (s_.method == "odeint_dopri5") {
+      using State = std::vector<double>;
+      auto sys = [&](const State& x, State& dxdt, double t) {
+        ++rhs_count;
+        const int rc = system.rhs(t, x, dxdt);
+        if (rc != kRhsOk) throw RhsFailure(rc, t);
+      };
+      auto stepper = odeint::make_dense_output(s_.atol, s_.rtol, max_dt,
+                                               odeint::runge_kutta_dopri5<State>());
+      return dense_loop(stepper, sys, State(x0.begin(), x0.end()), times, observer, s_, rhs_count);
+    }
+    // rosenbrock4 runs in a C++17 translation unit (see odeint_rosenbrock_raw.hpp).
+    std::vector<double> fp(n), fm(n);
+    auto rhs = [&](double t, const double* x, double* xdot) {
+      ++rhs_count;
+      return system.rhs(t, std::span<const double>(x, n), std::span<double>(xdot, n));
+    };
+    auto jac = [&](double t, const double* x, double* J, double* dfdt) {
+      const std::span<const double> xs(x, n);
+      const auto rows = numerical_jacobian(system, t, xs);
+      std::copy(rows.begin(), rows.end(), J);
+      const double ht = 1e-7 * std::max(1.0, std::abs(t));
+      if (system.rhs(t + ht, xs, fp) != kRhsOk || system.rhs(t - ht, xs, fm) != kRhsOk) {
+        throw RhsFailure(kRhsFatal, t);
+      }
+      rhs_count += 2 * static_cast<long>(n) + 2;
+      for (std::size_t i = 0; i < n; ++i) dfdt[i] = (fp[i] - fm[i]) / (2.0 * ht);
+    };
+    auto observe = [&](double t, const double* x) {
+      return observer(t, std::span<const double>(x, n));
+    };
+    const RawSettings raw{s_.rtol, s_.atol, max_dt, s_.initial_step, s_.max_steps};
+    RawResult r = rosenbrock4_run(n, std::vector<double>(x0.begin(), x0.end()), times, raw, rhs,
+                                  jac, observe);
+    IntegrationResult result;
+    result.status = r.status == 0   ? IntegrationResult::Status::kCompleted
+                    : r.status == 1 ? IntegrationResult::Status::kInterrupted
+                                    : IntegrationResult::Status::kSolverFailure;
+    result.t_reached = r.t_reached;
+    result.state = std::move(r.state);
+    result.message = std::move(r.message);
+    result.steps = r.steps;
+    result.rhs_evaluations = rhs_count;
+    return result;
+  }
+
+ private:
+  IntegratorSettings s_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_odeint(const IntegratorSettings& settings) {
+  return std::make_unique<OdeintIntegrator>(settings);
+}
+
+}  // namespace ferro::vehicle::detail

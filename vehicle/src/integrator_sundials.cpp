@@ -1,0 +1,236 @@
+// SUNDIALS adapters: CVODE (BDF + Newton, dense or banded; Adams + fixed point) and ARKODE
+// ERKStep (explicit Runge-Kutta). SUNDIALS 6.x API.
+#include <arkode/arkode_erkstep.h>
+#include <cvode/cvode.h>
+#include <fmt/format.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_band.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_band.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <string>
+
+#include "integrator_impl.hpp"
+
+namespace ferro::vehicle::detail {
+namespace {
+
+struct UserData {
+  const OdeSystem* system = nullptr;
+  long rhs_evaluations = 0;
+  std::string last_error;  // from the SUNDIALS error handler or a caught exception
+};
+
+int sundials_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
+  auto* ud = static_cast<UserData*>(user_data);
+  const auto n = static_cast<std::size_t>(N_VGetLength(y));
+  ++ud->rhs_evaluations;
+  try {
+    return ud->system->rhs(t, std::span<const double>(N_VGetArrayPointer(y), n),
+                           std::span<double>(N_VGetArrayPointer(ydot), n));
+  } catch (const std::exception& e) {
+    ud->last_error = fmt::format("right-hand side threw at t = {} s: {}", t, e.what());
+    return kRhsFatal;
+  }
+}
+
+void error_handler(int error_code, const char* module, const char* function, char* msg,
+                   void* user_data) {
+  auto* ud = static_cast<UserData*>(user_data);
+  if (ud->last_error.empty() || error_code != 0) {
+    ud->last_error = fmt::format("{}::{}: {}", module, function, msg);
+  }
+}
+
+// Owns the SUNDIALS objects of one run.
+struct Handles {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  SUNNonlinearSolver NLS = nullptr;
+  void* mem = nullptr;
+  bool arkode = false;
+  ~Handles() {
+    if (mem != nullptr) {
+      if (arkode) {
+        ERKStepFree(&mem);
+      } else {
+        CVodeFree(&mem);
+      }
+    }
+    if (NLS != nullptr) SUNNonlinSolFree(NLS);
+    if (LS != nullptr) SUNLinSolFree(LS);
+    if (A != nullptr) SUNMatDestroy(A);
+    if (y != nullptr) N_VDestroy(y);
+    if (ctx != nullptr) SUNContext_Free(&ctx);
+  }
+};
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw std::runtime_error(fmt::format("SUNDIALS setup failed in {} (flag {})", what, flag));
+}
+
+// The output loop, shared by CVODE and ARKODE. `step_to` advances to tout and returns the flag;
+// `current` returns the solver's internal time and state for failure reports.
+template <class StepTo, class Current, class FlagName>
+IntegrationResult run_loop(Handles& h, UserData& ud, const std::vector<double>& times,
+                           const Observer& observer, StepTo step_to, Current current,
+                           FlagName flag_name) {
+  IntegrationResult result;
+  const auto n = static_cast<std::size_t>(N_VGetLength(h.y));
+  double* yp = N_VGetArrayPointer(h.y);
+  result.t_reached = times.front();
+  result.state.assign(yp, yp + n);
+  if (!observer(times.front(), result.state)) {
+    result.status = IntegrationResult::Status::kInterrupted;
+    return result;
+  }
+  for (std::size_t i = 1; i < times.size(); ++i) {
+    double t = 0.0;
+    const int flag = step_to(times[i], &t);
+    if (flag < 0) {
+      double t_cur = result.t_reached;
+      std::vector<double> y_cur = result.state;
+      current(&t_cur, y_cur);
+      result.status = IntegrationResult::Status::kSolverFailure;
+      result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
+                                   flag_name(flag), t_cur, result.t_reached,
+                                   ud.last_error.empty() ? "no detail" : ud.last_error);
+      result.t_reached = t_cur;
+      result.state = std::move(y_cur);
+      return result;
+    }
+    result.t_reached = t;
+    result.state.assign(yp, yp + n);
+    if (!observer(t, result.state)) {
+      result.status = IntegrationResult::Status::kInterrupted;
+      return result;
+    }
+  }
+  return result;
+}
+
+class CvodeIntegrator final : public Integrator {
+ public:
+  explicit CvodeIntegrator(IntegratorSettings s) : s_(std::move(s)) {}
+  [[nodiscard]] std::string name() const override { return s_.method; }
+
+  IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
+                              const std::vector<double>& times, const Observer& observer) override {
+    Handles h;
+    UserData ud{&system, 0, {}};
+    const auto n = static_cast<sunindextype>(system.size());
+    check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
+    h.y = N_VNew_Serial(n, h.ctx);
+    std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(h.y));
+    const bool bdf = s_.method == "cvode_bdf";
+    h.mem = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, h.ctx);
+    if (h.mem == nullptr) throw std::runtime_error("CVodeCreate failed");
+    check(CVodeSetErrHandlerFn(h.mem, error_handler, &ud), "CVodeSetErrHandlerFn");
+    check(CVodeInit(h.mem, sundials_rhs, times.front(), h.y), "CVodeInit");
+    check(CVodeSetUserData(h.mem, &ud), "CVodeSetUserData");
+    check(CVodeSStolerances(h.mem, s_.rtol, s_.atol), "CVodeSStolerances");
+    if (std::isfinite(s_.max_step)) check(CVodeSetMaxStep(h.mem, s_.max_step), "CVodeSetMaxStep");
+    if (s_.initial_step > 0.0) check(CVodeSetInitStep(h.mem, s_.initial_step), "CVodeSetInitStep");
+    check(CVodeSetMaxNumSteps(h.mem, s_.max_steps), "CVodeSetMaxNumSteps");
+    if (bdf) {
+      auto [upper, lower] = system.jacobian_bandwidth();
+      if (s_.linear_solver == "band") {
+        if (upper < 0 || lower < 0) upper = lower = static_cast<int>(n) - 1;
+        h.A = SUNBandMatrix(n, upper, lower, h.ctx);
+        h.LS = SUNLinSol_Band(h.y, h.A, h.ctx);
+      } else {
+        h.A = SUNDenseMatrix(n, n, h.ctx);
+        h.LS = SUNLinSol_Dense(h.y, h.A, h.ctx);
+      }
+      check(CVodeSetLinearSolver(h.mem, h.LS, h.A), "CVodeSetLinearSolver");
+    } else {
+      h.NLS = SUNNonlinSol_FixedPoint(h.y, 0, h.ctx);
+      check(CVodeSetNonlinearSolver(h.mem, h.NLS), "CVodeSetNonlinearSolver");
+    }
+    auto result = run_loop(
+        h, ud, times, observer,
+        [&](double tout, double* t) { return CVode(h.mem, tout, h.y, t, CV_NORMAL); },
+        [&](double* t, std::vector<double>& y) {
+          if (CVodeGetCurrentTime(h.mem, t) < 0) return;
+          N_Vector tmp = N_VNew_Serial(n, h.ctx);
+          if (CVodeGetDky(h.mem, *t, 0, tmp) >= 0) {
+            y.assign(N_VGetArrayPointer(tmp), N_VGetArrayPointer(tmp) + n);
+          }
+          N_VDestroy(tmp);
+        },
+        [](int flag) { return std::string(CVodeGetReturnFlagName(flag)); });
+    long steps = 0;
+    CVodeGetNumSteps(h.mem, &steps);
+    result.steps = steps;
+    result.rhs_evaluations = ud.rhs_evaluations;
+    return result;
+  }
+
+ private:
+  IntegratorSettings s_;
+};
+
+class ArkodeErkIntegrator final : public Integrator {
+ public:
+  explicit ArkodeErkIntegrator(IntegratorSettings s) : s_(std::move(s)) {}
+  [[nodiscard]] std::string name() const override { return s_.method; }
+
+  IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
+                              const std::vector<double>& times, const Observer& observer) override {
+    Handles h;
+    h.arkode = true;
+    UserData ud{&system, 0, {}};
+    const auto n = static_cast<sunindextype>(system.size());
+    check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
+    h.y = N_VNew_Serial(n, h.ctx);
+    std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(h.y));
+    h.mem = ERKStepCreate(sundials_rhs, times.front(), h.y, h.ctx);
+    if (h.mem == nullptr) throw std::runtime_error("ERKStepCreate failed");
+    check(ERKStepSetErrHandlerFn(h.mem, error_handler, &ud), "ERKStepSetErrHandlerFn");
+    check(ERKStepSetUserData(h.mem, &ud), "ERKStepSetUserData");
+    check(ERKStepSStolerances(h.mem, s_.rtol, s_.atol), "ERKStepSStolerances");
+    check(ERKStepSetOrder(h.mem, s_.erk_order), "ERKStepSetOrder");
+    if (std::isfinite(s_.max_step)) check(ERKStepSetMaxStep(h.mem, s_.max_step), "ERKStepSetMaxStep");
+    if (s_.initial_step > 0.0) check(ERKStepSetInitStep(h.mem, s_.initial_step), "ERKStepSetInitStep");
+    check(ERKStepSetMaxNumSteps(h.mem, s_.max_steps), "ERKStepSetMaxNumSteps");
+    auto result = run_loop(
+        h, ud, times, observer,
+        [&](double tout, double* t) { return ERKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
+        [&](double* t, std::vector<double>& y) {
+          if (ERKStepGetCurrentTime(h.mem, t) < 0) return;
+          N_Vector tmp = N_VNew_Serial(n, h.ctx);
+          if (ERKStepGetDky(h.mem, *t, 0, tmp) >= 0) {
+            y.assign(N_VGetArrayPointer(tmp), N_VGetArrayPointer(tmp) + n);
+          }
+          N_VDestroy(tmp);
+        },
+        [](int flag) { return std::string(ERKStepGetReturnFlagName(flag)); });
+    long steps = 0;
+    ERKStepGetNumSteps(h.mem, &steps);
+    result.steps = steps;
+    result.rhs_evaluations = ud.rhs_evaluations;
+    return result;
+  }
+
+ private:
+  IntegratorSettings s_;
+};
+
+}  // namespace
+
+std::unique_ptr<Integrator> make_cvode(const IntegratorSettings& settings) {
+  return std::make_unique<CvodeIntegrator>(settings);
+}
+std::unique_ptr<Integrator> make_arkode_erk(const IntegratorSettings& settings) {
+  return std::make_unique<ArkodeErkIntegrator>(settings);
+}
+
+}  // namespace ferro::vehicle::detail
