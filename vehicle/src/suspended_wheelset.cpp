@@ -126,7 +126,7 @@ double analytic_critical_speed(const SuspendedWheelsetParams& p, const CreepCoef
   if (std::abs(creep.f11 - creep.f22) > 1e-12 * creep.f11) {
     throw std::invalid_argument("analytic_critical_speed: formula (151) needs f11 = f22");
   }
-  if (std::abs(p.yaw_inertia - p.mass * e * e) > 1e-9 * p.yaw_inertia) {
+  if (std::abs(p.yaw_inertia - p.mass * e * e) > 1e-6 * p.yaw_inertia) {
     throw std::invalid_argument("analytic_critical_speed: formula (151) needs I_zz = m e^2");
   }
   if (p.primary_damping_x != 0.0 || p.primary_damping_y != 0.0) {

@@ -1,0 +1,106 @@
+#include "terminal.hpp"
+
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+
+extern char** environ;
+
+namespace ferro::cli {
+namespace {
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) { g_signal = sig; }
+
+std::string format_seconds(double s) {
+  if (s < 60.0) return fmt::format("{:.1f} s", s);
+  return fmt::format("{}m{:02d}s", static_cast<int>(s / 60.0), static_cast<int>(s) % 60);
+}
+}  // namespace
+
+Progress::Progress(double t_end, std::FILE* out)
+    : t_end_(t_end), out_(out), tty_(isatty(fileno(out)) != 0),
+      start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+
+void Progress::update(double t) {
+  const auto now = std::chrono::steady_clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  const double frac = std::clamp(t / t_end_, 0.0, 1.0);
+  const double eta = frac > 0.0 ? elapsed * (1.0 - frac) / frac : 0.0;
+  if (tty_) {
+    if (elapsed < 1.0 || std::chrono::duration<double>(now - last_draw_).count() < 0.1) return;
+    last_draw_ = now;
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(frac * kWidth);
+    fmt::print(out_, "\r[{}{}] {:5.1f}%  t = {:.3g} / {:.3g} s  elapsed {}  ETA {}   ",
+               std::string(static_cast<std::size_t>(filled), '#'),
+               std::string(static_cast<std::size_t>(kWidth - filled), '.'), 100.0 * frac, t, t_end_,
+               format_seconds(elapsed), format_seconds(eta));
+    std::fflush(out_);
+    drawn_ = true;
+    return;
+  }
+  const int decile = static_cast<int>(frac * 10.0 + 1e-9);
+  if (elapsed >= 1.0 && decile > last_decile_ && decile < 10) {
+    last_decile_ = decile;
+    fmt::print(out_, "progress: {}% (t = {:.6g} s of {:.6g} s, elapsed {}, ETA {})\n", decile * 10, t,
+               t_end_, format_seconds(elapsed), format_seconds(eta));
+    std::fflush(out_);
+  }
+}
+
+void Progress::finish() {
+  if (tty_ && drawn_) fmt::print(out_, "\n");
+}
+
+InterruptGuard::InterruptGuard() {
+  g_signal = 0;
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &old_int_);
+  sigaction(SIGTERM, &sa, &old_term_);
+}
+
+InterruptGuard::~InterruptGuard() {
+  sigaction(SIGINT, &old_int_, nullptr);
+  sigaction(SIGTERM, &old_term_, nullptr);
+}
+
+int InterruptGuard::signal_received() { return g_signal; }
+
+int run_program(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string python_program() {
+  if (const char* env = std::getenv("FERRO_PYTHON"); env != nullptr && *env != '\0') return env;
+  if (std::filesystem::exists("/usr/bin/python3")) return "/usr/bin/python3";
+  return "python3";
+}
+
+std::string plot_script_path() {
+  namespace fs = std::filesystem;
+  if (const char* env = std::getenv("FERRO_PLOT_SCRIPT"); env != nullptr && fs::exists(env)) return env;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed = exe.parent_path().parent_path() / "share" / "ferrodyn" / "ferroplot.py";
+    if (fs::exists(installed)) return installed.string();
+  }
+  const fs::path source = fs::path(FERRO_SOURCE_DIR) / "tools" / "ferroplot.py";
+  if (fs::exists(source)) return source.string();
+  return std::string(FERRO_INSTALL_DATADIR) + "/ferroplot.py";
+}
+
+}  // namespace ferro::cli

@@ -1,0 +1,55 @@
+#pragma once
+// Terminal helpers of the command line: progress display and SIGINT/SIGTERM capture.
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace ferro::cli {
+
+/// Progress of a run against simulated time. On a TTY: a bar with ETA redrawn in place, shown
+/// once the run has lasted a second. Otherwise: a plain log line at each 10 % step.
+class Progress {
+ public:
+  Progress(double t_end, std::FILE* out);
+  void update(double t);
+  void finish();
+
+ private:
+  double t_end_;
+  std::FILE* out_;
+  bool tty_;
+  std::chrono::steady_clock::time_point start_, last_draw_;
+  int last_decile_ = 0;
+  bool drawn_ = false;
+};
+
+/// Installs SIGINT and SIGTERM handlers for its lifetime; the run polls signal_received().
+class InterruptGuard {
+ public:
+  InterruptGuard();
+  ~InterruptGuard();
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+  /// 0, or the number of the signal received.
+  [[nodiscard]] static int signal_received();
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+/// Runs a program with arguments (no shell); returns its exit status, or -1 when it could not
+/// be started.
+int run_program(const std::vector<std::string>& argv);
+
+/// Path of the plotting script: $FERRO_PLOT_SCRIPT, next to the installed program, or the
+/// source tree's tools/ferroplot.py.
+[[nodiscard]] std::string plot_script_path();
+
+/// Python interpreter for the plots: $FERRO_PYTHON, else Debian's /usr/bin/python3 (where
+/// python3-matplotlib and python3-h5py install), else python3 from PATH.
+[[nodiscard]] std::string python_program();
+
+}  // namespace ferro::cli
