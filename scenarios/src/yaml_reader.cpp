@@ -113,6 +113,18 @@ void MapReader::fail(const std::string& key, const std::string& message) const {
 YAML::Node MapReader::require(const std::string& key) {
   known_.insert(key);
   if (!has(key)) {
+    // A misspelt key is the likelier story than a forgotten one: point at it.
+    if (node_.IsMap()) {
+      for (const auto& kv : node_) {
+        const std::string present = kv.first.as<std::string>();
+        if (known_.count(present) == 0 && nearest_key(present, {key}) == key) {
+          const auto [l, c] = position_of(kv.first);
+          throw YamlInputError(file_, l, c, key_path(present),
+                               fmt::format("unknown key '{}' (did you mean '{}'?); '{}' is required here",
+                                           present, key, key));
+        }
+      }
+    }
     const auto [l, c] = position_of(node_);
     throw YamlInputError(file_, l, c, key_path(key),
                          fmt::format("missing required key '{}' in {}", key,

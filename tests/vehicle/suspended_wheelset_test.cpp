@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "ferro/vehicle/integrator.hpp"
@@ -61,6 +62,8 @@ TEST(SuspendedWheelset, eigen_critical_speed_matches_formula_151) {
     ASSERT_GT(vc_formula, 5.0) << c.name;
     const auto vc_eig = critical_speed(factory_for(c), 1.0, 4.0 * vc_formula, x_eq);
     ASSERT_TRUE(vc_eig.has_value()) << c.name;
+    std::printf("[ figures  ] %-20s eig %.6f m/s, eq. (151) %.6f m/s, rel. diff %.2e\n", c.name,
+                *vc_eig, vc_formula, *vc_eig / vc_formula - 1.0);
     EXPECT_NEAR(*vc_eig / vc_formula, 1.0, kEigenVsClosedFormRelTol)
         << c.name << ": eig " << *vc_eig << " m/s, formula " << vc_formula << " m/s";
   }
@@ -115,6 +118,8 @@ TEST_P(WheelsetEveryIntegrator, decays_below_and_grows_above_critical_speed) {
   const auto [above_first, above_last] = first_last_amplitude(GetParam(), c, 1.05 * vc, t_end, 2 * period);
   // Growth or decay must be unmistakable over 60 periods: at least a factor 1.5 either way.
   constexpr double kClearTrend = 1.5;
+  std::printf("[ figures  ] %-20s peak |y| first/last 2 periods: 0.95 Vc %.3e -> %.3e m, 1.05 Vc %.3e -> %.3e m\n",
+              GetParam().c_str(), below_first, below_last, above_first, above_last);
   EXPECT_LT(below_last * kClearTrend, below_first) << "0.95 Vc: " << below_first << " -> " << below_last;
   EXPECT_GT(above_last, kClearTrend * above_first) << "1.05 Vc: " << above_first << " -> " << above_last;
 }
@@ -140,6 +145,8 @@ TEST(SuspendedWheelset, cvode_and_odeint_trajectories_agree) {
   // two independent methods may each reach a few hundred times that. 1e-5 of the peak is
   // 1000 x rtol: tight enough that a wrong adapter (stale state, wrong time) fails.
   constexpr double kAgreementRelToPeak = 1e-5;
+  std::printf("[ figures  ] max |y_cvode - y_other| / peak: dopri5 %.2e, rosenbrock4 %.2e\n",
+              diff_dopri / peak, diff_rosen / peak);
   EXPECT_LT(diff_dopri / peak, kAgreementRelToPeak);
   EXPECT_LT(diff_rosen / peak, kAgreementRelToPeak);
 }
