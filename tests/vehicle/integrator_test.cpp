@@ -146,3 +146,59 @@ TEST(OutputGrid, includes_end_point) {
 
 }  // namespace
 }  // namespace ferro::vehicle
+
+namespace ferro::vehicle {
+namespace {
+
+// x' = -k x from x0 = 1 stays positive; a trial step that overshoots below zero gets a
+// recoverable code. SUNDIALS must retry with a smaller step and still match exp(-k t).
+class PositiveDecay final : public OdeSystem {
+ public:
+  std::size_t size() const override { return 1; }
+  int rhs(double, std::span<const double> x, std::span<double> xd) const override {
+    if (x[0] < 0.0) return kRhsRecoverable;
+    xd[0] = -kRate * x[0];
+    return kRhsOk;
+  }
+  std::vector<SignalInfo> state_info() const override { return {{"x", "-", ""}}; }
+  static constexpr double kRate = 40.0;
+};
+
+TEST(RecoverableRhs, cvode_retries_with_a_smaller_step) {
+  for (const char* method : {"cvode_bdf", "cvode_adams"}) {
+    IntegratorSettings s;
+    s.method = method;
+    s.rtol = 1e-6;
+    s.atol = 1e-10;
+    s.initial_step = 0.2;  // 8 time constants: the first trial step overshoots
+    PositiveDecay sys;
+    const std::vector<double> x0{1.0};
+    double max_err = 0.0;
+    const auto r = make_integrator(s)->integrate(sys, x0, output_grid(0.0, 0.5, 0.05),
+                                                 [&](double t, std::span<const double> x) {
+                                                   max_err = std::max(max_err, std::abs(x[0] - std::exp(-PositiveDecay::kRate * t)));
+                                                   return true;
+                                                 });
+    EXPECT_EQ(r.status, IntegrationResult::Status::kCompleted) << method << ": " << r.message;
+    EXPECT_LT(max_err, 1e-4) << method;
+  }
+}
+
+// Explicit methods cannot recover (ARKODE's ERKStep by design, Odeint has no retry): they must
+// report the failure with its time instead of carrying on.
+TEST(RecoverableRhs, explicit_methods_report_it_as_a_failure) {
+  for (const char* method : {"arkode_erk", "odeint_dopri5"}) {
+    IntegratorSettings s;
+    s.method = method;
+    s.initial_step = 0.2;
+    PositiveDecay sys;
+    const std::vector<double> x0{1.0};
+    const auto r = make_integrator(s)->integrate(sys, x0, output_grid(0.0, 0.5, 0.05),
+                                                 [](double, std::span<const double>) { return true; });
+    EXPECT_EQ(r.status, IntegrationResult::Status::kSolverFailure) << method;
+    EXPECT_NE(r.message.find("t = "), std::string::npos) << r.message;
+  }
+}
+
+}  // namespace
+}  // namespace ferro::vehicle

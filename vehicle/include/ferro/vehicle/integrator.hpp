@@ -2,6 +2,11 @@
 // Time integrators behind one interface: SUNDIALS CVODE (BDF + Newton with a dense or banded
 // linear solver; Adams + fixed-point), SUNDIALS ARKODE (explicit Runge-Kutta), Boost.Odeint
 // (runge_kutta_dopri5 with dense output, rosenbrock4). No physics in here.
+//
+// Right-hand-side return codes (OdeSystem): 0 ok; > 0 recoverable -- CVODE (BDF and Adams)
+// retries with a smaller step; ARKODE's explicit ERKStep and Odeint cannot retry and report a
+// solver failure at that time; < 0 fatal -- every integrator stops and reports time, state and
+// cause.
 
 #include <functional>
 #include <limits>
