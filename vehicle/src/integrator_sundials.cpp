@@ -12,6 +12,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <exception>
 #include <string>
@@ -72,6 +73,13 @@ struct Handles {
     if (ctx != nullptr) SUNContext_Free(&ctx);
   }
 };
+
+// SUNDIALS' *GetReturnFlagName functions return a malloc'd string owned by the caller.
+std::string owned_flag_name(char* name) {
+  std::string out = name != nullptr ? name : "unknown flag";
+  std::free(name);
+  return out;
+}
 
 void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(fmt::format("SUNDIALS setup failed in {} (flag {})", what, flag));
@@ -166,7 +174,7 @@ class CvodeIntegrator final : public Integrator {
           }
           N_VDestroy(tmp);
         },
-        [](int flag) { return std::string(CVodeGetReturnFlagName(flag)); });
+        [](int flag) { return owned_flag_name(CVodeGetReturnFlagName(flag)); });
     long steps = 0;
     CVodeGetNumSteps(h.mem, &steps);
     result.steps = steps;
@@ -212,7 +220,7 @@ class ArkodeErkIntegrator final : public Integrator {
           }
           N_VDestroy(tmp);
         },
-        [](int flag) { return std::string(ERKStepGetReturnFlagName(flag)); });
+        [](int flag) { return owned_flag_name(ERKStepGetReturnFlagName(flag)); });
     long steps = 0;
     ERKStepGetNumSteps(h.mem, &steps);
     result.steps = steps;
