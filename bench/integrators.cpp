@@ -46,11 +46,16 @@ void BM_WheelsetRun(benchmark::State& state, const std::string& method) {
   state.counters["rhs_evals"] = static_cast<double>(rhs);
 }
 
-BENCHMARK_CAPTURE(BM_WheelsetRun, cvode_bdf, std::string("cvode_bdf"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WheelsetRun, cvode_adams, std::string("cvode_adams"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WheelsetRun, arkode_erk, std::string("arkode_erk"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WheelsetRun, odeint_dopri5, std::string("odeint_dopri5"))->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_WheelsetRun, odeint_rosenbrock4, std::string("odeint_rosenbrock4"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WheelsetRun, cvode_bdf, std::string("cvode_bdf"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WheelsetRun, cvode_adams, std::string("cvode_adams"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WheelsetRun, arkode_erk, std::string("arkode_erk"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WheelsetRun, odeint_dopri5, std::string("odeint_dopri5"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WheelsetRun, odeint_rosenbrock4, std::string("odeint_rosenbrock4"))
+    ->Unit(benchmark::kMillisecond);
 
 void BM_WheelsetRhs(benchmark::State& state) {
   const auto sys = make_wheelset(36.98);

@@ -8,9 +8,8 @@ namespace ferro::contact {
 
 void Material::validate(const std::string& where) const {
   if (!(shear_modulus > 0.0) || !std::isfinite(shear_modulus)) {
-    throw std::invalid_argument(
-        fmt::format("{}.shear_modulus: must be a finite positive value in Pa, got {}", where,
-                    shear_modulus));
+    throw std::invalid_argument(fmt::format(
+        "{}.shear_modulus: must be a finite positive value in Pa, got {}", where, shear_modulus));
   }
   if (!(poisson >= 0.0 && poisson < 0.5)) {
     throw std::invalid_argument(

@@ -3,4 +3,6 @@
 
 #include "ferro/scenarios/cli.hpp"
 
-int main(int argc, char** argv) { return ferro::cli::run_main(argc, argv); }
+int main(int argc, char** argv) {
+  return ferro::cli::run_main(argc, argv);
+}

@@ -65,7 +65,9 @@ H5File H5File::open_read(const std::string& path) {
   return H5File(id, path);
 }
 
-H5File::H5File(H5File&& o) noexcept : id_(o.id_), path_(std::move(o.path_)) { o.id_ = H5I_INVALID_HID; }
+H5File::H5File(H5File&& o) noexcept : id_(o.id_), path_(std::move(o.path_)) {
+  o.id_ = H5I_INVALID_HID;
+}
 H5File& H5File::operator=(H5File&& o) noexcept {
   if (this != &o) {
     if (id_ >= 0) H5Fclose(id_);
@@ -102,9 +104,11 @@ void H5File::ensure_group(const std::string& group) {
   H5Gclose(g);
 }
 
-void H5File::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
+void H5File::set_attribute(const std::string& object, const std::string& name,
+                           const std::string& value) {
   const hid_t t = string_type(value.size() + 1);
-  put_attribute(id_, path_, object, name, t, [&](hid_t a) { return H5Awrite(a, t, value.c_str()); });
+  put_attribute(id_, path_, object, name, t,
+                [&](hid_t a) { return H5Awrite(a, t, value.c_str()); });
   H5Tclose(t);
 }
 void H5File::set_attribute(const std::string& object, const std::string& name, double value) {
@@ -117,8 +121,9 @@ void H5File::set_attribute(const std::string& object, const std::string& name, l
 }
 
 std::string H5File::string_attribute(const std::string& object, const std::string& name) const {
-  const hid_t a = check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
-                           "open attribute " + object + "@" + name, path_);
+  const hid_t a =
+      check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+               "open attribute " + object + "@" + name, path_);
   const hid_t ftype = H5Aget_type(a);
   const std::size_t size = H5Tget_size(ftype);
   std::string out(size, '\0');
@@ -133,8 +138,9 @@ std::string H5File::string_attribute(const std::string& object, const std::strin
 }
 
 double H5File::number_attribute(const std::string& object, const std::string& name) const {
-  const hid_t a = check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
-                           "open attribute " + object + "@" + name, path_);
+  const hid_t a =
+      check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
+               "open attribute " + object + "@" + name, path_);
   double v = 0.0;
   const herr_t rc = H5Aread(a, H5T_NATIVE_DOUBLE, &v);
   H5Aclose(a);
@@ -142,17 +148,21 @@ double H5File::number_attribute(const std::string& object, const std::string& na
   return v;
 }
 
-void H5File::write_matrix(const std::string& dataset, std::span<const double> values, std::size_t rows,
-                          std::size_t cols, const std::string& unit, const std::string& description) {
+void H5File::write_matrix(const std::string& dataset, std::span<const double> values,
+                          std::size_t rows, std::size_t cols, const std::string& unit,
+                          const std::string& description) {
   const auto slash = dataset.rfind('/');
   if (slash != std::string::npos && slash > 0) ensure_group(dataset.substr(0, slash));
   const hsize_t dims2[2] = {rows, cols};
   const hsize_t dims1[1] = {rows};
-  const hid_t space = cols == 0 ? H5Screate_simple(1, dims1, nullptr) : H5Screate_simple(2, dims2, nullptr);
+  const hid_t space =
+      cols == 0 ? H5Screate_simple(1, dims1, nullptr) : H5Screate_simple(2, dims2, nullptr);
   const hid_t d = check_id(H5Dcreate2(id_, dataset.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT,
                                       H5P_DEFAULT, H5P_DEFAULT),
                            "create dataset " + dataset, path_);
-  const herr_t rc = values.empty() ? 0 : H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  const herr_t rc =
+      values.empty() ? 0
+                     : H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
   H5Dclose(d);
   H5Sclose(space);
   check(rc, "write dataset " + dataset, path_);
@@ -170,8 +180,9 @@ void H5File::write_text(const std::string& dataset, const std::string& text) {
   if (slash != std::string::npos && slash > 0) ensure_group(dataset.substr(0, slash));
   const hid_t t = string_type(text.size() + 1);
   const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t d = check_id(H5Dcreate2(id_, dataset.c_str(), t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                           "create dataset " + dataset, path_);
+  const hid_t d =
+      check_id(H5Dcreate2(id_, dataset.c_str(), t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               "create dataset " + dataset, path_);
   const herr_t rc = H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.c_str());
   H5Dclose(d);
   H5Sclose(space);
@@ -180,32 +191,40 @@ void H5File::write_text(const std::string& dataset, const std::string& text) {
 }
 
 std::vector<double> H5File::read_vector(const std::string& dataset) const {
-  const hid_t d = check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), "open dataset " + dataset, path_);
+  const hid_t d =
+      check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), "open dataset " + dataset, path_);
   const hid_t space = H5Dget_space(d);
   const auto n = H5Sget_simple_extent_npoints(space);
   std::vector<double> out(static_cast<std::size_t>(std::max<hssize_t>(n, 0)));
-  const herr_t rc = out.empty() ? 0 : H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  const herr_t rc =
+      out.empty() ? 0 : H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
   H5Sclose(space);
   H5Dclose(d);
   check(rc, "read dataset " + dataset, path_);
   return out;
 }
 
-void H5File::flush() { check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush", path_); }
+void H5File::flush() {
+  check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush", path_);
+}
 
 TimeSeriesWriter::TimeSeriesWriter(H5File& file, const std::vector<vehicle::SignalInfo>& channels,
                                    double flush_seconds, std::size_t chunk_rows)
-    : file_(file), chunk_rows_(chunk_rows), flush_seconds_(flush_seconds),
-      last_flush_(std::chrono::steady_clock::now()), buffer_(channels.size()) {
+    : file_(file),
+      chunk_rows_(chunk_rows),
+      flush_seconds_(flush_seconds),
+      last_flush_(std::chrono::steady_clock::now()),
+      buffer_(channels.size()) {
   file_.ensure_group("/signals");
   const hsize_t zero[1] = {0}, unlimited[1] = {H5S_UNLIMITED}, chunk[1] = {chunk_rows_};
-  auto make = [&](const std::string& name, const std::string& unit, const std::string& description) {
+  auto make = [&](const std::string& name, const std::string& unit,
+                  const std::string& description) {
     const hid_t space = H5Screate_simple(1, zero, unlimited);
     const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_chunk(dcpl, 1, chunk);
-    const hid_t d = check_id(H5Dcreate2(file_.id(), name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT,
-                                        dcpl, H5P_DEFAULT),
-                             "create dataset " + name, file_.path());
+    const hid_t d = check_id(
+        H5Dcreate2(file_.id(), name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+        "create dataset " + name, file_.path());
     H5Pclose(dcpl);
     H5Sclose(space);
     datasets_.push_back(d);

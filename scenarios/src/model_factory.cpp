@@ -10,7 +10,8 @@ namespace {
 
 // Names do not depend on parameter values: list them from a model built with unit parameters.
 std::unique_ptr<vehicle::OdeSystem> probe(const ModelConfig& model) {
-  if (model.type != "suspended_wheelset") throw std::invalid_argument("unknown model type " + model.type);
+  if (model.type != "suspended_wheelset")
+    throw std::invalid_argument("unknown model type " + model.type);
   vehicle::SuspendedWheelsetParams p;
   p.mass = p.yaw_inertia = p.half_gauge = p.rolling_radius = p.conicity = 1.0;
   p.primary_stiffness_x = p.primary_stiffness_y = 1.0;
@@ -38,7 +39,8 @@ std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double spee
     return std::make_unique<vehicle::SuspendedWheelset>(
         scene.model.wheelset, vehicle::creep_coefficients(scene.contact.creep), speed);
   }
-  throw std::invalid_argument("model.type: unknown '" + scene.model.type + "'; allowed: suspended_wheelset");
+  throw std::invalid_argument("model.type: unknown '" + scene.model.type +
+                              "'; allowed: suspended_wheelset");
 }
 
 std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& system) {

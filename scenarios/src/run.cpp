@@ -38,11 +38,13 @@ void write_metadata(H5File& file, const Scene& scene, const std::string& kind) {
   file.set_attribute("/", "rtol", scene.solver.rtol);
   file.set_attribute("/", "atol", scene.solver.atol);
   file.set_attribute("/", "speed", scene.simulation.speed);
-  file.set_attribute("/", "units", std::string("SI: m, s, kg, N, rad; each dataset has a 'unit' attribute"));
+  file.set_attribute("/", "units",
+                     std::string("SI: m, s, kg, N, rad; each dataset has a 'unit' attribute"));
   file.write_text("/scene/text", scene.text);
 }
 
-void set_status(H5File& file, const std::string& status, const std::string& message, double t_reached) {
+void set_status(H5File& file, const std::string& status, const std::string& message,
+                double t_reached) {
   file.set_attribute("/", "status", status);
   file.set_attribute("/", "status_message", message);
   file.set_attribute("/", "t_reached", t_reached);
@@ -57,7 +59,8 @@ std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
       for (const auto& c : channels) out.push_back(c.name);
       continue;
     }
-    const bool found = std::any_of(channels.begin(), channels.end(), [&](const auto& c) { return c.name == name; });
+    const bool found = std::any_of(channels.begin(), channels.end(),
+                                   [&](const auto& c) { return c.name == name; });
     if (!found) throw std::invalid_argument(fmt::format("--csv: unknown signal '{}'", name));
     out.push_back(name);
   }
@@ -94,9 +97,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   set_status(file, "running", "", 0.0);
   std::ofstream csv;
   if (!csv_index.empty()) {
-    summary.csv_file = std::filesystem::path(summary.output_file).replace_extension(".csv").string();
+    summary.csv_file =
+        std::filesystem::path(summary.output_file).replace_extension(".csv").string();
     csv.open(summary.csv_file);
-    if (!csv) throw std::runtime_error(fmt::format("cannot create CSV file '{}'", summary.csv_file));
+    if (!csv)
+      throw std::runtime_error(fmt::format("cannot create CSV file '{}'", summary.csv_file));
     csv << "time";
     for (auto i : csv_index) csv << ',' << summary.channels[i].name;
     csv << '\n';
@@ -111,7 +116,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       std::copy(x.begin(), x.end(), row.begin());
       system->signals(t, x, std::span<double>(row).subspan(n_states));
       writer.append(t, row);
-      for (std::size_t i = 0; i < n_channels; ++i) summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
+      for (std::size_t i = 0; i < n_channels; ++i)
+        summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
       summary.final_values = row;
       if (csv.is_open()) {
         csv << fmt::format("{:.10g}", t);
@@ -120,8 +126,9 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       }
       if (options.progress) options.progress(t);
       if (options.pace > 0.0) {
-        std::this_thread::sleep_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                                      std::chrono::duration<double>(t / options.pace)));
+        std::this_thread::sleep_until(
+            wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(t / options.pace)));
       }
       if (options.should_stop && options.should_stop()) {
         stopped_by_request = true;
@@ -139,7 +146,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
     summary.rhs_evaluations = result.rhs_evaluations;
     summary.samples = writer.samples();
     summary.message = result.message;
-    if (stopped_by_request) summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
+    if (stopped_by_request)
+      summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
     if (result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
       // Keep the state where the solver stopped beside the samples.
       file.write_vector("/failure/state", result.state, "SI (see /signals units)",
@@ -149,7 +157,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
     set_status(file, "error", e.what(), summary.t_reached);
     throw;
   }
-  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  summary.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   file.set_attribute("/", "wall_time_s", summary.wall_seconds);
   file.set_attribute("/", "steps", summary.steps);
   file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
@@ -165,11 +174,12 @@ EigenReport run_eigen(const Scene& scene) {
   std::vector<double> speeds(static_cast<std::size_t>(scene.eigen.points));
   for (int i = 0; i < scene.eigen.points; ++i) {
     speeds[static_cast<std::size_t>(i)] =
-        scene.eigen.speed_min + (scene.eigen.speed_max - scene.eigen.speed_min) * i / (scene.eigen.points - 1);
+        scene.eigen.speed_min +
+        (scene.eigen.speed_max - scene.eigen.speed_min) * i / (scene.eigen.points - 1);
   }
   report.sweep = vehicle::damping_sweep(factory, speeds, x_eq);
-  report.critical_speed = vehicle::critical_speed(factory, scene.eigen.speed_min, scene.eigen.speed_max,
-                                                  x_eq, scene.eigen.points);
+  report.critical_speed = vehicle::critical_speed(factory, scene.eigen.speed_min,
+                                                  scene.eigen.speed_max, x_eq, scene.eigen.points);
   report.modes_at_scene_speed = vehicle::linear_modes(*probe, 0.0, x_eq);
   if (scene.model.type == "suspended_wheelset") {
     try {
@@ -197,8 +207,10 @@ void write_eigen_report(const Scene& scene, const EigenReport& report, const std
   file.write_vector("/eigen/speed", v, "m/s", "forward speed of the sweep");
   file.write_vector("/eigen/damping_ratio", zeta, "-", "damping ratio of the least damped mode");
   file.write_vector("/eigen/frequency", freq, "Hz", "frequency of the least damped mode");
-  file.write_vector("/eigen/eigenvalue_real", re, "1/s", "real part of the least damped eigenvalue");
-  file.write_vector("/eigen/eigenvalue_imag", im, "1/s", "imaginary part of the least damped eigenvalue");
+  file.write_vector("/eigen/eigenvalue_real", re, "1/s",
+                    "real part of the least damped eigenvalue");
+  file.write_vector("/eigen/eigenvalue_imag", im, "1/s",
+                    "imaginary part of the least damped eigenvalue");
   file.set_attribute("/eigen", "critical_speed", report.critical_speed.value_or(std::nan("")));
   file.set_attribute("/eigen", "closed_form_critical_speed",
                      report.closed_form_critical_speed.value_or(std::nan("")));

@@ -33,35 +33,40 @@ void validated(const MapReader& reader, F&& check) {
     std::size_t start = 0;
     while (!field.empty() && at.IsMap()) {
       const auto dot = field.find('.', start);
-      const std::string part = field.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      const std::string part =
+          field.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
       if (!at[part].IsDefined()) break;
       at = at[part];
       if (dot == std::string::npos) break;
       start = dot + 1;
     }
     const auto [l, c] = position_of(at);
-    throw YamlInputError(reader.file(), l, c, field.empty() ? reader.path() : reader.key_path(field),
+    throw YamlInputError(reader.file(), l, c,
+                         field.empty() ? reader.path() : reader.key_path(field),
                          colon == std::string::npos ? msg : msg.substr(colon + 2));
   }
 }
 
 // A part is either written inline (a mapping) or named by a file relative to the scene. An
 // included file carries its own schema_version; its text is appended to the scene's text.
-MapReader open_part(MapReader& scene, const std::string& key, Scene& out, std::vector<YamlFile>& keep) {
+MapReader open_part(MapReader& scene, const std::string& key, Scene& out,
+                    std::vector<YamlFile>& keep) {
   if (scene.has(key) && scene.yaml()[key].IsScalar()) {
     const YAML::Node ref = scene.node(key);
     const fs::path base = fs::path(scene.file()).parent_path();
     const std::string file = (base / ref.Scalar()).string();
     if (!fs::exists(file)) {
-      scene.fail(key, fmt::format("included file '{}' does not exist (looked for {})", ref.Scalar(), file));
+      scene.fail(key, fmt::format("included file '{}' does not exist (looked for {})", ref.Scalar(),
+                                  file));
     }
     keep.push_back(load_yaml_file(file));
     out.text += fmt::format("\n# ---- included: {} ----\n{}", file, keep.back().text);
     MapReader part(keep.back().root, file, key);
     const long version = part.integer_or("schema_version", -1);
     if (version != kSceneSchemaVersion) {
-      part.fail("schema_version", fmt::format("required in every included file; supported: {}, got {}",
-                                              kSceneSchemaVersion, version));
+      part.fail("schema_version",
+                fmt::format("required in every included file; supported: {}, got {}",
+                            kSceneSchemaVersion, version));
     }
     return part;
   }
@@ -85,9 +90,12 @@ Scene load_scene(const std::string& path) {
   MapReader top(file.root, path, "");
 
   const long version = top.integer_or("schema_version", -1);
-  if (!top.has("schema_version")) top.fail("schema_version", fmt::format("missing; this program reads schema_version {}", kSceneSchemaVersion));
+  if (!top.has("schema_version"))
+    top.fail("schema_version",
+             fmt::format("missing; this program reads schema_version {}", kSceneSchemaVersion));
   if (version != kSceneSchemaVersion) {
-    top.fail("schema_version", fmt::format("unsupported version {}; supported: {}", version, kSceneSchemaVersion));
+    top.fail("schema_version",
+             fmt::format("unsupported version {}; supported: {}", version, kSceneSchemaVersion));
   }
   scene.name = top.string_or("name", fs::path(path).stem().string());
   scene.description = top.string_or("description", "");
@@ -131,12 +139,17 @@ Scene load_scene(const std::string& path) {
   {  // simulation
     MapReader s = top.map("simulation");
     const bool kmh = s.has("speed_kmh");
-    if (kmh && s.has("speed")) s.fail("speed_kmh", "give either speed [m/s] or speed_kmh, not both");
+    if (kmh && s.has("speed"))
+      s.fail("speed_kmh", "give either speed [m/s] or speed_kmh, not both");
     scene.simulation.speed = kmh ? s.number("speed_kmh") / 3.6 : s.number("speed");
-    if (!kmh) s.allow("speed_kmh"); else s.allow("speed");
+    if (!kmh)
+      s.allow("speed_kmh");
+    else
+      s.allow("speed");
     if (!(scene.simulation.speed > 0.0)) s.fail(kmh ? "speed_kmh" : "speed", "must be > 0");
     scene.simulation.t_end = s.number("t_end");
-    if (!(scene.simulation.t_end > 0.0)) s.fail("t_end", fmt::format("must be > 0 s, got {}", scene.simulation.t_end));
+    if (!(scene.simulation.t_end > 0.0))
+      s.fail("t_end", fmt::format("must be > 0 s, got {}", scene.simulation.t_end));
     MapReader init = s.map_or_empty("initial");
     const auto states = state_names(scene.model);
     for (const auto& kv : init.yaml()) {
@@ -170,7 +183,8 @@ Scene load_scene(const std::string& path) {
     v.interval = o.number_or("interval", v.interval);
     if (!(v.interval > 0.0)) o.fail("interval", fmt::format("must be > 0 s, got {}", v.interval));
     v.flush_seconds = o.number_or("flush_seconds", v.flush_seconds);
-    if (!(v.flush_seconds > 0.0)) o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));
+    if (!(v.flush_seconds > 0.0))
+      o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));
     v.csv = o.string_list_or("csv", {});
     v.plots = o.string_list_or("plots", {});
     o.finish();
@@ -179,7 +193,8 @@ Scene load_scene(const std::string& path) {
       for (const auto& n : list) {
         if (n == "all") continue;
         if (std::find(names.begin(), names.end(), n) == names.end()) {
-          const std::string near = nearest_key(n, std::set<std::string>(names.begin(), names.end()));
+          const std::string near =
+              nearest_key(n, std::set<std::string>(names.begin(), names.end()));
           o.fail(key, fmt::format("unknown signal '{}'{}; signals of this model: all, {}", n,
                                   near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
                                   fmt::join(names, ", ")));
@@ -196,8 +211,10 @@ Scene load_scene(const std::string& path) {
     scene.eigen.speed_max = e.number_or("speed_max", scene.eigen.speed_max);
     scene.eigen.points = static_cast<int>(e.integer_or("points", scene.eigen.points));
     if (!(scene.eigen.speed_min > 0.0)) e.fail("speed_min", "must be > 0 m/s");
-    if (!(scene.eigen.speed_max > scene.eigen.speed_min)) e.fail("speed_max", "must exceed speed_min");
-    if (scene.eigen.points < 2 || scene.eigen.points > 100000) e.fail("points", "must lie in 2..100000");
+    if (!(scene.eigen.speed_max > scene.eigen.speed_min))
+      e.fail("speed_max", "must exceed speed_min");
+    if (scene.eigen.points < 2 || scene.eigen.points > 100000)
+      e.fail("points", "must lie in 2..100000");
     e.finish();
     a.finish();
   }

@@ -35,10 +35,11 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-YamlInputError::YamlInputError(const std::string& file, int line, int column, const std::string& key,
-                               const std::string& message)
-    : std::invalid_argument(line > 0 ? fmt::format("{}:{}:{}: {}: {}", file, line, column, key, message)
-                                     : fmt::format("{}: {}: {}", file, key, message)),
+YamlInputError::YamlInputError(const std::string& file, int line, int column,
+                               const std::string& key, const std::string& message)
+    : std::invalid_argument(line > 0
+                                ? fmt::format("{}:{}:{}: {}: {}", file, line, column, key, message)
+                                : fmt::format("{}: {}: {}", file, key, message)),
       file_(file),
       line_(line),
       key_(key) {}
@@ -59,8 +60,9 @@ YamlFile parse_yaml_text(const std::string& text, const std::string& path) {
                          fmt::format("malformed YAML: {}", e.msg));
   }
   if (!f.root.IsMap()) {
-    throw YamlInputError(path, 1, 1, "(document)",
-                         fmt::format("expected a mapping of keys at the top level, got {}", describe(f.root)));
+    throw YamlInputError(
+        path, 1, 1, "(document)",
+        fmt::format("expected a mapping of keys at the top level, got {}", describe(f.root)));
   }
   return f;
 }
@@ -119,9 +121,10 @@ YAML::Node MapReader::require(const std::string& key) {
         const std::string present = kv.first.as<std::string>();
         if (known_.count(present) == 0 && nearest_key(present, {key}) == key) {
           const auto [l, c] = position_of(kv.first);
-          throw YamlInputError(file_, l, c, key_path(present),
-                               fmt::format("unknown key '{}' (did you mean '{}'?); '{}' is required here",
-                                           present, key, key));
+          throw YamlInputError(
+              file_, l, c, key_path(present),
+              fmt::format("unknown key '{}' (did you mean '{}'?); '{}' is required here", present,
+                          key, key));
         }
       }
     }
@@ -204,7 +207,9 @@ std::vector<std::string> MapReader::string_list_or(const std::string& key,
   return out;
 }
 
-MapReader MapReader::map(const std::string& key) { return MapReader(require(key), file_, key_path(key)); }
+MapReader MapReader::map(const std::string& key) {
+  return MapReader(require(key), file_, key_path(key));
+}
 
 MapReader MapReader::map_or_empty(const std::string& key) {
   known_.insert(key);
@@ -223,11 +228,10 @@ void MapReader::finish() const {
     if (known_.count(key) != 0) continue;
     const auto [l, c] = position_of(kv.first);
     const std::string near = nearest_key(key, known_);
-    throw YamlInputError(
-        file_, l, c, key_path(key),
-        fmt::format("unknown key '{}'{}; valid keys here: {}", key,
-                    near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
-                    fmt::join(known_, ", ")));
+    throw YamlInputError(file_, l, c, key_path(key),
+                         fmt::format("unknown key '{}'{}; valid keys here: {}", key,
+                                     near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
+                                     fmt::join(known_, ", ")));
   }
 }
 

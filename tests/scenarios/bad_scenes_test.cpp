@@ -28,7 +28,8 @@ const BadScene kBadScenes[] = {
     {"wrong_schema_version", 1, "schema_version", "supported: 1"},
     {"negative_rtol", 23, "solver.rtol", "must lie in (0, 1)"},
     {"unknown_signal", 26, "output.csv", "did you mean 'wheelset.y'?"},
-    {"unknown_initial_state", 20, "simulation.initial.wheelset.lateral", "valid keys here: wheelset.y"},
+    {"unknown_initial_state", 20, "simulation.initial.wheelset.lateral",
+     "valid keys here: wheelset.y"},
     {"zero_t_end", 19, "simulation.t_end", "must be > 0 s"},
     {"missing_include", 12, "track", "does not exist"},
     {"poisson_out_of_range", 17, "contact.wheel.poisson", "must lie in [0, 0.5)"},
@@ -45,11 +46,13 @@ TEST_P(BadSceneFile, exits_2_naming_file_line_and_key) {
   ASSERT_TRUE(std::filesystem::exists(path)) << path;
   const std::vector<std::vector<std::string>> commands = {
       {FERRODYN_EXE, "validate", path},
-      {FERRODYN_EXE, "run", path, "--no-plots", "-o", "/tmp/ferro_bad_" + std::string(c.file) + ".h5"}};
+      {FERRODYN_EXE, "run", path, "--no-plots", "-o",
+       "/tmp/ferro_bad_" + std::string(c.file) + ".h5"}};
   for (const auto& cmd : commands) {
     const auto r = test::run_capture(cmd);
     EXPECT_EQ(r.exit_code, 2) << cmd[1] << ": " << r.output;
-    EXPECT_NE(r.output.find(path + ":" + std::to_string(c.line) + ":"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(path + ":" + std::to_string(c.line) + ":"), std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find(c.key), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(c.hint), std::string::npos) << r.output;
   }
@@ -68,12 +71,16 @@ TEST(BadSceneFile, every_file_in_the_folder_is_covered) {
 }
 
 TEST(BadCommandLine, unknown_option_and_missing_file_exit_2) {
-  EXPECT_EQ(test::run_capture({FERRODYN_EXE, "run", "tests/scenarios/data/good_minimal.yaml", "--warp"}).exit_code, 2);
+  EXPECT_EQ(
+      test::run_capture({FERRODYN_EXE, "run", "tests/scenarios/data/good_minimal.yaml", "--warp"})
+          .exit_code,
+      2);
   const auto r = test::run_capture({FERRODYN_EXE, "run", "no/such/scene.yaml"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("no/such/scene.yaml"), std::string::npos) << r.output;
-  const auto r2 = test::run_capture({FERRODYN_EXE, "run", "tests/scenarios/data/good_minimal.yaml",
-                                     "--integrator", "leapfrog", "--no-plots", "-o", "/tmp/ferro_unused.h5"});
+  const auto r2 =
+      test::run_capture({FERRODYN_EXE, "run", "tests/scenarios/data/good_minimal.yaml",
+                         "--integrator", "leapfrog", "--no-plots", "-o", "/tmp/ferro_unused.h5"});
   EXPECT_EQ(r2.exit_code, 2);
   EXPECT_NE(r2.output.find("leapfrog"), std::string::npos) << r2.output;
 }

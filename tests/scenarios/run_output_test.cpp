@@ -65,8 +65,8 @@ TEST(RunOutput, sigint_halfway_leaves_every_sample_up_to_the_interrupt) {
   const std::string ref = temp_file("reference.h5");
   // Paced at 4 simulated seconds per wall second, an 8 s run lasts 2 s of wall time; the
   // non-TTY progress log announces 50 % and the test interrupts right then.
-  test::BackgroundProcess p({FERRODYN_EXE, "run", kScene, "-o", out, "--t-end", "8", "--pace", "4",
-                             "--no-plots"});
+  test::BackgroundProcess p(
+      {FERRODYN_EXE, "run", kScene, "-o", out, "--t-end", "8", "--pace", "4", "--no-plots"});
   std::string line;
   bool halfway = false;
   while (p.read_line(line)) {
@@ -84,15 +84,16 @@ TEST(RunOutput, sigint_halfway_leaves_every_sample_up_to_the_interrupt) {
   EXPECT_NE(f.string_attribute("/", "status_message").find("signal"), std::string::npos);
   const auto t = f.read_vector("/time");
   const double t_reached = f.number_attribute("/", "t_reached");
-  ASSERT_GT(t.size(), 4000u);   // past 50 % of 8001 samples
-  ASSERT_LT(t.size(), 8001u);   // but not the whole run
+  ASSERT_GT(t.size(), 4000u);  // past 50 % of 8001 samples
+  ASSERT_LT(t.size(), 8001u);  // but not the whole run
   EXPECT_DOUBLE_EQ(t.back(), t_reached);
   for (std::size_t i = 1; i < t.size(); ++i) ASSERT_NEAR(t[i] - t[i - 1], 1e-3, 1e-9) << i;
   const auto y = f.read_vector("/signals/wheelset.y");
   ASSERT_EQ(y.size(), t.size());
 
   // Every stored sample equals the uninterrupted run's (same integrator, deterministic).
-  const auto r = test::run_capture({FERRODYN_EXE, "run", kScene, "-o", ref, "--t-end", "8", "--no-plots", "-q"});
+  const auto r = test::run_capture(
+      {FERRODYN_EXE, "run", kScene, "-o", ref, "--t-end", "8", "--no-plots", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto y_ref = H5File::open_read(ref).read_vector("/signals/wheelset.y");
   for (std::size_t i = 0; i < y.size(); ++i) ASSERT_DOUBLE_EQ(y[i], y_ref[i]) << i;
@@ -132,10 +133,12 @@ TEST(RunOutput, every_shipped_scene_runs) {
     const std::string out = temp_file(e.path().stem().string() + ".h5");
     const auto v = test::run_capture({FERRODYN_EXE, "validate", e.path().string()});
     EXPECT_EQ(v.exit_code, 0) << v.output;
-    const auto r = test::run_capture({FERRODYN_EXE, "run", e.path().string(), "-o", out, "--no-plots", "-q"});
+    const auto r =
+        test::run_capture({FERRODYN_EXE, "run", e.path().string(), "-o", out, "--no-plots", "-q"});
     EXPECT_EQ(r.exit_code, 0) << e.path() << "\n" << r.output;
     EXPECT_EQ(H5File::open_read(out).string_attribute("/", "status"), "completed") << e.path();
-    const auto eig = test::run_capture({FERRODYN_EXE, "eig", e.path().string(), "-o", temp_file("eig.h5"), "--no-plots"});
+    const auto eig = test::run_capture(
+        {FERRODYN_EXE, "eig", e.path().string(), "-o", temp_file("eig.h5"), "--no-plots"});
     EXPECT_EQ(eig.exit_code, 0) << eig.output;
   }
 }
@@ -143,11 +146,13 @@ TEST(RunOutput, every_shipped_scene_runs) {
 TEST(RunOutput, plots_are_written_as_png_and_svg) {
   const std::string out = temp_file("plots.h5");
   const std::string dir = temp_file("plots_dir");
-  const auto r = test::run_capture({FERRODYN_EXE, "run", kScene, "-o", out, "-q", "--plot-dir", dir});
+  const auto r =
+      test::run_capture({FERRODYN_EXE, "run", kScene, "-o", out, "-q", "--plot-dir", dir});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir + "/wheelset.y.png")) << r.output;
   EXPECT_TRUE(fs::exists(dir + "/wheelset.y.svg")) << r.output;
-  const auto p = test::run_capture({FERRODYN_EXE, "plot", out, "contact.yaw_moment", "-o", dir, "--format", "png"});
+  const auto p = test::run_capture(
+      {FERRODYN_EXE, "plot", out, "contact.yaw_moment", "-o", dir, "--format", "png"});
   EXPECT_EQ(p.exit_code, 0) << p.output;
   EXPECT_TRUE(fs::exists(dir + "/contact.yaw_moment.png"));
   const auto bad = test::run_capture({FERRODYN_EXE, "plot", out, "no.such.signal", "-o", dir});

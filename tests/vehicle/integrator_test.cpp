@@ -1,12 +1,12 @@
 // Integrator adapters against closed forms: a damped oscillator x'' + 2 z w x' + w^2 x = 0 has an
 // exact solution; every adapter must reproduce it, report failures with time and cause, and stop
 // when the observer asks.
+#include "ferro/vehicle/integrator.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-
-#include "ferro/vehicle/integrator.hpp"
 
 namespace ferro::vehicle {
 namespace {
@@ -32,7 +32,8 @@ class DampedOscillator final : public OdeSystem {
 
 double exact(double t) {  // x(0) = 1, v(0) = 0
   const double wd = kOmega * std::sqrt(1.0 - kZeta * kZeta);
-  return std::exp(-kZeta * kOmega * t) * (std::cos(wd * t) + kZeta * kOmega / wd * std::sin(wd * t));
+  return std::exp(-kZeta * kOmega * t) *
+         (std::cos(wd * t) + kZeta * kOmega / wd * std::sin(wd * t));
 }
 
 class EveryIntegrator : public ::testing::TestWithParam<std::string> {};
@@ -95,9 +96,8 @@ TEST_P(EveryIntegrator, observer_stops_the_run) {
   const auto times = output_grid(0.0, 2.0, 0.1);
   const std::vector<double> x0{1.0, 0.0};
   int calls = 0;
-  const auto r = integ->integrate(sys, x0, times, [&](double, std::span<const double>) {
-    return ++calls < 5;
-  });
+  const auto r = integ->integrate(sys, x0, times,
+                                  [&](double, std::span<const double>) { return ++calls < 5; });
   EXPECT_EQ(r.status, IntegrationResult::Status::kInterrupted);
   EXPECT_EQ(calls, 5);
   EXPECT_NEAR(r.t_reached, 0.4, 1e-12);
@@ -174,11 +174,11 @@ TEST(RecoverableRhs, cvode_retries_with_a_smaller_step) {
     PositiveDecay sys;
     const std::vector<double> x0{1.0};
     double max_err = 0.0;
-    const auto r = make_integrator(s)->integrate(sys, x0, output_grid(0.0, 0.5, 0.05),
-                                                 [&](double t, std::span<const double> x) {
-                                                   max_err = std::max(max_err, std::abs(x[0] - std::exp(-PositiveDecay::kRate * t)));
-                                                   return true;
-                                                 });
+    const auto r = make_integrator(s)->integrate(
+        sys, x0, output_grid(0.0, 0.5, 0.05), [&](double t, std::span<const double> x) {
+          max_err = std::max(max_err, std::abs(x[0] - std::exp(-PositiveDecay::kRate * t)));
+          return true;
+        });
     EXPECT_EQ(r.status, IntegrationResult::Status::kCompleted) << method << ": " << r.message;
     EXPECT_LT(max_err, 1e-4) << method;
   }
@@ -193,8 +193,8 @@ TEST(RecoverableRhs, explicit_methods_report_it_as_a_failure) {
     s.initial_step = 0.2;
     PositiveDecay sys;
     const std::vector<double> x0{1.0};
-    const auto r = make_integrator(s)->integrate(sys, x0, output_grid(0.0, 0.5, 0.05),
-                                                 [](double, std::span<const double>) { return true; });
+    const auto r = make_integrator(s)->integrate(
+        sys, x0, output_grid(0.0, 0.5, 0.05), [](double, std::span<const double>) { return true; });
     EXPECT_EQ(r.status, IntegrationResult::Status::kSolverFailure) << method;
     EXPECT_NE(r.message.find("t = "), std::string::npos) << r.message;
   }

@@ -1,5 +1,7 @@
 // Single suspended wheelset (Toumi eqs. 150-151): the eigenvalue critical speed against the
 // closed form, and time simulations that decay below and grow above it with every integrator.
+#include "ferro/vehicle/suspended_wheelset.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/stability.hpp"
-#include "ferro/vehicle/suspended_wheelset.hpp"
 
 namespace ferro::vehicle {
 namespace {
@@ -39,9 +40,12 @@ std::vector<Case> closed_form_cases() {
     c.creep.coefficients = "equal";
     return c;
   };
-  cases.push_back(make("equal_stiffness", 1813.0, 0.7465, 0.46, 0.20, 0.8e6, 0.8e6, 6.0e-3, 4.0e-3));
-  cases.push_back(make("stiff_longitudinal", 1500.0, 0.75, 0.50, 0.15, 1.5e6, 0.6e6, 5.0e-3, 5.0e-3));
-  cases.push_back(make("soft_longitudinal", 1200.0, 0.70, 0.43, 0.30, 0.3e6, 1.1e6, 7.0e-3, 3.5e-3));
+  cases.push_back(
+      make("equal_stiffness", 1813.0, 0.7465, 0.46, 0.20, 0.8e6, 0.8e6, 6.0e-3, 4.0e-3));
+  cases.push_back(
+      make("stiff_longitudinal", 1500.0, 0.75, 0.50, 0.15, 1.5e6, 0.6e6, 5.0e-3, 5.0e-3));
+  cases.push_back(
+      make("soft_longitudinal", 1200.0, 0.70, 0.43, 0.30, 0.3e6, 1.1e6, 7.0e-3, 3.5e-3));
   return cases;
 }
 
@@ -93,13 +97,15 @@ std::pair<double, double> first_last_amplitude(const std::string& method, const 
   const SuspendedWheelset sys(c.params, creep_coefficients(c.creep), speed);
   const std::vector<double> x0{1e-3, 0.0, 0.0, 0.0};
   double first = 0.0, last = 0.0;
-  const auto r = make_integrator(s)->integrate(
-      sys, x0, output_grid(0.0, t_end, 1e-3), [&](double t, std::span<const double> x) {
-        if (t <= window) first = std::max(first, std::abs(x[0]));
-        if (t >= t_end - window) last = std::max(last, std::abs(x[0]));
-        if (trace != nullptr) trace->push_back(x[0]);
-        return true;
-      });
+  const auto r = make_integrator(s)->integrate(sys, x0, output_grid(0.0, t_end, 1e-3),
+                                               [&](double t, std::span<const double> x) {
+                                                 if (t <= window)
+                                                   first = std::max(first, std::abs(x[0]));
+                                                 if (t >= t_end - window)
+                                                   last = std::max(last, std::abs(x[0]));
+                                                 if (trace != nullptr) trace->push_back(x[0]);
+                                                 return true;
+                                               });
   EXPECT_EQ(r.status, IntegrationResult::Status::kCompleted) << r.message;
   return {first, last};
 }
@@ -110,21 +116,29 @@ TEST_P(WheelsetEveryIntegrator, decays_below_and_grows_above_critical_speed) {
   const auto c = closed_form_cases()[0];
   const double vc = analytic_critical_speed(c.params, creep_coefficients(c.creep));
   // Window of two hunting periods, at the kinematic (Klingel) wavelength 2 pi sqrt(e R / gamma).
-  const double wavelength = 2.0 * std::numbers::pi *
-                            std::sqrt(c.params.half_gauge * c.params.rolling_radius / c.params.conicity);
+  const double wavelength =
+      2.0 * std::numbers::pi *
+      std::sqrt(c.params.half_gauge * c.params.rolling_radius / c.params.conicity);
   const double period = wavelength / vc;
   const double t_end = 60.0 * period;
-  const auto [below_first, below_last] = first_last_amplitude(GetParam(), c, 0.95 * vc, t_end, 2 * period);
-  const auto [above_first, above_last] = first_last_amplitude(GetParam(), c, 1.05 * vc, t_end, 2 * period);
+  const auto [below_first, below_last] =
+      first_last_amplitude(GetParam(), c, 0.95 * vc, t_end, 2 * period);
+  const auto [above_first, above_last] =
+      first_last_amplitude(GetParam(), c, 1.05 * vc, t_end, 2 * period);
   // Growth or decay must be unmistakable over 60 periods: at least a factor 1.5 either way.
   constexpr double kClearTrend = 1.5;
-  std::printf("[ figures  ] %-20s peak |y| first/last 2 periods: 0.95 Vc %.3e -> %.3e m, 1.05 Vc %.3e -> %.3e m\n",
-              GetParam().c_str(), below_first, below_last, above_first, above_last);
-  EXPECT_LT(below_last * kClearTrend, below_first) << "0.95 Vc: " << below_first << " -> " << below_last;
-  EXPECT_GT(above_last, kClearTrend * above_first) << "1.05 Vc: " << above_first << " -> " << above_last;
+  std::printf(
+      "[ figures  ] %-20s peak |y| first/last 2 periods: 0.95 Vc %.3e -> %.3e m, 1.05 Vc %.3e -> "
+      "%.3e m\n",
+      GetParam().c_str(), below_first, below_last, above_first, above_last);
+  EXPECT_LT(below_last * kClearTrend, below_first)
+      << "0.95 Vc: " << below_first << " -> " << below_last;
+  EXPECT_GT(above_last, kClearTrend * above_first)
+      << "1.05 Vc: " << above_first << " -> " << above_last;
 }
 
-INSTANTIATE_TEST_SUITE_P(Adapters, WheelsetEveryIntegrator, ::testing::ValuesIn(available_integrators()));
+INSTANTIATE_TEST_SUITE_P(Adapters, WheelsetEveryIntegrator,
+                         ::testing::ValuesIn(available_integrators()));
 
 TEST(SuspendedWheelset, cvode_and_odeint_trajectories_agree) {
   const auto c = closed_form_cases()[1];

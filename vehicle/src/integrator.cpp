@@ -27,21 +27,23 @@ void IntegratorSettings::validate(const std::string& where) const {
     throw std::invalid_argument(fmt::format("{}.rtol: must lie in (0, 1), got {}", where, rtol));
   }
   if (!(atol > 0.0) || !std::isfinite(atol)) {
-    throw std::invalid_argument(fmt::format("{}.atol: must be finite and > 0, got {}", where, atol));
+    throw std::invalid_argument(
+        fmt::format("{}.atol: must be finite and > 0, got {}", where, atol));
   }
   if (!(max_step > 0.0)) {
     throw std::invalid_argument(fmt::format("{}.max_step: must be > 0 s, got {}", where, max_step));
   }
   if (!(initial_step >= 0.0) || !std::isfinite(initial_step)) {
-    throw std::invalid_argument(
-        fmt::format("{}.initial_step: must be >= 0 s (0 = automatic), got {}", where, initial_step));
+    throw std::invalid_argument(fmt::format(
+        "{}.initial_step: must be >= 0 s (0 = automatic), got {}", where, initial_step));
   }
   if (linear_solver != "dense" && linear_solver != "band") {
-    throw std::invalid_argument(fmt::format(
-        "{}.linear_solver: unknown '{}'; allowed: dense, band", where, linear_solver));
+    throw std::invalid_argument(
+        fmt::format("{}.linear_solver: unknown '{}'; allowed: dense, band", where, linear_solver));
   }
   if (max_steps < 1) {
-    throw std::invalid_argument(fmt::format("{}.max_steps: must be >= 1, got {}", where, max_steps));
+    throw std::invalid_argument(
+        fmt::format("{}.max_steps: must be >= 1, got {}", where, max_steps));
   }
   if (erk_order < 2 || erk_order > 8) {
     throw std::invalid_argument(
@@ -51,9 +53,12 @@ void IntegratorSettings::validate(const std::string& where) const {
 
 std::string to_string(IntegrationResult::Status status) {
   switch (status) {
-    case IntegrationResult::Status::kCompleted: return "completed";
-    case IntegrationResult::Status::kInterrupted: return "interrupted";
-    case IntegrationResult::Status::kSolverFailure: return "solver_failure";
+    case IntegrationResult::Status::kCompleted:
+      return "completed";
+    case IntegrationResult::Status::kInterrupted:
+      return "interrupted";
+    case IntegrationResult::Status::kSolverFailure:
+      return "solver_failure";
   }
   return "unknown";
 }

@@ -36,7 +36,8 @@ struct StepLimit : std::runtime_error {
 // ublas::vector<double>.
 template <class Dense, class System, class V>
 IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<double>& times,
-                             const Observer& observer, const IntegratorSettings& s, long& rhs_count) {
+                             const Observer& observer, const IntegratorSettings& s,
+                             long& rhs_count) {
   IntegrationResult result;
   const std::size_t n = x.size();
   auto record = [&](double t, const V& state) {
@@ -76,8 +77,8 @@ IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<
       const auto& xc = stepper.current_state();
       for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(xc[i])) {
-          throw std::runtime_error(fmt::format("state {} became non-finite at t = {:.9g} s", i,
-                                               stepper.current_time()));
+          throw std::runtime_error(
+              fmt::format("state {} became non-finite at t = {:.9g} s", i, stepper.current_time()));
         }
       }
     }
@@ -110,8 +111,8 @@ class OdeintIntegrator final : public Integrator {
         const int rc = system.rhs(t, x, dxdt);
         if (rc != kRhsOk) throw RhsFailure(rc, t);
       };
-      auto stepper = odeint::make_dense_output(s_.atol, s_.rtol, max_dt,
-                                               odeint::runge_kutta_dopri5<State>());
+      auto stepper =
+          odeint::make_dense_output(s_.atol, s_.rtol, max_dt, odeint::runge_kutta_dopri5<State>());
       return dense_loop(stepper, sys, State(x0.begin(), x0.end()), times, observer, s_, rhs_count);
     }
     // rosenbrock4 runs in a C++17 translation unit (see odeint_rosenbrock_raw.hpp).

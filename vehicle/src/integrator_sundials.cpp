@@ -12,8 +12,8 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <string>
 
@@ -82,7 +82,8 @@ std::string owned_flag_name(char* name) {
 }
 
 void check(int flag, const char* what) {
-  if (flag < 0) throw std::runtime_error(fmt::format("SUNDIALS setup failed in {} (flag {})", what, flag));
+  if (flag < 0)
+    throw std::runtime_error(fmt::format("SUNDIALS setup failed in {} (flag {})", what, flag));
 }
 
 // The output loop, shared by CVODE and ARKODE. `step_to` advances to tout and returns the flag;
@@ -108,9 +109,9 @@ IntegrationResult run_loop(Handles& h, UserData& ud, const std::vector<double>& 
       std::vector<double> y_cur = result.state;
       current(&t_cur, y_cur);
       result.status = IntegrationResult::Status::kSolverFailure;
-      result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
-                                   flag_name(flag), t_cur, result.t_reached,
-                                   ud.last_error.empty() ? "no detail" : ud.last_error);
+      result.message =
+          fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}", flag_name(flag), t_cur,
+                      result.t_reached, ud.last_error.empty() ? "no detail" : ud.last_error);
       result.t_reached = t_cur;
       result.state = std::move(y_cur);
       return result;
@@ -206,8 +207,10 @@ class ArkodeErkIntegrator final : public Integrator {
     check(ERKStepSetUserData(h.mem, &ud), "ERKStepSetUserData");
     check(ERKStepSStolerances(h.mem, s_.rtol, s_.atol), "ERKStepSStolerances");
     check(ERKStepSetOrder(h.mem, s_.erk_order), "ERKStepSetOrder");
-    if (std::isfinite(s_.max_step)) check(ERKStepSetMaxStep(h.mem, s_.max_step), "ERKStepSetMaxStep");
-    if (s_.initial_step > 0.0) check(ERKStepSetInitStep(h.mem, s_.initial_step), "ERKStepSetInitStep");
+    if (std::isfinite(s_.max_step))
+      check(ERKStepSetMaxStep(h.mem, s_.max_step), "ERKStepSetMaxStep");
+    if (s_.initial_step > 0.0)
+      check(ERKStepSetInitStep(h.mem, s_.initial_step), "ERKStepSetInitStep");
     check(ERKStepSetMaxNumSteps(h.mem, s_.max_steps), "ERKStepSetMaxNumSteps");
     auto result = run_loop(
         h, ud, times, observer,

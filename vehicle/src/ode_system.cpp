@@ -8,9 +8,8 @@
 
 namespace ferro::vehicle {
 
-std::vector<double> numerical_jacobian(const OdeSystem& system, double t,
-                                       std::span<const double> x, double rel_step,
-                                       std::span<const double> scale) {
+std::vector<double> numerical_jacobian(const OdeSystem& system, double t, std::span<const double> x,
+                                       double rel_step, std::span<const double> scale) {
   const std::size_t n = system.size();
   std::vector<double> jac(n * n), xp(x.begin(), x.end()), fp(n), fm(n);
   for (std::size_t j = 0; j < n; ++j) {
@@ -22,9 +21,9 @@ std::vector<double> numerical_jacobian(const OdeSystem& system, double t,
     const int rc_minus = system.rhs(t, xp, fm);
     xp[j] = x[j];
     if (rc_plus != kRhsOk || rc_minus != kRhsOk) {
-      throw std::runtime_error(
-          fmt::format("numerical_jacobian: right-hand side failed (codes {}, {}) perturbing state {}",
-                      rc_plus, rc_minus, j));
+      throw std::runtime_error(fmt::format(
+          "numerical_jacobian: right-hand side failed (codes {}, {}) perturbing state {}", rc_plus,
+          rc_minus, j));
     }
     for (std::size_t i = 0; i < n; ++i) jac[i * n + j] = (fp[i] - fm[i]) / (2.0 * h);
   }

@@ -26,7 +26,8 @@ RawResult rosenbrock4_run(std::size_t n, const std::vector<double>& x0,
     if (rc != 0) {
       std::ostringstream msg;
       msg << "right-hand side returned " << rc
-          << (rc > 0 ? " (recoverable; Odeint cannot retry)" : " (fatal)") << " at t = " << t << " s";
+          << (rc > 0 ? " (recoverable; Odeint cannot retry)" : " (fatal)") << " at t = " << t
+          << " s";
       throw std::runtime_error(msg.str());
     }
     std::copy(fs.begin(), fs.end(), dxdt.begin());
@@ -71,7 +72,8 @@ RawResult rosenbrock4_run(std::size_t n, const std::vector<double>& x0,
       if (next >= times.size()) break;
       if (++since_output > s.max_steps) {
         std::ostringstream msg;
-        msg << "more than max_steps = " << s.max_steps << " steps before output t = " << times[next];
+        msg << "more than max_steps = " << s.max_steps
+            << " steps before output t = " << times[next];
         throw std::runtime_error(msg.str());
       }
       stepper.do_step(std::make_pair(sys, jacobian));

@@ -24,7 +24,8 @@ std::vector<Mode> linear_modes(const OdeSystem& system, double t, std::span<cons
     const std::complex<double> lambda = solver.eigenvalues()[i];
     const double mag = std::abs(lambda);
     if (mag < 1e-9) continue;
-    modes.push_back(Mode{lambda, -lambda.real() / mag, std::abs(lambda.imag()) / (2.0 * std::numbers::pi)});
+    modes.push_back(
+        Mode{lambda, -lambda.real() / mag, std::abs(lambda.imag()) / (2.0 * std::numbers::pi)});
   }
   std::sort(modes.begin(), modes.end(),
             [](const Mode& a, const Mode& b) { return a.damping_ratio < b.damping_ratio; });
@@ -35,12 +36,14 @@ namespace {
 Mode least_damped_at(const SystemAtSpeed& factory, double speed, std::span<const double> x_eq) {
   const auto system = factory(speed);
   const auto modes = linear_modes(*system, 0.0, x_eq);
-  if (modes.empty()) throw std::runtime_error(fmt::format("no non-neutral mode at V = {} m/s", speed));
+  if (modes.empty())
+    throw std::runtime_error(fmt::format("no non-neutral mode at V = {} m/s", speed));
   return modes.front();
 }
 }  // namespace
 
-std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory, const std::vector<double>& speeds,
+std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory,
+                                      const std::vector<double>& speeds,
                                       std::span<const double> x_eq) {
   std::vector<SweepPoint> out;
   out.reserve(speeds.size());
@@ -49,11 +52,12 @@ std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory, const std::v
 }
 
 std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min, double v_max,
-                                     std::span<const double> x_eq, int scan_points, double rel_tol) {
+                                     std::span<const double> x_eq, int scan_points,
+                                     double rel_tol) {
   if (!(v_min > 0.0) || !(v_max > v_min) || scan_points < 2) {
-    throw std::invalid_argument(fmt::format(
-        "critical_speed: need 0 < v_min < v_max and scan_points >= 2, got {}, {}, {}", v_min, v_max,
-        scan_points));
+    throw std::invalid_argument(
+        fmt::format("critical_speed: need 0 < v_min < v_max and scan_points >= 2, got {}, {}, {}",
+                    v_min, v_max, scan_points));
   }
   auto zeta = [&](double v) { return least_damped_at(factory, v, x_eq).damping_ratio; };
   double v_prev = v_min, z_prev = zeta(v_min);

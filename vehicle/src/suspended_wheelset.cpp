@@ -60,7 +60,8 @@ void LinearCreepParams::validate(const std::string& where) const {
 CreepCoefficients creep_coefficients(const LinearCreepParams& creep) {
   creep.validate();
   const auto m = contact::combine(creep.wheel, creep.rail);
-  const auto c = contact::kalker_coefficients_table(creep.semi_axis_a, creep.semi_axis_b, m.poisson);
+  const auto c =
+      contact::kalker_coefficients_table(creep.semi_axis_a, creep.semi_axis_b, m.poisson);
   const double gab = m.shear_modulus * creep.semi_axis_a * creep.semi_axis_b;
   const double c22 = creep.coefficients == "equal" ? c.c11 : c.c22;
   return CreepCoefficients{gab * c.c11 * creep.k11, gab * c22 * creep.k22};
@@ -88,7 +89,8 @@ int SuspendedWheelset::rhs(double /*t*/, std::span<const double> x, std::span<do
   const double lateral_force = -2.0 * creep_.f22 * xi_y;
   const double yaw_moment = 2.0 * e * creep_.f11 * xi_x_left;
   const double fy_susp = -2.0 * p_.primary_stiffness_y * y - 2.0 * p_.primary_damping_y * yd;
-  const double mz_susp = -2.0 * d * d * (p_.primary_stiffness_x * psi + p_.primary_damping_x * psid);
+  const double mz_susp =
+      -2.0 * d * d * (p_.primary_stiffness_x * psi + p_.primary_damping_x * psid);
   xdot[0] = yd;
   xdot[1] = psid;
   xdot[2] = (lateral_force + fy_susp) / p_.mass;
@@ -110,7 +112,8 @@ std::vector<SignalInfo> SuspendedWheelset::signal_info() const {
           {"contact.yaw_moment", "N m", "yaw moment of the longitudinal creep forces"}};
 }
 
-void SuspendedWheelset::signals(double /*t*/, std::span<const double> x, std::span<double> out) const {
+void SuspendedWheelset::signals(double /*t*/, std::span<const double> x,
+                                std::span<double> out) const {
   const double e = p_.half_gauge, V = speed_;
   const double xi_y = x[2] / V - x[1];
   const double xi_x_left = -(e * x[3] / V + p_.conicity * x[0] / p_.rolling_radius);

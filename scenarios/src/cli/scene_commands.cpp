@@ -1,7 +1,7 @@
 // Verbs on scenes and run outputs: run, eig, plot, validate.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -42,10 +42,11 @@ std::string default_plot_dir(const std::string& h5) {
   return (p.parent_path() / (p.stem().string() + "_plots")).string();
 }
 
-int make_plots(const std::string& mode, const std::string& h5, const std::vector<std::string>& signals,
-               const std::string& out_dir, const std::string& format) {
-  std::vector<std::string> argv = {python_program(), plot_script_path(), mode, h5, "--out", out_dir,
-                                   "--format", format};
+int make_plots(const std::string& mode, const std::string& h5,
+               const std::vector<std::string>& signals, const std::string& out_dir,
+               const std::string& format) {
+  std::vector<std::string> argv = {python_program(), plot_script_path(), mode,  h5, "--out",
+                                   out_dir,          "--format",         format};
   if (!signals.empty()) {
     argv.emplace_back("--signals");
     argv.insert(argv.end(), signals.begin(), signals.end());
@@ -56,11 +57,13 @@ int make_plots(const std::string& mode, const std::string& h5, const std::vector
 int do_run(const RunArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
   if (!std::isnan(a.t_end)) {
-    if (!(a.t_end > 0.0)) throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", a.t_end));
+    if (!(a.t_end > 0.0))
+      throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", a.t_end));
     scene.simulation.t_end = a.t_end;
   }
   if (!std::isnan(a.speed)) {
-    if (!(a.speed > 0.0)) throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", a.speed));
+    if (!(a.speed > 0.0))
+      throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", a.speed));
     scene.simulation.speed = a.speed;
   }
   if (!a.integrator.empty()) {
@@ -69,7 +72,8 @@ int do_run(const RunArgs& a) {
   }
   scenarios::RunOptions opt;
   opt.output_file = a.output;
-  if (!(a.pace >= 0.0)) throw std::invalid_argument(fmt::format("--pace: must be >= 0, got {}", a.pace));
+  if (!(a.pace >= 0.0))
+    throw std::invalid_argument(fmt::format("--pace: must be >= 0, got {}", a.pace));
   opt.pace = a.pace;
   if (!a.csv.empty()) opt.csv = a.csv;
   Progress progress(scene.simulation.t_end, stderr);
@@ -94,8 +98,8 @@ int do_run(const RunArgs& a) {
                  modes.front().damping_ratio > 0.0 ? "stable" : "unstable");
     }
   }
-  fmt::print("  solver    {} (rtol {:g}, atol {:g}): {} steps, {} rhs evaluations\n", scene.solver.method,
-             scene.solver.rtol, scene.solver.atol, s.steps, s.rhs_evaluations);
+  fmt::print("  solver    {} (rtol {:g}, atol {:g}): {} steps, {} rhs evaluations\n",
+             scene.solver.method, scene.solver.rtol, scene.solver.atol, s.steps, s.rhs_evaluations);
   fmt::print("  status    {} at t = {:.6g} s: {} samples in {:.3f} s wall ({:.1f}x real time)\n",
              s.status_text, s.t_reached, s.samples, s.wall_seconds,
              s.wall_seconds > 0 ? s.t_reached / s.wall_seconds : 0.0);
@@ -116,12 +120,15 @@ int do_run(const RunArgs& a) {
     if (rc == 0) {
       fmt::print("  plots     {}/\n", dir);
     } else {
-      fmt::print(stderr, "ferrodyn: warning: plotting failed (python3 with matplotlib and h5py needed); "
-                         "the results in {} are complete\n", s.output_file);
+      fmt::print(stderr,
+                 "ferrodyn: warning: plotting failed (python3 with matplotlib and h5py needed); "
+                 "the results in {} are complete\n",
+                 s.output_file);
     }
   }
   std::fflush(stdout);
-  if (s.status == vehicle::IntegrationResult::Status::kInterrupted) return sig != 0 ? 128 + sig : kExitInterrupted;
+  if (s.status == vehicle::IntegrationResult::Status::kInterrupted)
+    return sig != 0 ? 128 + sig : kExitInterrupted;
   if (s.status == vehicle::IntegrationResult::Status::kSolverFailure) {
     fmt::print(stderr, "ferrodyn: solver failure: {}\n", s.message);
     return kExitRunFailure;
@@ -135,14 +142,16 @@ int do_eig(const EigArgs& a) {
   if (!std::isnan(a.speed_max)) scene.eigen.speed_max = a.speed_max;
   if (a.points > 0) scene.eigen.points = a.points;
   if (!(scene.eigen.speed_min > 0.0 && scene.eigen.speed_max > scene.eigen.speed_min)) {
-    throw std::invalid_argument(fmt::format("--speed-min/--speed-max: need 0 < min < max, got {} and {}",
-                                            scene.eigen.speed_min, scene.eigen.speed_max));
+    throw std::invalid_argument(
+        fmt::format("--speed-min/--speed-max: need 0 < min < max, got {} and {}",
+                    scene.eigen.speed_min, scene.eigen.speed_max));
   }
   if (scene.eigen.points < 2) throw std::invalid_argument("--points: must be >= 2");
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn eig: {} ({}), {} speeds in [{:g}, {:g}] m/s\n", scene.name, scene.path,
              scene.eigen.points, scene.eigen.speed_min, scene.eigen.speed_max);
-  fmt::print("  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio", "freq [Hz]");
+  fmt::print("  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
+             "freq [Hz]");
   const std::size_t stride = std::max<std::size_t>(1, r.sweep.size() / 15);
   for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
     const auto& p = r.sweep[i];
@@ -153,12 +162,14 @@ int do_eig(const EigArgs& a) {
     fmt::print("  critical speed (least damped mode crosses zero): {:.6f} m/s = {:.3f} km/h\n",
                *r.critical_speed, *r.critical_speed * 3.6);
   } else {
-    fmt::print("  no critical speed in [{:g}, {:g}] m/s\n", scene.eigen.speed_min, scene.eigen.speed_max);
+    fmt::print("  no critical speed in [{:g}, {:g}] m/s\n", scene.eigen.speed_min,
+               scene.eigen.speed_max);
   }
   if (r.closed_form_critical_speed) {
     fmt::print("  closed form eq. (151): {:.6f} m/s", *r.closed_form_critical_speed);
     if (r.critical_speed) {
-      fmt::print(" (relative difference {:.2e})", *r.critical_speed / *r.closed_form_critical_speed - 1.0);
+      fmt::print(" (relative difference {:.2e})",
+                 *r.critical_speed / *r.closed_form_critical_speed - 1.0);
     }
     fmt::print("\n");
   } else if (!r.closed_form_note.empty()) {
@@ -166,7 +177,8 @@ int do_eig(const EigArgs& a) {
   }
   const std::string out = a.output.empty()
                               ? (fs::path(scene.output.file).parent_path() /
-                                 (fs::path(scene.output.file).stem().string() + "_eig.h5")).string()
+                                 (fs::path(scene.output.file).stem().string() + "_eig.h5"))
+                                    .string()
                               : a.output;
   scenarios::write_eigen_report(scene, r, out);
   fmt::print("  output    {}\n", out);
@@ -175,30 +187,36 @@ int do_eig(const EigArgs& a) {
     if (make_plots("eigen", out, {}, dir, "png,svg") == 0) {
       fmt::print("  plots     {}/\n", dir);
     } else {
-      fmt::print(stderr, "ferrodyn: warning: plotting failed; the results in {} are complete\n", out);
+      fmt::print(stderr, "ferrodyn: warning: plotting failed; the results in {} are complete\n",
+                 out);
     }
   }
   return kExitOk;
 }
 
 int do_plot(const PlotArgs& a) {
-  if (!fs::exists(a.file)) throw std::invalid_argument(fmt::format("plot: no such file '{}'", a.file));
+  if (!fs::exists(a.file))
+    throw std::invalid_argument(fmt::format("plot: no such file '{}'", a.file));
   if (a.format != "png" && a.format != "svg" && a.format != "png,svg" && a.format != "svg,png") {
-    throw std::invalid_argument(fmt::format("--format: unknown '{}'; allowed: png, svg, png,svg", a.format));
+    throw std::invalid_argument(
+        fmt::format("--format: unknown '{}'; allowed: png, svg, png,svg", a.format));
   }
   const std::string dir = a.out_dir.empty() ? default_plot_dir(a.file) : a.out_dir;
   const int rc = make_plots("auto", a.file, a.signals, dir, a.format);
   if (rc == 2) return kExitBadInput;
-  if (rc != 0) throw std::runtime_error("plotting failed (python3 with matplotlib and h5py needed)");
+  if (rc != 0)
+    throw std::runtime_error("plotting failed (python3 with matplotlib and h5py needed)");
   fmt::print("plots written to {}/\n", dir);
   return kExitOk;
 }
 
 int do_validate(const std::string& path) {
   const Scene s = scenarios::load_scene(path);
-  fmt::print("{}: valid scene '{}' (schema {}): model {}, track {}, integrator {}, t_end {} s, V = {} m/s\n",
-             path, s.name, s.schema_version, s.model.type, s.track.type, s.solver.method,
-             s.simulation.t_end, s.simulation.speed);
+  fmt::print(
+      "{}: valid scene '{}' (schema {}): model {}, track {}, integrator {}, t_end {} s, V = {} "
+      "m/s\n",
+      path, s.name, s.schema_version, s.model.type, s.track.type, s.solver.method,
+      s.simulation.t_end, s.simulation.speed);
   return kExitOk;
 }
 
@@ -208,22 +226,27 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   auto run_args = std::make_shared<RunArgs>();
   auto* run = app.add_subcommand("run", "Time simulation of a scene: HDF5 output, summary, plots");
   run->add_option("scene", run_args->scene, "Scene YAML file")->required();
-  run->add_option("-o,--output", run_args->output, "HDF5 output file (default: the scene's output.file)");
-  run->add_option("--csv", run_args->csv, "Also write these signals to CSV ('all' for every signal)");
+  run->add_option("-o,--output", run_args->output,
+                  "HDF5 output file (default: the scene's output.file)");
+  run->add_option("--csv", run_args->csv,
+                  "Also write these signals to CSV ('all' for every signal)");
   run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
   run->add_option("--pace", run_args->pace,
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
-  run->add_option("--plot-dir", run_args->plot_dir, "Folder for the plots (default: <output>_plots)");
+  run->add_option("--plot-dir", run_args->plot_dir,
+                  "Folder for the plots (default: <output>_plots)");
   run->add_flag("--no-plots", run_args->no_plots, "Do not draw plots");
   run->add_flag("-q,--quiet", run_args->quiet, "No progress display");
   run->callback([&handler, run_args] { handler = [run_args] { return do_run(*run_args); }; });
 
   auto eig_args = std::make_shared<EigArgs>();
-  auto* eig = app.add_subcommand("eig", "Linear eigenvalue analysis over a speed range; critical speed");
+  auto* eig =
+      app.add_subcommand("eig", "Linear eigenvalue analysis over a speed range; critical speed");
   eig->add_option("scene", eig_args->scene, "Scene YAML file")->required();
-  eig->add_option("-o,--output", eig_args->output, "HDF5 output (default: <output.file stem>_eig.h5)");
+  eig->add_option("-o,--output", eig_args->output,
+                  "HDF5 output (default: <output.file stem>_eig.h5)");
   eig->add_option("--speed-min", eig_args->speed_min, "Lowest speed [m/s]");
   eig->add_option("--speed-max", eig_args->speed_max, "Highest speed [m/s]");
   eig->add_option("--points", eig_args->points, "Number of speeds in the sweep");
@@ -241,7 +264,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   auto scene_path = std::make_shared<std::string>();
   auto* validate = app.add_subcommand("validate", "Check a scene file and report the first error");
   validate->add_option("scene", *scene_path, "Scene YAML file")->required();
-  validate->callback([&handler, scene_path] { handler = [scene_path] { return do_validate(*scene_path); }; });
+  validate->callback(
+      [&handler, scene_path] { handler = [scene_path] { return do_validate(*scene_path); }; });
 }
 
 }  // namespace ferro::cli

@@ -13,7 +13,9 @@ extern char** environ;
 namespace ferro::cli {
 namespace {
 volatile std::sig_atomic_t g_signal = 0;
-extern "C" void on_signal(int sig) { g_signal = sig; }
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+}
 
 std::string format_seconds(double s) {
   if (s < 60.0) return fmt::format("{:.1f} s", s);
@@ -22,8 +24,11 @@ std::string format_seconds(double s) {
 }  // namespace
 
 Progress::Progress(double t_end, std::FILE* out)
-    : t_end_(t_end), out_(out), tty_(isatty(fileno(out)) != 0),
-      start_(std::chrono::steady_clock::now()), last_draw_(start_) {}
+    : t_end_(t_end),
+      out_(out),
+      tty_(isatty(fileno(out)) != 0),
+      start_(std::chrono::steady_clock::now()),
+      last_draw_(start_) {}
 
 void Progress::update(double t) {
   const auto now = std::chrono::steady_clock::now();
@@ -46,8 +51,8 @@ void Progress::update(double t) {
   const int decile = static_cast<int>(frac * 10.0 + 1e-9);
   if (elapsed >= 1.0 && decile > last_decile_ && decile < 10) {
     last_decile_ = decile;
-    fmt::print(out_, "progress: {}% (t = {:.6g} s of {:.6g} s, elapsed {}, ETA {})\n", decile * 10, t,
-               t_end_, format_seconds(elapsed), format_seconds(eta));
+    fmt::print(out_, "progress: {}% (t = {:.6g} s of {:.6g} s, elapsed {}, ETA {})\n", decile * 10,
+               t, t_end_, format_seconds(elapsed), format_seconds(eta));
     std::fflush(out_);
   }
 }
@@ -70,7 +75,9 @@ InterruptGuard::~InterruptGuard() {
   sigaction(SIGTERM, &old_term_, nullptr);
 }
 
-int InterruptGuard::signal_received() { return g_signal; }
+int InterruptGuard::signal_received() {
+  return g_signal;
+}
 
 int run_program(const std::vector<std::string>& argv) {
   std::vector<char*> args;
@@ -91,11 +98,13 @@ std::string python_program() {
 
 std::string plot_script_path() {
   namespace fs = std::filesystem;
-  if (const char* env = std::getenv("FERRO_PLOT_SCRIPT"); env != nullptr && fs::exists(env)) return env;
+  if (const char* env = std::getenv("FERRO_PLOT_SCRIPT"); env != nullptr && fs::exists(env))
+    return env;
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    const fs::path installed = exe.parent_path().parent_path() / "share" / "ferrodyn" / "ferroplot.py";
+    const fs::path installed =
+        exe.parent_path().parent_path() / "share" / "ferrodyn" / "ferroplot.py";
     if (fs::exists(installed)) return installed.string();
   }
   const fs::path source = fs::path(FERRO_SOURCE_DIR) / "tools" / "ferroplot.py";

@@ -30,9 +30,9 @@ struct Material {
 /// Combined constants of two bodies: 1/G = (1/G1 + 1/G2)/2, nu/G = (nu1/G1 + nu2/G2)/2
 /// (Toumi eqs. 58-59), and the Hertz contact modulus E* with 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
 struct CombinedMaterial {
-  double shear_modulus = 0.0;   ///< G [Pa]
-  double poisson = 0.0;         ///< nu [-]
-  double contact_modulus = 0.0; ///< E* [Pa]
+  double shear_modulus = 0.0;    ///< G [Pa]
+  double poisson = 0.0;          ///< nu [-]
+  double contact_modulus = 0.0;  ///< E* [Pa]
 };
 
 [[nodiscard]] CombinedMaterial combine(const Material& body1, const Material& body2);

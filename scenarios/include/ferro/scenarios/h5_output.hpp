@@ -39,7 +39,8 @@ class H5File {
   void set_attribute(const std::string& object, const std::string& name, const std::string& value);
   void set_attribute(const std::string& object, const std::string& name, double value);
   void set_attribute(const std::string& object, const std::string& name, long value);
-  [[nodiscard]] std::string string_attribute(const std::string& object, const std::string& name) const;
+  [[nodiscard]] std::string string_attribute(const std::string& object,
+                                             const std::string& name) const;
   [[nodiscard]] double number_attribute(const std::string& object, const std::string& name) const;
 
   /// Fixed-size 1-D dataset of doubles with `unit` and `description` attributes.

@@ -22,6 +22,7 @@ struct Scene;
 [[nodiscard]] std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed);
 
 /// Initial state from the scene's `simulation.initial` (zeros elsewhere).
-[[nodiscard]] std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& system);
+[[nodiscard]] std::vector<double> initial_state(const Scene& scene,
+                                                const vehicle::OdeSystem& system);
 
 }  // namespace ferro::scenarios

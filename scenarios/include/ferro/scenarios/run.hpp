@@ -14,11 +14,11 @@
 namespace ferro::scenarios {
 
 struct RunOptions {
-  std::string output_file;                 ///< overrides scene.output.file when not empty
+  std::string output_file;                      ///< overrides scene.output.file when not empty
   std::optional<std::vector<std::string>> csv;  ///< overrides scene.output.csv when set
-  std::function<void(double t)> progress;  ///< called at each output time
-  std::function<bool()> should_stop;       ///< polled at each output time; true stops the run
-  std::string stop_reason = "interrupted"; ///< status message prefix when should_stop fired
+  std::function<void(double t)> progress;       ///< called at each output time
+  std::function<bool()> should_stop;            ///< polled at each output time; true stops the run
+  std::string stop_reason = "interrupted";      ///< status message prefix when should_stop fired
   /// Simulated seconds per wall-clock second (0 = as fast as possible). With pace 1 a run
   /// advances in real time, so it can be watched live.
   double pace = 0.0;
@@ -26,18 +26,18 @@ struct RunOptions {
 
 struct RunSummary {
   vehicle::IntegrationResult::Status status = vehicle::IntegrationResult::Status::kCompleted;
-  std::string status_text;     ///< completed | interrupted | solver_failure
-  std::string message;         ///< cause of a failure or interruption
-  double t_reached = 0.0;      ///< [s]
+  std::string status_text;  ///< completed | interrupted | solver_failure
+  std::string message;      ///< cause of a failure or interruption
+  double t_reached = 0.0;   ///< [s]
   long samples = 0;
   double wall_seconds = 0.0;
   long steps = 0;
   long rhs_evaluations = 0;
   std::string output_file;
-  std::string csv_file;        ///< empty when no CSV was asked for
+  std::string csv_file;                       ///< empty when no CSV was asked for
   std::vector<vehicle::SignalInfo> channels;  ///< states then derived signals
-  std::vector<double> peak_abs;   ///< max |value| per channel over the run
-  std::vector<double> final_values;  ///< per channel at t_reached (last sample)
+  std::vector<double> peak_abs;               ///< max |value| per channel over the run
+  std::vector<double> final_values;           ///< per channel at t_reached (last sample)
 };
 
 /// Integrates the scene, writing samples as they come. Never throws for a solver failure or an
@@ -47,9 +47,9 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options = {});
 
 struct EigenReport {
   std::vector<vehicle::SweepPoint> sweep;
-  std::optional<double> critical_speed;           ///< [m/s], eigenvalue crossing
+  std::optional<double> critical_speed;              ///< [m/s], eigenvalue crossing
   std::optional<double> closed_form_critical_speed;  ///< eq. (151) when its assumptions hold
-  std::string closed_form_note;                   ///< why eq. (151) does or does not apply
+  std::string closed_form_note;                      ///< why eq. (151) does or does not apply
   std::vector<vehicle::Mode> modes_at_scene_speed;
 };
 

@@ -31,17 +31,17 @@ struct ContactConfig {
 
 struct SimulationConfig {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  double speed = kNaN;  ///< forward speed V [m/s]
-  double t_end = kNaN;  ///< end time [s]
+  double speed = kNaN;                    ///< forward speed V [m/s]
+  double t_end = kNaN;                    ///< end time [s]
   std::map<std::string, double> initial;  ///< initial state by state name (others 0) [SI]
 };
 
 struct OutputConfig {
-  std::string file = "out/run.h5";     ///< HDF5 path (relative to the working directory)
-  double interval = 1e-3;              ///< output sampling interval [s]
-  double flush_seconds = 0.5;          ///< flush to disk at least this often (wall clock) [s]
-  std::vector<std::string> csv;        ///< signals also written to CSV ("all" for every one)
-  std::vector<std::string> plots;      ///< signals plotted by `ferrodyn run` (empty: the states)
+  std::string file = "out/run.h5";  ///< HDF5 path (relative to the working directory)
+  double interval = 1e-3;           ///< output sampling interval [s]
+  double flush_seconds = 0.5;       ///< flush to disk at least this often (wall clock) [s]
+  std::vector<std::string> csv;     ///< signals also written to CSV ("all" for every one)
+  std::vector<std::string> plots;   ///< signals plotted by `ferrodyn run` (empty: the states)
 };
 
 struct EigenConfig {
@@ -51,8 +51,8 @@ struct EigenConfig {
 };
 
 struct Scene {
-  std::string path;          ///< scene file
-  std::string text;          ///< scene text followed by each included file's text
+  std::string path;  ///< scene file
+  std::string text;  ///< scene text followed by each included file's text
   int schema_version = kSceneSchemaVersion;
   std::string name;
   std::string description;

@@ -43,7 +43,8 @@ struct YamlFile {
 [[nodiscard]] YamlFile parse_yaml_text(const std::string& text, const std::string& path);
 
 /// Smallest edit distance candidate to `word` among `candidates`, or "" when none is close.
-[[nodiscard]] std::string nearest_key(const std::string& word, const std::set<std::string>& candidates);
+[[nodiscard]] std::string nearest_key(const std::string& word,
+                                      const std::set<std::string>& candidates);
 
 /// Reads one YAML mapping. Every accessor records the key as known; finish() then rejects keys
 /// never asked for. Numbers must be finite unless allowed otherwise.
@@ -55,9 +56,11 @@ class MapReader {
   /// Required number.
   [[nodiscard]] double number(const std::string& key);
   /// Optional number, `fallback` when absent. allow_infinite accepts .inf (e.g. max_step).
-  [[nodiscard]] double number_or(const std::string& key, double fallback, bool allow_infinite = false);
+  [[nodiscard]] double number_or(const std::string& key, double fallback,
+                                 bool allow_infinite = false);
   [[nodiscard]] long integer_or(const std::string& key, long fallback);
-  [[nodiscard]] std::string string(const std::string& key, const std::vector<std::string>& allowed = {});
+  [[nodiscard]] std::string string(const std::string& key,
+                                   const std::vector<std::string>& allowed = {});
   [[nodiscard]] std::string string_or(const std::string& key, const std::string& fallback,
                                       const std::vector<std::string>& allowed = {});
   [[nodiscard]] std::vector<std::string> string_list_or(const std::string& key,

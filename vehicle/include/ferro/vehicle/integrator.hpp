@@ -21,14 +21,14 @@ namespace ferro::vehicle {
 
 /// Integrator choice and tolerances, as read from a scene's `solver` part.
 struct IntegratorSettings {
-  std::string method = "cvode_bdf";  ///< one of available_integrators()
-  double rtol = 1e-8;                ///< relative tolerance [-]
-  double atol = 1e-10;               ///< absolute tolerance [state units]
+  std::string method = "cvode_bdf";                           ///< one of available_integrators()
+  double rtol = 1e-8;                                         ///< relative tolerance [-]
+  double atol = 1e-10;                                        ///< absolute tolerance [state units]
   double max_step = std::numeric_limits<double>::infinity();  ///< [s]
-  double initial_step = 0.0;  ///< [s]; 0 lets the integrator choose
-  std::string linear_solver = "dense";  ///< cvode_bdf only: "dense" or "band"
-  long max_steps = 1000000;             ///< internal steps allowed between two outputs
-  int erk_order = 4;                    ///< arkode_erk: method order (2..8)
+  double initial_step = 0.0;                                  ///< [s]; 0 lets the integrator choose
+  std::string linear_solver = "dense";                        ///< cvode_bdf only: "dense" or "band"
+  long max_steps = 1000000;  ///< internal steps allowed between two outputs
+  int erk_order = 4;         ///< arkode_erk: method order (2..8)
 
   /// Throws std::invalid_argument naming the field and the allowed values.
   void validate(const std::string& where = "solver") const;
@@ -44,11 +44,11 @@ using Observer = std::function<bool(double t, std::span<const double> x)>;
 struct IntegrationResult {
   enum class Status { kCompleted, kInterrupted, kSolverFailure };
   Status status = Status::kCompleted;
-  double t_reached = 0.0;         ///< last time with a valid state [s]
-  std::vector<double> state;      ///< state at t_reached
-  std::string message;            ///< cause of a failure, empty otherwise
-  long steps = 0;                 ///< internal steps taken
-  long rhs_evaluations = 0;       ///< right-hand-side calls
+  double t_reached = 0.0;     ///< last time with a valid state [s]
+  std::vector<double> state;  ///< state at t_reached
+  std::string message;        ///< cause of a failure, empty otherwise
+  long steps = 0;             ///< internal steps taken
+  long rhs_evaluations = 0;   ///< right-hand-side calls
 };
 
 [[nodiscard]] std::string to_string(IntegrationResult::Status status);

@@ -29,8 +29,8 @@ struct Mode {
 using SystemAtSpeed = std::function<std::unique_ptr<OdeSystem>(double speed)>;
 
 struct SweepPoint {
-  double speed = 0.0;          ///< [m/s]
-  Mode least_damped;           ///< least damped mode at that speed
+  double speed = 0.0;  ///< [m/s]
+  Mode least_damped;   ///< least damped mode at that speed
 };
 
 /// Least damped mode at each speed.
