@@ -170,6 +170,15 @@ void MeasuredIrregularity::finish() {
     m.assign(n, 0.0);
     m[0] = (y[1] - y[0]) / (s_[1] - s_[0]);
     m[n - 1] = (y[n - 1] - y[n - 2]) / (s_[n - 1] - s_[n - 2]);
+    if (n >= 3) {
+      // Ends: slope of the parabola through the three end points.
+      const double h0 = s_[1] - s_[0], h1 = s_[2] - s_[1];
+      const double d0 = (y[1] - y[0]) / h0, d1 = (y[2] - y[1]) / h1;
+      m[0] = ((2 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+      const double ha = s_[n - 2] - s_[n - 3], hb = s_[n - 1] - s_[n - 2];
+      const double da = (y[n - 2] - y[n - 3]) / ha, db = (y[n - 1] - y[n - 2]) / hb;
+      m[n - 1] = ((2 * hb + ha) * db - hb * da) / (ha + hb);
+    }
     for (std::size_t i = 1; i + 1 < n; ++i) {
       // Slope of the parabola through three points.
       const double h0 = s_[i] - s_[i - 1], h1 = s_[i + 1] - s_[i];

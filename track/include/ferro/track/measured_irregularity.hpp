@@ -12,9 +12,9 @@
 //   0.00,0.0,0.0,0.0,0.0
 //   0.25,0.4,-0.3,0.1,0.2
 //
-// Interpolation: piecewise cubic Hermite with slopes from the three-point (parabolic)
-// difference at inner points and the one-sided difference at the ends: value and slope
-// continuous. Outside [s_first, s_last] the first / last values hold, with zero slope.
+// Interpolation: piecewise cubic Hermite with slopes of the parabola through three
+// neighbouring points (centred inside, one-sided at the ends): value and slope continuous,
+// quadratics reproduced exactly. Outside [s_first, s_last] the first / last values hold, with zero slope.
 //
 // References: EN 13848-1:2019 (channel definitions; sign conventions as irregularity.hpp).
 // Known deviations: the data are taken as already filtered; no resampling or chord-transfer
