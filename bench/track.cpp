@@ -1,6 +1,7 @@
 // Cost of evaluating the design track frame and the irregularities at one arc length.
 // Figures go to docs/reports/track.md. Run:
-//   ./build/bench/ferro_bench_track --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   ./build/bench/ferro_bench_track --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>
 

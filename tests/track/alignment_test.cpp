@@ -4,14 +4,14 @@
 // Oracles: Fresnel integrals by their power series (Abramowitz & Stegun 7.3.11, 7.3.13) checked
 // against A&S Table 7.7; circle geometry; central differences.
 
+#include "ferro/track/alignment.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include "ferro/track/alignment.hpp"
 
 namespace ferro::track {
 namespace {
@@ -28,10 +28,18 @@ void fresnel_series(double t, double& c, double& s) {
   for (int n = 0; n < 80; ++n) {
     const long double contrib = power / (2 * n + 1);
     switch (n % 4) {
-      case 0: sum_c += contrib; break;
-      case 1: sum_s += contrib; break;
-      case 2: sum_c -= contrib; break;
-      case 3: sum_s -= contrib; break;
+      case 0:
+        sum_c += contrib;
+        break;
+      case 1:
+        sum_s += contrib;
+        break;
+      case 2:
+        sum_c -= contrib;
+        break;
+      case 3:
+        sum_s -= contrib;
+        break;
     }
     power *= a * static_cast<long double>(t) * t / (n + 1);
   }
@@ -48,8 +56,12 @@ TEST(FresnelOracle, abramowitz_stegun_table_7_7) {
   EXPECT_NEAR(s, 0.4382591474, kTableTolerance);
 }
 
-SectionSpec straight(double length) { return {SectionKind::kStraight, length}; }
-SectionSpec transition(double length) { return {SectionKind::kTransition, length}; }
+SectionSpec straight(double length) {
+  return {SectionKind::kStraight, length};
+}
+SectionSpec transition(double length) {
+  return {SectionKind::kTransition, length};
+}
 SectionSpec curve(double length, double radius, double cant = 0.0, double widening = 0.0) {
   return {SectionKind::kCurve, length, radius, cant, widening};
 }
@@ -111,8 +123,8 @@ TEST(Alignment, circular_curve_points_lie_on_the_circle) {
     const Alignment a(d);
     const TrackFrame f0 = a.frame(0.0);
     // Centre: start point + R * left normal.
-    const Eigen::Vector3d centre = f0.position + radius * Eigen::Vector3d(-std::sin(-0.7),
-                                                                          std::cos(-0.7), 0.0);
+    const Eigen::Vector3d centre =
+        f0.position + radius * Eigen::Vector3d(-std::sin(-0.7), std::cos(-0.7), 0.0);
     for (int i = 1; i <= 30; ++i) {
       const double s = a.end_s() * i / 30.0;
       const TrackFrame f = a.frame(s);
@@ -130,8 +142,8 @@ TrackDesign fig_4_4_like() {
   TrackDesign d;
   d.start_x = 10.0;
   d.start_heading = 0.1;
-  d.sections = {straight(50.0),      transition(30.0), curve(60.0, 300.0, 0.12, 0.01),
-                transition(30.0),    curve(40.0, -500.0, -0.08), transition(25.0),
+  d.sections = {straight(50.0),   transition(30.0),           curve(60.0, 300.0, 0.12, 0.01),
+                transition(30.0), curve(40.0, -500.0, -0.08), transition(25.0),
                 straight(20.0)};
   return d;
 }
@@ -143,9 +155,9 @@ TEST(Alignment, continuous_through_transitions) {
   for (int i = 1; i < n; ++i) {
     const double b = a.section_start(i);
     const TrackFrame lo = a.frame(b - kDelta), hi = a.frame(b + kDelta);
-    // A continuous quantity changes by at most 2 delta max|f'| (< 2e-10) across the boundary; the largest
-    // first derivatives here are |k| <= 1/300, |k'| <= 1/9000, |D'| <= 0.0067, |phi'| <= 0.0045.
-    // Jumps to detect (a wrong ramp) are >= 1e-4, so 1e-9 separates cleanly.
+    // A continuous quantity changes by at most 2 delta max|f'| (< 2e-10) across the boundary; the
+    // largest first derivatives here are |k| <= 1/300, |k'| <= 1/9000, |D'| <= 0.0067, |phi'| <=
+    // 0.0045. Jumps to detect (a wrong ramp) are >= 1e-4, so 1e-9 separates cleanly.
     constexpr double kJump = 1e-9;
     EXPECT_NEAR(lo.heading, hi.heading, kJump) << "boundary " << i;
     EXPECT_NEAR(lo.curvature, hi.curvature, kJump) << "boundary " << i;
@@ -191,8 +203,8 @@ TEST(Alignment, derivatives_match_central_differences) {
     Eigen::Matrix3d wx;
     wx << 0, -w.z(), w.y(), w.z(), 0, -w.x(), -w.y(), w.x(), 0;
     EXPECT_LT((dr - f.rotation * wx).norm(), kTol) << s;
-    const Eigen::Vector3d dw = (fp.angular_rate_per_length() - fm.angular_rate_per_length()) /
-                               (2 * kH);
+    const Eigen::Vector3d dw =
+        (fp.angular_rate_per_length() - fm.angular_rate_per_length()) / (2 * kH);
     EXPECT_LT((dw - f.d_angular_rate_per_length()).norm(), kTol) << s;
     // Rotation stays orthonormal.
     EXPECT_LT((f.rotation.transpose() * f.rotation - Eigen::Matrix3d::Identity()).norm(), 1e-14);

@@ -1,5 +1,7 @@
 // Isolated defects, sums, per-rail values and measured (CSV) irregularities.
 
+#include "ferro/track/irregularity.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <numbers>
 #include <string>
 
-#include "ferro/track/irregularity.hpp"
 #include "ferro/track/measured_irregularity.hpp"
 
 namespace ferro::track {
@@ -121,7 +122,8 @@ class MeasuredCsv : public ::testing::Test {
 };
 
 TEST_F(MeasuredCsv, reproduces_a_quadratic_exactly) {
-  // Hermite interpolation with three-point parabolic slopes is exact for quadratics; data: lateral = 1 + 0.5 s - 0.02 s^2 mm on non-uniform s.
+  // Hermite interpolation with three-point parabolic slopes is exact for quadratics; data: lateral
+  // = 1 + 0.5 s - 0.02 s^2 mm on non-uniform s.
   std::string text = "# test data\n\ncross_level_mm; s_m; lateral_mm\n";
   const double ss[] = {0.0, 0.7, 1.0, 2.5, 2.6, 4.0, 5.5};
   for (const double s : ss) {

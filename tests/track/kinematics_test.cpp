@@ -1,11 +1,11 @@
 // Track-frame kinematics: balance cant of Toumi eq. (148) reproduced by the frame's lateral
 // acceleration; angular velocity and acceleration against time differences along a trajectory.
 
+#include "ferro/track/kinematics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "ferro/track/kinematics.hpp"
 
 namespace ferro::track {
 namespace {

@@ -5,6 +5,8 @@
 // Oracles: the PSD formulas themselves (spectra.hpp, evaluated independently of the synthesis),
 // a Welch estimate computed with the test's own radix-2 FFT (not FFTW), the direct cosine sum.
 
+#include "ferro/track/stochastic_irregularity.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,8 +17,6 @@
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include "ferro/track/stochastic_irregularity.hpp"
 
 namespace ferro::track {
 namespace {
@@ -85,7 +85,7 @@ BandCheck check_spectrum(TrackSpectrum spectrum, IrregularityChannel channel, in
   spec.wavelength_min = 2.0;
   spec.wavelength_max = 120.0;
   spec.length = 40000.0;
-  const double ds = 0.25;      // sampling step of the estimate [m], 8 samples per 2 m wave
+  const double ds = 0.25;        // sampling step of the estimate [m], 8 samples per 2 m wave
   const std::size_t seg = 4096;  // 1024 m segments: 0.0061 rad/m resolution
   std::vector<double> psd(seg / 2 + 1, 0.0);
   int segments = 0;

@@ -1,12 +1,12 @@
 // Track = alignment + irregularities: rail points and twist.
 
+#include "ferro/track/track.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <numbers>
-
-#include "ferro/track/track.hpp"
 
 namespace ferro::track {
 namespace {
@@ -34,8 +34,9 @@ TEST(Track, twist_of_a_cant_ramp_and_a_cross_level_defect) {
   spec.start_s = 40.0;
   const Track t{Alignment(ramp_design()), std::make_shared<IsolatedDefect>(spec)};
   auto c = [&](double x) {
-    return (x > 0.0 && x < 6.0) ? 0.5 * spec.amplitude * (1.0 - std::cos(std::numbers::pi * x / 3.0))
-                                : 0.0;
+    return (x > 0.0 && x < 6.0)
+               ? 0.5 * spec.amplitude * (1.0 - std::cos(std::numbers::pi * x / 3.0))
+               : 0.0;
   };
   for (const double x : {1.0, 3.0, 4.5, 7.0}) {
     const double expected = 0.15 / 60.0 + (c(x) - c(x - 3.0)) / 3.0;

@@ -17,16 +17,18 @@ SectionKind section_kind_from_string(std::string_view name, const std::string& w
   if (name == "straight") return SectionKind::kStraight;
   if (name == "transition" || name == "clothoid") return SectionKind::kTransition;
   if (name == "curve" || name == "circular") return SectionKind::kCurve;
-  throw std::invalid_argument(
-      fmt::format("{}: unknown section kind '{}' (allowed: straight, transition, curve)", where,
-                  name));
+  throw std::invalid_argument(fmt::format(
+      "{}: unknown section kind '{}' (allowed: straight, transition, curve)", where, name));
 }
 
 std::string_view to_string(SectionKind kind) {
   switch (kind) {
-    case SectionKind::kStraight: return "straight";
-    case SectionKind::kTransition: return "transition";
-    case SectionKind::kCurve: return "curve";
+    case SectionKind::kStraight:
+      return "straight";
+    case SectionKind::kTransition:
+      return "transition";
+    case SectionKind::kCurve:
+      return "curve";
   }
   return "?";
 }
@@ -54,11 +56,11 @@ void SectionSpec::validate(const std::string& where) const {
   // Straights and transitions take no own radius, cant or widening.
   const auto kind_name = to_string(kind);
   if (!std::isnan(radius)) {
-    throw std::invalid_argument(fmt::format(
-        "{}.radius: only a curve has a radius; a {} {} (got {})", where, kind_name,
-        kind == SectionKind::kStraight ? "has zero curvature"
-                                       : "takes its curvatures from its neighbours",
-        radius));
+    throw std::invalid_argument(
+        fmt::format("{}.radius: only a curve has a radius; a {} {} (got {})", where, kind_name,
+                    kind == SectionKind::kStraight ? "has zero curvature"
+                                                   : "takes its curvatures from its neighbours",
+                    radius));
   }
   if (cant != 0.0) {
     throw std::invalid_argument(fmt::format(
@@ -66,9 +68,9 @@ void SectionSpec::validate(const std::string& where) const {
         kind == SectionKind::kStraight ? "has zero cant" : "ramps between its neighbours", cant));
   }
   if (gauge_widening != 0.0) {
-    throw std::invalid_argument(fmt::format(
-        "{}.gauge_widening: only a curve has its own gauge widening (got {})", where,
-        gauge_widening));
+    throw std::invalid_argument(
+        fmt::format("{}.gauge_widening: only a curve has its own gauge widening (got {})", where,
+                    gauge_widening));
   }
 }
 
@@ -96,9 +98,9 @@ void TrackDesign::validate() const {
     const auto where = fmt::format("sections[{}]", i);
     sections[i].validate(where);
     if (std::abs(sections[i].cant) >= rail_spacing) {
-      throw std::invalid_argument(fmt::format(
-          "{}.cant: |cant| must be smaller than rail_spacing = {} m (got {})", where,
-          rail_spacing, sections[i].cant));
+      throw std::invalid_argument(
+          fmt::format("{}.cant: |cant| must be smaller than rail_spacing = {} m (got {})", where,
+                      rail_spacing, sections[i].cant));
     }
     if (i > 0 && sections[i].kind == SectionKind::kTransition &&
         sections[i - 1].kind == SectionKind::kTransition) {

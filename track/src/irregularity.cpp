@@ -27,40 +27,64 @@ IrregularityChannel irregularity_channel_from_string(std::string_view name,
 
 std::string_view to_string(IrregularityChannel channel) {
   switch (channel) {
-    case IrregularityChannel::kLateral: return "lateral";
-    case IrregularityChannel::kVertical: return "vertical";
-    case IrregularityChannel::kCrossLevel: return "cross_level";
-    case IrregularityChannel::kGauge: return "gauge";
+    case IrregularityChannel::kLateral:
+      return "lateral";
+    case IrregularityChannel::kVertical:
+      return "vertical";
+    case IrregularityChannel::kCrossLevel:
+      return "cross_level";
+    case IrregularityChannel::kGauge:
+      return "gauge";
   }
   return "?";
 }
 
 double IrregularitySample::value(IrregularityChannel channel) const {
   switch (channel) {
-    case IrregularityChannel::kLateral: return lateral;
-    case IrregularityChannel::kVertical: return vertical;
-    case IrregularityChannel::kCrossLevel: return cross_level;
-    case IrregularityChannel::kGauge: return gauge;
+    case IrregularityChannel::kLateral:
+      return lateral;
+    case IrregularityChannel::kVertical:
+      return vertical;
+    case IrregularityChannel::kCrossLevel:
+      return cross_level;
+    case IrregularityChannel::kGauge:
+      return gauge;
   }
   return 0.0;
 }
 
 double IrregularitySample::derivative(IrregularityChannel channel) const {
   switch (channel) {
-    case IrregularityChannel::kLateral: return d_lateral;
-    case IrregularityChannel::kVertical: return d_vertical;
-    case IrregularityChannel::kCrossLevel: return d_cross_level;
-    case IrregularityChannel::kGauge: return d_gauge;
+    case IrregularityChannel::kLateral:
+      return d_lateral;
+    case IrregularityChannel::kVertical:
+      return d_vertical;
+    case IrregularityChannel::kCrossLevel:
+      return d_cross_level;
+    case IrregularityChannel::kGauge:
+      return d_gauge;
   }
   return 0.0;
 }
 
 void IrregularitySample::add(IrregularityChannel channel, double v, double dv) {
   switch (channel) {
-    case IrregularityChannel::kLateral: lateral += v; d_lateral += dv; break;
-    case IrregularityChannel::kVertical: vertical += v; d_vertical += dv; break;
-    case IrregularityChannel::kCrossLevel: cross_level += v; d_cross_level += dv; break;
-    case IrregularityChannel::kGauge: gauge += v; d_gauge += dv; break;
+    case IrregularityChannel::kLateral:
+      lateral += v;
+      d_lateral += dv;
+      break;
+    case IrregularityChannel::kVertical:
+      vertical += v;
+      d_vertical += dv;
+      break;
+    case IrregularityChannel::kCrossLevel:
+      cross_level += v;
+      d_cross_level += dv;
+      break;
+    case IrregularityChannel::kGauge:
+      gauge += v;
+      d_gauge += dv;
+      break;
   }
 }
 
@@ -113,8 +137,8 @@ IrregularitySample IrregularitySum::at(double s) const {
 DefectShape defect_shape_from_string(std::string_view name, const std::string& where) {
   if (name == "one_minus_cosine" || name == "1-cos") return DefectShape::kOneMinusCosine;
   if (name == "sine") return DefectShape::kSine;
-  throw std::invalid_argument(fmt::format(
-      "{}: unknown defect shape '{}' (allowed: one_minus_cosine, sine)", where, name));
+  throw std::invalid_argument(
+      fmt::format("{}: unknown defect shape '{}' (allowed: one_minus_cosine, sine)", where, name));
 }
 
 void IsolatedDefectSpec::validate(const std::string& where) const {

@@ -114,15 +114,15 @@ MeasuredIrregularity::MeasuredIrregularity(const std::string& path) : source_(pa
       const auto f = fields[i];
       const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), x);
       if (ec != std::errc() || ptr != f.data() + f.size() || !std::isfinite(x)) {
-        throw std::invalid_argument(fmt::format("{}:{}: field {} ('{}') is not a finite number",
-                                                path, line_no, i + 1, f));
+        throw std::invalid_argument(
+            fmt::format("{}:{}: field {} ('{}') is not a finite number", path, line_no, i + 1, f));
       }
       row[columns[i].role] = x * columns[i].to_si;
     }
     if (!s_.empty() && !(row[0] > s_.back())) {
-      throw std::invalid_argument(fmt::format(
-          "{}:{}: s = {} m does not increase (previous row: {} m)", path, line_no, row[0],
-          s_.back()));
+      throw std::invalid_argument(
+          fmt::format("{}:{}: s = {} m does not increase (previous row: {} m)", path, line_no,
+                      row[0], s_.back()));
     }
     s_.push_back(row[0]);
     for (int c = 0; c < 4; ++c) values_[c].push_back(row[c + 1]);
@@ -131,8 +131,8 @@ MeasuredIrregularity::MeasuredIrregularity(const std::string& path) : source_(pa
     throw std::invalid_argument(fmt::format("{}:{}: no header line found", path, line_no));
   }
   if (s_.size() < 2) {
-    throw std::invalid_argument(fmt::format(
-        "{}:{}: at least two data rows are needed (found {})", path, line_no, s_.size()));
+    throw std::invalid_argument(fmt::format("{}:{}: at least two data rows are needed (found {})",
+                                            path, line_no, s_.size()));
   }
   finish();
 }
@@ -159,9 +159,8 @@ void MeasuredIrregularity::finish() {
   }
   for (std::size_t i = 1; i < n; ++i) {
     if (!(s_[i] > s_[i - 1])) {
-      throw std::invalid_argument(
-          fmt::format("{}: s must increase strictly (sample {}: {} after {})", source_, i, s_[i],
-                      s_[i - 1]));
+      throw std::invalid_argument(fmt::format(
+          "{}: s must increase strictly (sample {}: {} after {})", source_, i, s_[i], s_[i - 1]));
     }
   }
   for (int c = 0; c < 4; ++c) {

@@ -41,11 +41,15 @@ double erri_psd(const ErriLevel& lvl, IrregularityChannel channel, double omega)
   const double base = wc2 / ((w2 + kErriOmegaR * kErriOmegaR) * (w2 + wc2));
   const double roll_off = w2 / (w2 + kErriOmegaS * kErriOmegaS);
   switch (channel) {
-    case IrregularityChannel::kLateral: return lvl.a_lateral * base;
-    case IrregularityChannel::kVertical: return lvl.a_vertical * base;
+    case IrregularityChannel::kLateral:
+      return lvl.a_lateral * base;
+    case IrregularityChannel::kVertical:
+      return lvl.a_vertical * base;
     // Angle spectrum (A_v / b^2) * base * roll_off, times (2b)^2 for the height difference.
-    case IrregularityChannel::kCrossLevel: return 4.0 * lvl.a_vertical * base * roll_off;
-    case IrregularityChannel::kGauge: return lvl.a_gauge * base * roll_off;
+    case IrregularityChannel::kCrossLevel:
+      return 4.0 * lvl.a_vertical * base * roll_off;
+    case IrregularityChannel::kGauge:
+      return lvl.a_gauge * base * roll_off;
   }
   return 0.0;
 }
@@ -76,21 +80,29 @@ TrackSpectrum track_spectrum_from_string(std::string_view name, const std::strin
       return static_cast<TrackSpectrum>(static_cast<int>(TrackSpectrum::kFraClass1) + c - 1);
     }
   }
-  throw std::invalid_argument(fmt::format(
-      "{}: unknown track spectrum '{}' (allowed: erri_low, erri_high, fra_1 ... fra_6)", where,
-      name));
+  throw std::invalid_argument(
+      fmt::format("{}: unknown track spectrum '{}' (allowed: erri_low, erri_high, fra_1 ... fra_6)",
+                  where, name));
 }
 
 std::string_view to_string(TrackSpectrum spectrum) {
   switch (spectrum) {
-    case TrackSpectrum::kErriLow: return "erri_low";
-    case TrackSpectrum::kErriHigh: return "erri_high";
-    case TrackSpectrum::kFraClass1: return "fra_1";
-    case TrackSpectrum::kFraClass2: return "fra_2";
-    case TrackSpectrum::kFraClass3: return "fra_3";
-    case TrackSpectrum::kFraClass4: return "fra_4";
-    case TrackSpectrum::kFraClass5: return "fra_5";
-    case TrackSpectrum::kFraClass6: return "fra_6";
+    case TrackSpectrum::kErriLow:
+      return "erri_low";
+    case TrackSpectrum::kErriHigh:
+      return "erri_high";
+    case TrackSpectrum::kFraClass1:
+      return "fra_1";
+    case TrackSpectrum::kFraClass2:
+      return "fra_2";
+    case TrackSpectrum::kFraClass3:
+      return "fra_3";
+    case TrackSpectrum::kFraClass4:
+      return "fra_4";
+    case TrackSpectrum::kFraClass5:
+      return "fra_5";
+    case TrackSpectrum::kFraClass6:
+      return "fra_6";
   }
   return "?";
 }
@@ -101,8 +113,10 @@ double one_sided_psd(TrackSpectrum spectrum, IrregularityChannel channel, double
         fmt::format("one_sided_psd: omega must be positive [rad/m] (got {})", omega));
   }
   switch (spectrum) {
-    case TrackSpectrum::kErriLow: return erri_psd(kErriLow, channel, omega);
-    case TrackSpectrum::kErriHigh: return erri_psd(kErriHigh, channel, omega);
+    case TrackSpectrum::kErriLow:
+      return erri_psd(kErriLow, channel, omega);
+    case TrackSpectrum::kErriHigh:
+      return erri_psd(kErriHigh, channel, omega);
     default: {
       const int cls = static_cast<int>(spectrum) - static_cast<int>(TrackSpectrum::kFraClass1);
       return fra_psd(kFraClasses.at(cls), channel, omega);

@@ -23,10 +23,12 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr std::array<IrregularityChannel, 4> kChannelOrder = {
-    IrregularityChannel::kLateral, IrregularityChannel::kVertical,
-    IrregularityChannel::kCrossLevel, IrregularityChannel::kGauge};
+    IrregularityChannel::kLateral, IrregularityChannel::kVertical, IrregularityChannel::kCrossLevel,
+    IrregularityChannel::kGauge};
 
-int channel_index(IrregularityChannel c) { return static_cast<int>(c); }
+int channel_index(IrregularityChannel c) {
+  return static_cast<int>(c);
+}
 
 // FFTW's planner is not thread-safe; execution is.
 std::mutex& fftw_planner_mutex() {
@@ -43,8 +45,8 @@ void StochasticIrregularitySpec::validate(const std::string& where) const {
   }
   if (!(std::isfinite(wavelength_max) && wavelength_max > wavelength_min)) {
     throw std::invalid_argument(
-        fmt::format("{}.wavelength_max: must be finite and > wavelength_min = {} m (got {})",
-                    where, wavelength_min, wavelength_max));
+        fmt::format("{}.wavelength_max: must be finite and > wavelength_min = {} m (got {})", where,
+                    wavelength_min, wavelength_max));
   }
   if (!std::isfinite(start_s)) {
     throw std::invalid_argument(
@@ -54,35 +56,34 @@ void StochasticIrregularitySpec::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.length: must be positive and finite [m] (got {})", where, length));
   }
-  if (!std::isnan(grid_spacing) &&
-      !(grid_spacing > 0.0 && grid_spacing <= 0.25 * wavelength_min)) {
-    throw std::invalid_argument(fmt::format(
-        "{}.grid_spacing: must be in (0, wavelength_min / 4 = {}] m, or unset (got {})", where,
-        0.25 * wavelength_min, grid_spacing));
+  if (!std::isnan(grid_spacing) && !(grid_spacing > 0.0 && grid_spacing <= 0.25 * wavelength_min)) {
+    throw std::invalid_argument(
+        fmt::format("{}.grid_spacing: must be in (0, wavelength_min / 4 = {}] m, or unset (got {})",
+                    where, 0.25 * wavelength_min, grid_spacing));
   }
   if (!(std::isfinite(amplitude_scale) && amplitude_scale >= 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "{}.amplitude_scale: must be finite and >= 0 (got {})", where, amplitude_scale));
+    throw std::invalid_argument(fmt::format("{}.amplitude_scale: must be finite and >= 0 (got {})",
+                                            where, amplitude_scale));
   }
   if (channels.empty()) {
-    throw std::invalid_argument(fmt::format(
-        "{}.channels: at least one of lateral, vertical, cross_level, gauge", where));
+    throw std::invalid_argument(
+        fmt::format("{}.channels: at least one of lateral, vertical, cross_level, gauge", where));
   }
 }
 
 StochasticIrregularity::StochasticIrregularity(const StochasticIrregularitySpec& spec)
     : spec_(spec) {
   spec_.validate();
-  const double wanted = std::isnan(spec_.grid_spacing) ? spec_.wavelength_min / 20.0
-                                                       : spec_.grid_spacing;
+  const double wanted =
+      std::isnan(spec_.grid_spacing) ? spec_.wavelength_min / 20.0 : spec_.grid_spacing;
   // Period covers the length and the longest wavelength; node count a power of two.
   const double min_period = std::max(spec_.length, spec_.wavelength_max);
   std::size_t n = 16;
   while (static_cast<double>(n) * wanted < min_period) n *= 2;
   if (n > (std::size_t{1} << 27)) {
-    throw std::invalid_argument(fmt::format(
-        "stochastic.length: {} m at a grid spacing of {} m needs more than 2^27 nodes", spec_.length,
-        wanted));
+    throw std::invalid_argument(
+        fmt::format("stochastic.length: {} m at a grid spacing of {} m needs more than 2^27 nodes",
+                    spec_.length, wanted));
   }
   spacing_ = wanted;
   period_ = static_cast<double>(n) * spacing_;
@@ -93,9 +94,9 @@ StochasticIrregularity::StochasticIrregularity(const StochasticIrregularitySpec&
   std::vector<std::size_t> ks;
   for (std::size_t k = std::max<std::size_t>(k_lo, 1); k <= k_hi && k < n / 2; ++k) ks.push_back(k);
   if (ks.empty()) {
-    throw std::invalid_argument(fmt::format(
-        "stochastic: no frequency of the {} m period falls in the band [{}, {}] m", period_,
-        spec_.wavelength_min, spec_.wavelength_max));
+    throw std::invalid_argument(
+        fmt::format("stochastic: no frequency of the {} m period falls in the band [{}, {}] m",
+                    period_, spec_.wavelength_min, spec_.wavelength_max));
   }
   omegas_.reserve(ks.size());
   for (const auto k : ks) omegas_.push_back(static_cast<double>(k) * d_omega);
@@ -105,7 +106,7 @@ StochasticIrregularity::StochasticIrregularity(const StochasticIrregularitySpec&
   std::array<bool, kChannels> on{};
   for (const auto c : spec_.channels) on[channel_index(c)] = true;
   for (const auto c : kChannelOrder) {
-    const int ci = channel_index(c);
+    const std::size_t ci = channel_index(c);
     std::vector<double> phase(ks.size());
     for (auto& p : phase) p = kTwoPi * static_cast<double>(rng() >> 11) * 0x1.0p-53;
     if (!on[ci]) continue;
@@ -125,14 +126,14 @@ StochasticIrregularity::StochasticIrregularity(const StochasticIrregularitySpec&
   fftw_plan plan = nullptr;
   {
     const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    plan = fftw_plan_dft_c2r_1d(static_cast<int>(n),
-                                reinterpret_cast<fftw_complex*>(spectrum.data()), signal.data(),
-                                FFTW_ESTIMATE);
+    plan =
+        fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex*>(spectrum.data()),
+                             signal.data(), FFTW_ESTIMATE);
   }
   for (const auto c : kChannelOrder) {
-    const int ci = channel_index(c);
+    const std::size_t ci = channel_index(c);
     if (amplitudes_[ci].empty()) continue;
-    for (int deriv = 0; deriv < 2; ++deriv) {
+    for (std::size_t deriv = 0; deriv < 2; ++deriv) {
       std::fill(spectrum.begin(), spectrum.end(), std::complex<double>(0.0, 0.0));
       for (std::size_t i = 0; i < ks.size(); ++i) {
         std::complex<double> x = std::polar(0.5 * amplitudes_[ci][i], phases_[ci][i]);
@@ -170,7 +171,7 @@ IrregularitySample StochasticIrregularity::at(double s) const {
   const double g00 = 6 * t2 - 6 * tau, g10 = 3 * t2 - 4 * tau + 1, g01 = -g00,
                g11 = 3 * t2 - 2 * tau;
   double v[kChannels], dv[kChannels];
-  for (int c = 0; c < kChannels; ++c) {
+  for (std::size_t c = 0; c < kChannels; ++c) {
     const double y0 = p0[c], y1 = p1[c], m0 = p0[c + kChannels], m1 = p1[c + kChannels];
     v[c] = h00 * y0 + h10 * spacing_ * m0 + h01 * y1 + h11 * spacing_ * m1;
     dv[c] = (g00 * y0 + g01 * y1) / spacing_ + g10 * m0 + g11 * m1;
@@ -191,7 +192,7 @@ IrregularitySample StochasticIrregularity::at_direct(double s) const {
   IrregularitySample out;
   const double x = s - spec_.start_s;
   for (const auto c : kChannelOrder) {
-    const int ci = channel_index(c);
+    const std::size_t ci = channel_index(c);
     if (amplitudes_[ci].empty()) continue;
     double v = 0.0, dv = 0.0;
     for (std::size_t i = 0; i < omegas_.size(); ++i) {

@@ -27,22 +27,22 @@ namespace ferro::track {
 /// Everything about the design track at one arc length. SI units; derivatives are with respect
 /// to the arc length s.
 struct TrackFrame {
-  double s = 0.0;                                        ///< arc length [m]
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();    ///< centreline, ground frame [m]
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();///< R_ground_track (columns: track axes)
-  double heading = 0.0;            ///< angle of the tangent from ground +x [rad]
-  double curvature = 0.0;          ///< d heading / ds [1/m], positive turning left
-  double d_curvature = 0.0;        ///< d curvature / ds [1/m^2]
-  double cant = 0.0;               ///< superelevation z_right - z_left [m]
-  double d_cant = 0.0;             ///< [m/m]
-  double dd_cant = 0.0;            ///< [1/m]
-  double cant_angle = 0.0;         ///< asin(cant / rail_spacing) [rad]
-  double d_cant_angle = 0.0;       ///< [rad/m]
-  double dd_cant_angle = 0.0;      ///< [rad/m^2]
-  double gauge = 0.0;              ///< nominal gauge + widening [m]
-  double d_gauge = 0.0;            ///< [m/m]
-  double rail_spacing = 0.0;       ///< distance between rail contact points (2e) [m]
-  int section = 0;                 ///< index of the section containing s
+  double s = 0.0;                                          ///< arc length [m]
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();      ///< centreline, ground frame [m]
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< R_ground_track (columns: track axes)
+  double heading = 0.0;        ///< angle of the tangent from ground +x [rad]
+  double curvature = 0.0;      ///< d heading / ds [1/m], positive turning left
+  double d_curvature = 0.0;    ///< d curvature / ds [1/m^2]
+  double cant = 0.0;           ///< superelevation z_right - z_left [m]
+  double d_cant = 0.0;         ///< [m/m]
+  double dd_cant = 0.0;        ///< [1/m]
+  double cant_angle = 0.0;     ///< asin(cant / rail_spacing) [rad]
+  double d_cant_angle = 0.0;   ///< [rad/m]
+  double dd_cant_angle = 0.0;  ///< [rad/m^2]
+  double gauge = 0.0;          ///< nominal gauge + widening [m]
+  double d_gauge = 0.0;        ///< [m/m]
+  double rail_spacing = 0.0;   ///< distance between rail contact points (2e) [m]
+  int section = 0;             ///< index of the section containing s
 
   /// Angular rate of the track frame per unit arc length, in track axes [rad/m]:
   /// (-d_cant_angle, -curvature sin(cant_angle), curvature cos(cant_angle)).

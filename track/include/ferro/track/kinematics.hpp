@@ -21,10 +21,10 @@ inline constexpr double kStandardGravity = 9.80665;  ///< [m/s^2]
 
 /// Motion of the track frame at one instant, everything in track axes unless said otherwise.
 struct FrameKinematics {
-  double speed = 0.0;                                         ///< V [m/s]
-  double acceleration = 0.0;                                  ///< dV/dt [m/s^2]
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero(); ///< [rad/s]
-  Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero(); ///< [rad/s^2]
+  double speed = 0.0;                                              ///< V [m/s]
+  double acceleration = 0.0;                                       ///< dV/dt [m/s^2]
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();      ///< [rad/s]
+  Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero();  ///< [rad/s^2]
   /// Acceleration of the frame origin (centreline point) [m/s^2].
   Eigen::Vector3d origin_acceleration = Eigen::Vector3d::Zero();
   /// Specific force = origin acceleration - gravity [m/s^2]; y is the uncompensated lateral

@@ -14,7 +14,8 @@
 //
 // Interpolation: piecewise cubic Hermite with slopes of the parabola through three
 // neighbouring points (centred inside, one-sided at the ends): value and slope continuous,
-// quadratics reproduced exactly. Outside [s_first, s_last] the first / last values hold, with zero slope.
+// quadratics reproduced exactly. Outside [s_first, s_last] the first / last values hold, with zero
+// slope.
 //
 // References: EN 13848-1:2019 (channel definitions; sign conventions as irregularity.hpp).
 // Known deviations: the data are taken as already filtered; no resampling or chord-transfer

@@ -12,11 +12,11 @@
 //   vertical  S = A_v Omega_c^2 / ((Omega^2 + Omega_r^2)(Omega^2 + Omega_c^2))
 //   cross-level angle  S = (A_v / b^2) Omega_c^2 Omega^2 /
 //                          ((Omega^2 + Omega_r^2)(Omega^2 + Omega_c^2)(Omega^2 + Omega_s^2))
-//   gauge     S = A_g Omega_c^2 Omega^2 / ((Omega^2 + Omega_r^2)(Omega^2 + Omega_c^2)(Omega^2 + Omega_s^2))
-//   low level:  A_a = 2.119e-7, A_v = 4.032e-7, A_g = 5.32e-8  [m rad]
-//   high level: A_a = 6.125e-7, A_v = 1.080e-6, A_g = 1.032e-7 [m rad]
-//   (cross-check: GENSYS' ORE B176 high-level lateral table gives 6.1608e-6 m^2/(1/m) at 0.1 1/m,
-//   i.e. 2 pi * S_a(0.628 rad/m) with A_a = 6.125e-7.)
+//   gauge     S = A_g Omega_c^2 Omega^2 / ((Omega^2 + Omega_r^2)(Omega^2 + Omega_c^2)(Omega^2 +
+//   Omega_s^2)) low level:  A_a = 2.119e-7, A_v = 4.032e-7, A_g = 5.32e-8  [m rad] high level: A_a
+//   = 6.125e-7, A_v = 1.080e-6, A_g = 1.032e-7 [m rad] (cross-check: GENSYS' ORE B176 high-level
+//   lateral table gives 6.1608e-6 m^2/(1/m) at 0.1 1/m, i.e. 2 pi * S_a(0.628 rad/m) with A_a
+//   = 6.125e-7.)
 // FRA classes 1-6 (Hamid & Yang, FRA report FRA/ORD-81/27, 1981; as tabulated by Garg &
 // Dukkipati, "Dynamics of Railway Vehicle Systems" (1984) ch. 10 and Zhai (2020)), k = 0.25,
 // Omega_c = 0.8245 rad/m, A in cm^2 rad/m:

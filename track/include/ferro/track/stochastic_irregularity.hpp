@@ -41,10 +41,10 @@ struct StochasticIrregularitySpec {
   double wavelength_max = 150.0;  ///< longest wavelength of the band [m] (EN 13848 D3: 150 m)
   double start_s = 0.0;           ///< arc length where the realisation starts [m]
   double length = std::numeric_limits<double>::quiet_NaN();  ///< non-repeating extent [m], > 0
-  std::uint64_t seed = 1;         ///< seed of std::mt19937_64 for the phases
+  std::uint64_t seed = 1;  ///< seed of std::mt19937_64 for the phases
   /// Grid spacing of the inverse FFT [m]; NaN = wavelength_min / 20. At most wavelength_min / 4.
   double grid_spacing = std::numeric_limits<double>::quiet_NaN();
-  double amplitude_scale = 1.0;   ///< multiplies every amplitude (1 = the spectrum as published)
+  double amplitude_scale = 1.0;  ///< multiplies every amplitude (1 = the spectrum as published)
 
   /// Throws std::invalid_argument naming `where` + field.
   void validate(const std::string& where = "stochastic") const;
@@ -71,7 +71,7 @@ class StochasticIrregularity final : public Irregularity {
   [[nodiscard]] const StochasticIrregularitySpec& spec() const { return spec_; }
 
  private:
-  static constexpr int kChannels = 4;
+  static constexpr std::size_t kChannels = 4;
   StochasticIrregularitySpec spec_;
   double period_ = 0.0, spacing_ = 0.0;
   std::vector<double> omegas_;
