@@ -244,6 +244,27 @@ TEST(StochasticIrregularity, seeded_and_channels_independent) {
   EXPECT_GE(a.period(), 3000.0);
 }
 
+TEST(StochasticIrregularity, fade_in) {
+  auto spec = small_spec();
+  const StochasticIrregularity plain(spec);
+  spec.fade_in_length = 50.0;
+  const StochasticIrregularity faded(spec);
+  EXPECT_EQ(faded.at(-200.5).lateral, 0.0);  // before start_s
+  EXPECT_EQ(faded.at(-200.0).d_lateral, 0.0);
+  for (const double x : {60.0, 500.0}) {  // past the fade: unchanged
+    EXPECT_EQ(faded.at(-200.0 + x).vertical, plain.at(-200.0 + x).vertical);
+  }
+  // Halfway the weight is 1/2.
+  EXPECT_NEAR(faded.at(-175.0).gauge, 0.5 * plain.at(-175.0).gauge, 1e-15);
+  EXPECT_NEAR(faded.at_direct(-175.0).gauge, 0.5 * plain.at_direct(-175.0).gauge, 1e-15);
+  // Slope of the faded signal against its central difference (Hermite interpolant is C1; the
+  // difference error is ~h^2 |r'''| / 6 < 1e-9 of the slope scale).
+  for (double s = -199.0; s < -150.0; s += 3.7) {
+    const double fd = (faded.at(s + 1e-5).cross_level - faded.at(s - 1e-5).cross_level) / 2e-5;
+    EXPECT_NEAR(faded.at(s).d_cross_level, fd, 1e-8) << s;
+  }
+}
+
 TEST(StochasticIrregularity, validate_names_the_field) {
   StochasticIrregularitySpec spec;  // length NaN
   try {

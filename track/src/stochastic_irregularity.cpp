@@ -61,6 +61,10 @@ void StochasticIrregularitySpec::validate(const std::string& where) const {
         fmt::format("{}.grid_spacing: must be in (0, wavelength_min / 4 = {}] m, or unset (got {})",
                     where, 0.25 * wavelength_min, grid_spacing));
   }
+  if (!(std::isfinite(fade_in_length) && fade_in_length >= 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "{}.fade_in_length: must be finite and >= 0 [m] (got {})", where, fade_in_length));
+  }
   if (!(std::isfinite(amplitude_scale) && amplitude_scale >= 0.0)) {
     throw std::invalid_argument(fmt::format("{}.amplitude_scale: must be finite and >= 0 (got {})",
                                             where, amplitude_scale));
@@ -185,7 +189,7 @@ IrregularitySample StochasticIrregularity::at(double s) const {
   out.d_vertical = dv[1];
   out.d_cross_level = dv[2];
   out.d_gauge = dv[3];
-  return out;
+  return faded(s, out);
 }
 
 IrregularitySample StochasticIrregularity::at_direct(double s) const {
@@ -201,6 +205,23 @@ IrregularitySample StochasticIrregularity::at_direct(double s) const {
       dv -= amplitudes_[ci][i] * omegas_[i] * std::sin(arg);
     }
     out.add(c, v, dv);
+  }
+  return faded(s, out);
+}
+
+IrregularitySample StochasticIrregularity::faded(double s, IrregularitySample raw) const {
+  const double fade = spec_.fade_in_length;
+  if (fade <= 0.0) return raw;
+  const double x = s - spec_.start_s;
+  if (x >= fade) return raw;
+  if (!(x > 0.0)) return {};
+  // w = (1 - cos(pi x / L)) / 2, w' = pi / (2 L) sin(pi x / L); (w r)' = w r' + w' r.
+  const double arg = std::numbers::pi * x / fade;
+  const double w = 0.5 * (1.0 - std::cos(arg));
+  const double dw = 0.5 * std::numbers::pi / fade * std::sin(arg);
+  IrregularitySample out;
+  for (const auto c : kChannelOrder) {
+    out.add(c, w * raw.value(c), w * raw.derivative(c) + dw * raw.value(c));
   }
   return out;
 }

@@ -45,6 +45,10 @@ struct StochasticIrregularitySpec {
   /// Grid spacing of the inverse FFT [m]; NaN = wavelength_min / 20. At most wavelength_min / 4.
   double grid_spacing = std::numeric_limits<double>::quiet_NaN();
   double amplitude_scale = 1.0;  ///< multiplies every amplitude (1 = the spectrum as published)
+  /// Length over which the irregularities fade in from zero after start_s [m], with the smooth
+  /// weight (1 - cos(pi x / fade_in_length)) / 2; 0 = no fade. With a fade, the irregularities
+  /// are zero before start_s (instead of periodic), so a vehicle can start on perfect track.
+  double fade_in_length = 0.0;
 
   /// Throws std::invalid_argument naming `where` + field.
   void validate(const std::string& where = "stochastic") const;
@@ -56,9 +60,10 @@ class StochasticIrregularity final : public Irregularity {
   explicit StochasticIrregularity(const StochasticIrregularitySpec& spec);
 
   [[nodiscard]] std::string name() const override;
-  /// Hermite interpolation of the FFT grid; periodic beyond [start_s, start_s + period).
+  /// Hermite interpolation of the FFT grid; periodic beyond [start_s, start_s + period)
+  /// (before start_s: zero if fade_in_length > 0).
   [[nodiscard]] IrregularitySample at(double s) const override;
-  /// Exact sum of the cosines (cost proportional to the number of components).
+  /// Exact sum of the cosines (cost proportional to the number of components), same fade-in.
   [[nodiscard]] IrregularitySample at_direct(double s) const;
 
   [[nodiscard]] double period() const { return period_; }
@@ -79,6 +84,9 @@ class StochasticIrregularity final : public Irregularity {
   std::array<std::vector<double>, kChannels> phases_;
   // Grid node n: values of the 4 channels, then their s-derivatives.
   std::vector<std::array<double, 2 * kChannels>> nodes_;
+
+  // Applies the fade-in weight at s to an unfaded sample.
+  [[nodiscard]] IrregularitySample faded(double s, IrregularitySample raw) const;
 };
 
 }  // namespace ferro::track
