@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace ferro::track {
 namespace {
@@ -39,6 +41,12 @@ TEST(FrameKinematics, balance_cant_eq_148) {
     // Rounding of a difference of two ~1 m/s^2 terms.
     constexpr double kRounding = 1e-14;
     EXPECT_NEAR(k.uncompensated_lateral_acceleration, residue, kRounding);
+    if (std::getenv("FERRO_TRACK_VERBOSE") != nullptr) {
+      std::printf("R = %g m, V = %g m/s: D(148) = %.6f m, phi = %.6f rad, a_y = %.6e m/s^2 "
+                  "(expected %.6e)\n",
+                  radius, speed, cant, f.cant_angle, k.uncompensated_lateral_acceleration,
+                  residue);
+    }
     // Eq. (148) balances to within the second-order residue, < 0.5 % of V^2/R for phi < 0.1 rad.
     EXPECT_LT(std::abs(k.uncompensated_lateral_acceleration), 0.005 * std::abs(centripetal));
     // The EN 13803 cant deficiency is zero by construction of (148).
