@@ -17,7 +17,8 @@
 //   = 6.125e-7, A_v = 1.080e-6, A_g = 1.032e-7 [m rad] (cross-check: GENSYS' ORE B176 high-level
 //   lateral table gives 6.1608e-6 m^2/(1/m) at 0.1 1/m, i.e. 2 pi * S_a(0.628 rad/m) with A_a
 //   = 6.125e-7.)
-// FRA classes 1-6 (Hamid & Yang, FRA report FRA/ORD-81/27, 1981; as tabulated by Garg &
+// FRA classes 1-6 (Hamid, Rasmussen, Baluja & Yang, "Analytical Descriptions of Track Geometry
+// Variations", US DOT / FRA final report, work 1976-1981; as tabulated by Garg &
 // Dukkipati, "Dynamics of Railway Vehicle Systems" (1984) ch. 10 and Zhai (2020)), k = 0.25,
 // Omega_c = 0.8245 rad/m, A in cm^2 rad/m:
 //   vertical  S = k A_v Omega_c^2 / (Omega^2 (Omega^2 + Omega_c^2))     [cm^2/(rad/m)]
@@ -33,7 +34,7 @@
 // Whether ORE B176 densities are one- or two-sided is read differently in the literature; they
 // are used here as one-sided (as GENSYS and most simulation papers do). The FRA gauge spectrum
 // uses the cross-level form with A_v, as in the secondary sources above; it has not been checked
-// against the 1981 FRA report. A_a and Omega_s of the FRA table were taken from the secondary
+// against the FRA report. A_a and Omega_s of the FRA table were taken from the secondary
 // sources and not re-derived.
 
 #include <string>
