@@ -241,6 +241,13 @@ TEST(TrackDesign, validate_names_the_field) {
   d.gauge = 1.435;
   d.sections.clear();
   EXPECT_EQ(validation_message(d).rfind("sections: at least one", 0), 0u);
+  d.sections = {straight(5.0), curve(10.0, 0.0)};
+  try {
+    d.validate("scene.track");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("scene.track.sections[1].radius:", 0), 0u) << e.what();
+  }
   EXPECT_THROW((void)section_kind_from_string("spiral", "sections[3].kind"), std::invalid_argument);
   EXPECT_EQ(section_kind_from_string("clothoid"), SectionKind::kTransition);
 }

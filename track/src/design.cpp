@@ -74,13 +74,15 @@ void SectionSpec::validate(const std::string& where) const {
   }
 }
 
-void TrackDesign::validate() const {
+void TrackDesign::validate(const std::string& where) const {
+  // Field names are prefixed with `where.` when a prefix is given.
+  const std::string pre = where.empty() ? std::string() : where + ".";
   if (sections.empty()) {
-    throw std::invalid_argument("sections: at least one section is required");
+    throw std::invalid_argument(fmt::format("{}sections: at least one section is required", pre));
   }
-  auto check_finite = [](double v, const char* name) {
+  auto check_finite = [&pre](double v, const char* name) {
     if (!std::isfinite(v)) {
-      throw std::invalid_argument(fmt::format("{}: must be finite (got {})", name, v));
+      throw std::invalid_argument(fmt::format("{}{}: must be finite (got {})", pre, name, v));
     }
   };
   check_finite(start_s, "start_s");
@@ -88,18 +90,18 @@ void TrackDesign::validate() const {
   check_finite(start_y, "start_y");
   check_finite(start_heading, "start_heading");
   if (!(std::isfinite(gauge) && gauge > 0.0)) {
-    throw std::invalid_argument(fmt::format("gauge: must be positive [m] (got {})", gauge));
+    throw std::invalid_argument(fmt::format("{}gauge: must be positive [m] (got {})", pre, gauge));
   }
   if (!(std::isfinite(rail_spacing) && rail_spacing > 0.0)) {
     throw std::invalid_argument(
-        fmt::format("rail_spacing: must be positive [m] (got {})", rail_spacing));
+        fmt::format("{}rail_spacing: must be positive [m] (got {})", pre, rail_spacing));
   }
   for (std::size_t i = 0; i < sections.size(); ++i) {
-    const auto where = fmt::format("sections[{}]", i);
-    sections[i].validate(where);
+    const auto name = fmt::format("{}sections[{}]", pre, i);
+    sections[i].validate(name);
     if (std::abs(sections[i].cant) >= rail_spacing) {
       throw std::invalid_argument(
-          fmt::format("{}.cant: |cant| must be smaller than rail_spacing = {} m (got {})", where,
+          fmt::format("{}.cant: |cant| must be smaller than rail_spacing = {} m (got {})", name,
                       rail_spacing, sections[i].cant));
     }
     if (i > 0 && sections[i].kind == SectionKind::kTransition &&
@@ -107,7 +109,7 @@ void TrackDesign::validate() const {
       throw std::invalid_argument(fmt::format(
           "{}.kind: a transition cannot follow a transition (sections[{}]); put a curve or "
           "straight between them",
-          where, i - 1));
+          name, i - 1));
     }
   }
 }

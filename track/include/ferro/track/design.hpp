@@ -70,8 +70,9 @@ struct TrackDesign {
 
   /// Checks every field and the section sequence (a transition may not follow a transition;
   /// cant must be smaller than rail_spacing); throws std::invalid_argument naming the field,
-  /// e.g. "sections[2].radius: must be non-zero and finite for a curve (got 0)".
-  void validate() const;
+  /// e.g. "sections[2].radius: must be non-zero and finite for a curve (got 0)"; with a
+  /// non-empty `where` every field is prefixed, e.g. "track.sections[2].radius: ...".
+  void validate(const std::string& where = "") const;
   /// Sum of section lengths [m].
   [[nodiscard]] double total_length() const;
 };
