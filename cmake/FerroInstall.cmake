@@ -6,7 +6,10 @@ install(TARGETS ${_libs} ferro_options EXPORT ferrodynTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ferro_hdf5 EXPORT ferrodynTargets)
 foreach(_folder contact track vehicle fe_contact scenarios)
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_folder}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  # A folder with no public headers yet has no include/ in a clean clone (git keeps no empty dirs).
+  if(EXISTS ${PROJECT_SOURCE_DIR}/${_folder}/include)
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_folder}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  endif()
 endforeach()
 install(EXPORT ferrodynTargets NAMESPACE ferro:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/ferrodyn)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ferrodynConfig.cmake.in
