@@ -16,6 +16,15 @@ void PolachOptions::validate() const {
   if (!(k_s > 0.0 && k_s <= 1.0)) {
     throw std::invalid_argument(fmt::format("polach.k_s: must lie in (0, 1], got {}", k_s));
   }
+
+  if (!(friction_ratio > 0.0 && friction_ratio <= 1.0)) {
+    throw std::invalid_argument(
+        fmt::format("polach.friction_ratio: must lie in (0, 1], got {}", friction_ratio));
+  }
+  if (!(friction_decay >= 0.0) || !std::isfinite(friction_decay)) {
+    throw std::invalid_argument(
+        fmt::format("polach.friction_decay: must be finite and >= 0 [s/m], got {}", friction_decay));
+  }
 }
 
 PolachModel::PolachModel(PolachOptions options) : options_(options) { options_.validate(); }
@@ -24,9 +33,7 @@ TangentialSolution PolachModel::solve(const TangentialProblem& problem) const {
   problem.validate();
   constexpr double kPi = std::numbers::pi;
   const LinearCreepStiffness k = linear_creep_stiffness(problem, options_.source);
-  const double q_mu = problem.friction * problem.patch->normal_force;
   TangentialSolution out;
-  if (!(q_mu > 0.0)) return out;
   const double a = k.a, b = k.b, g = k.shear_modulus;
   const double sx = problem.creepage.longitudinal;
   const double sy = problem.creepage.lateral;
@@ -35,6 +42,19 @@ TangentialSolution PolachModel::solve(const TangentialProblem& problem) const {
   const double syc = std::abs(sy + phi * a) > std::abs(sy) ? sy + phi * a : sy;
   const double sc = std::hypot(sx, syc);
   if (sc == 0.0) return out;
+  double mu = problem.friction;
+  if (options_.friction_decay > 0.0) {
+    const double v = problem.rolling_speed;
+    if (!(v > 0.0) || !std::isfinite(v)) {
+      throw std::invalid_argument(fmt::format(
+          "polach: friction_decay > 0 needs tangential problem.rolling_speed > 0 [m/s], got {}", v));
+    }
+    const double w = v * sc;  // slip speed
+    mu *= (1.0 - options_.friction_ratio) * std::exp(-options_.friction_decay * w) +
+          options_.friction_ratio;
+  }
+  const double q_mu = mu * problem.patch->normal_force;
+  if (!(q_mu > 0.0)) return out;
   // Longitudinal/lateral force from creepage.
   const double cjj = std::hypot(k.c.c11 * sx / sc, k.c.c22 * syc / sc);
   const double eps = g * kPi * a * b * cjj * sc / (4.0 * q_mu);

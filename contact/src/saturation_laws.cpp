@@ -15,8 +15,8 @@ double saturation_ratio(SaturationLaw law, double t) {
     case SaturationLaw::kVermeulenJohnson:
     case SaturationLaw::kShenHedrickElkins: {
       if (t >= 3.0) return 1.0;
-      const double u = 1.0 - t / 3.0;
-      return 1.0 - u * u * u;
+      // 1 - (1 - t/3)^3 expanded, free of cancellation at small t.
+      return t * (1.0 - t / 3.0 + t * t / 27.0);
     }
     case SaturationLaw::kChopaya:
       return -std::expm1(-t);

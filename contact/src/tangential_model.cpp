@@ -120,11 +120,14 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
     }
   }
   if (name == "polach") {
-    check_option_keys(name, options, {"coefficients", "k_a", "k_s"});
+    check_option_keys(name, options,
+                      {"coefficients", "k_a", "k_s", "friction_ratio", "friction_decay"});
     PolachOptions o;
     o.source = source;
     o.k_a = option_double(options, "k_a", o.k_a);
     o.k_s = option_double(options, "k_s", o.k_s);
+    o.friction_ratio = option_double(options, "friction_ratio", o.friction_ratio);
+    o.friction_decay = option_double(options, "friction_decay", o.friction_decay);
     return std::make_unique<PolachModel>(o);
   }
   if (name == "fastsim") {

@@ -48,6 +48,7 @@ struct TangentialProblem {
   Material body1;                        ///< wheel
   Material body2;                        ///< rail
   ReductionFactors reduction;            ///< K_ij (all 1 = Kalker)
+  double rolling_speed = ContactPatch::kNaN;  ///< V [m/s], for slip-speed-dependent friction
   /// Full undeformed gap, for models that solve the contact numerically (MIM); may be null.
   const NormalProblem* gap = nullptr;
   /// Optional output: the traction picture (models that have none leave it empty).
@@ -75,7 +76,8 @@ class TangentialModel {
 [[nodiscard]] std::vector<std::string> tangential_model_names();
 
 /// Creates a model. Common option: "coefficients" = kalker_table (default) | voco_fit.
-/// polach: "k_a" (default 1), "k_s" (default 1). fastsim: "mx", "my" (default 20, 20),
+/// polach: "k_a", "k_s" (default 1), "friction_ratio" (A, default 1), "friction_decay" (B [s/m],
+/// default 0). fastsim: "mx", "my" (default 20, 20),
 /// "flexibility" = three (default) | weighted. Unknown names/options throw
 /// std::invalid_argument listing the allowed values.
 [[nodiscard]] std::unique_ptr<TangentialModel> make_tangential_model(
