@@ -48,7 +48,7 @@ TEST(kij_table, hdf5_round_trip_and_interpolation) {
     }
   }
   EXPECT_EQ(t.clamped_queries(), 0);
-  const fc::ReductionFactors c = t.at({200e3, 0.0});  // clamped to the 150 kN end
+  const fc::ReductionFactors c = t.at(std::vector<double>{200e3, 0.0});  // clamped to the 150 kN end
   EXPECT_NEAR(c.k11, k11_of(150e3, 0.0), kExact);
   EXPECT_EQ(t.clamped_queries(), 1);
   EXPECT_THROW((void)t.at({{"normal_force", 1.0}}), std::invalid_argument);
