@@ -40,8 +40,13 @@ void TangentialProblem::validate() const {
         "tangential problem.creepage: must be finite, got ({}, {}, {})", creepage.longitudinal,
         creepage.lateral, creepage.spin));
   }
-  body1.validate("tangential problem.body1");
-  body2.validate("tangential problem.body2");
+  // Material::validate builds a std::string: call it only when the quick check fails.
+  const auto plausible = [](const Material& m) {
+    return m.shear_modulus > 0.0 && std::isfinite(m.shear_modulus) && m.poisson >= 0.0 &&
+           m.poisson < 0.5;
+  };
+  if (!plausible(body1)) body1.validate("tangential problem.body1");
+  if (!plausible(body2)) body2.validate("tangential problem.body2");
   reduction.validate("tangential problem.reduction");
 }
 
