@@ -41,12 +41,10 @@ TangentialSolution SaturatedCreepModel::solve(const TangentialProblem& problem) 
   Creepage cr = problem.creepage;
   TangentialSolution lin = k.forces(cr);
   if (law_ == SaturationLaw::kVermeulenJohnson) {
-    // Spin ignored in the forces (eq. 51).
+    // Spin ignored (eq. 51): forces and moment from xi_x, xi_y only.
     Creepage no_spin = cr;
     no_spin.spin = 0.0;
-    const TangentialSolution f = k.forces(no_spin);
-    lin.force_x = f.force_x;
-    lin.force_y = f.force_y;
+    lin = k.forces(no_spin);
   }
   const double limit = problem.friction * problem.patch->normal_force;
   const double ft = std::hypot(lin.force_x, lin.force_y);
