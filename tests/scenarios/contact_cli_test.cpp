@@ -13,6 +13,7 @@
 
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/material.hpp"
+#include "ferro/contact/reduction_factors.hpp"
 
 namespace fs = std::filesystem;
 
@@ -132,4 +133,20 @@ TEST(contact_cli_patch, spheres_and_two_lobes) {
     const bool two = std::string(name) == "semi_hertz_two_lobes";
     EXPECT_EQ(out.out.find("\"patch\": 1") != std::string::npos, two) << out.out;
   }
+}
+
+// --kij-table: a K_ij table interpolated at the given point scales the linear force exactly.
+TEST(contact_cli_eval, kij_table_scales_linear_force) {
+  const fs::path dir = scratch("contact_cli_kij");
+  const std::string table = (dir / "kij.h5").string();
+  ferro::contact::KijTable({"normal_force"}, {{5e4, 1e5}}, {0.8, 0.6}, {0.7, 0.5}, {0.7, 0.5})
+      .write_hdf5(table);
+  const std::string common =
+      "contact eval --model kalker_linear --a 0.0065 --b 0.0049 --fn 73575 --mu 0.3 --xi-x 1e-3 ";
+  const CliRun plain = run(common);
+  const CliRun reduced = run(common + "--kij-table '" + table + "' --kij-at normal_force=75000");
+  ASSERT_EQ(plain.code, 0) << plain.out;
+  ASSERT_EQ(reduced.code, 0) << reduced.out;
+  EXPECT_NEAR(json_field(reduced.out, "force_x") / json_field(plain.out, "force_x"), 0.7, 1e-9);
+  EXPECT_EQ(run(common + "--kij-table '" + table + "' --kij-at load=1").code, 2);
 }
