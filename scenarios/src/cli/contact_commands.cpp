@@ -45,6 +45,7 @@ struct EvalInput {
 
 struct EvalOutput {
   fc::ContactPatch patch;
+  fc::NormalProblem gap;  // the quadratic gap A x^2 + B y^2, for models that need it (MIM)
   fc::TangentialSolution forces;
 };
 
@@ -92,7 +93,13 @@ EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model) {
   body2.validate("--g2/--nu2");
   EvalOutput out;
   out.patch = make_patch(in, fc::combine(body1, body2));
+  out.gap.curvature_x = out.patch.curvature_x;
+  out.gap.curvature_y = out.patch.curvature_y;
+  out.gap.normal_force = out.patch.normal_force;
+  out.gap.body1 = body1;
+  out.gap.body2 = body2;
   fc::TangentialProblem p;
+  p.gap = &out.gap;
   p.patch = &out.patch;
   p.creepage = {in.xi_x, in.xi_y, in.phi};
   p.friction = in.mu;
