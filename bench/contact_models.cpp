@@ -81,15 +81,27 @@ void run_tangential(benchmark::State& state, const char* name, const fc::ModelOp
   }
 }
 
-void BM_kalker_linear(benchmark::State& s) { run_tangential(s, "kalker_linear", {}); }
-void BM_linear_saturated(benchmark::State& s) { run_tangential(s, "linear_saturated", {}); }
-void BM_vermeulen_johnson(benchmark::State& s) { run_tangential(s, "vermeulen_johnson", {}); }
-void BM_shen_hedrick_elkins(benchmark::State& s) { run_tangential(s, "shen_hedrick_elkins", {}); }
-void BM_chopaya(benchmark::State& s) { run_tangential(s, "chopaya", {}); }
+void BM_kalker_linear(benchmark::State& s) {
+  run_tangential(s, "kalker_linear", {});
+}
+void BM_linear_saturated(benchmark::State& s) {
+  run_tangential(s, "linear_saturated", {});
+}
+void BM_vermeulen_johnson(benchmark::State& s) {
+  run_tangential(s, "vermeulen_johnson", {});
+}
+void BM_shen_hedrick_elkins(benchmark::State& s) {
+  run_tangential(s, "shen_hedrick_elkins", {});
+}
+void BM_chopaya(benchmark::State& s) {
+  run_tangential(s, "chopaya", {});
+}
 void BM_chopaya_voco_fit(benchmark::State& s) {
   run_tangential(s, "chopaya", {{"coefficients", "voco_fit"}});
 }
-void BM_polach(benchmark::State& s) { run_tangential(s, "polach", {}); }
+void BM_polach(benchmark::State& s) {
+  run_tangential(s, "polach", {});
+}
 void BM_fastsim(benchmark::State& s) {
   const std::string n = std::to_string(s.range(0));
   run_tangential(s, "fastsim", {{"mx", n}, {"my", n}});

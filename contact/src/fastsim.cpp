@@ -82,7 +82,9 @@ void FastsimOptions::validate() const {
   }
 }
 
-FastsimModel::FastsimModel(FastsimOptions options) : options_(options) { options_.validate(); }
+FastsimModel::FastsimModel(FastsimOptions options) : options_(options) {
+  options_.validate();
+}
 
 TangentialSolution FastsimModel::solve(const TangentialProblem& problem) const {
   problem.validate();
@@ -101,7 +103,8 @@ TangentialSolution FastsimModel::solve(const TangentialProblem& problem) const {
     const double norm = std::sqrt(cr.longitudinal * cr.longitudinal + cr.lateral * cr.lateral +
                                   c * c * cr.spin * cr.spin);
     const double l = norm > 0.0 ? (std::abs(cr.longitudinal) * l1 + std::abs(cr.lateral) * l2 +
-                                   c * std::abs(cr.spin) * l3) / norm
+                                   c * std::abs(cr.spin) * l3) /
+                                      norm
                                 : l1;
     inv = Inverse{1.0 / l, 1.0 / l, 1.0 / l};
   }

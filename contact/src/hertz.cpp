@@ -83,11 +83,17 @@ double hertz_axis_ratio(double curvature_ratio) {
     const RatioAndSlope rs = ratio_of_axis(k);
     const double f = std::log(rs.rho) - target;  // decreasing in k
     if (std::abs(f) < 1e-15) break;
-    if (f > 0.0) lo = k; else hi = k;
+    if (f > 0.0)
+      lo = k;
+    else
+      hi = k;
     const double fp = rs.slope / rs.rho;
     double next = k - f / fp;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - k) <= 1e-15 * k) { k = next; break; }
+    if (std::abs(next - k) <= 1e-15 * k) {
+      k = next;
+      break;
+    }
     k = next;
     if (hi - lo < 1e-16) break;
   }
@@ -99,7 +105,7 @@ HertzCoefficients hertz_coefficients(double theta) {
     throw std::invalid_argument(
         fmt::format("hertz_coefficients: theta must lie in (0, pi/2] rad, got {}", theta));
   }
-  const double c = std::cos(theta);                 // (rho - 1)/(rho + 1)
+  const double c = std::cos(theta);  // (rho - 1)/(rho + 1)
   const double rho = c >= 1.0 ? INFINITY : (1.0 + c) / (1.0 - c);
   const double k = hertz_axis_ratio(std::max(rho, 1.0));
   double kfirst = 0.5 * kPi, ksecond = 0.5 * kPi;
@@ -162,7 +168,8 @@ HertzSolution hertz_solve(double curvature_x, double curvature_y, double normal_
 }
 
 double HertzSolution::pressure(double x, double y) const {
-  const double u = 1.0 - (x / semi_axis_x) * (x / semi_axis_x) - (y / semi_axis_y) * (y / semi_axis_y);
+  const double u =
+      1.0 - (x / semi_axis_x) * (x / semi_axis_x) - (y / semi_axis_y) * (y / semi_axis_y);
   return u > 0.0 ? peak_pressure * std::sqrt(u) : 0.0;
 }
 

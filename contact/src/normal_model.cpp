@@ -64,7 +64,9 @@ class SemiHertzModel final : public NormalContactModel {
 
 }  // namespace
 
-std::vector<std::string> normal_model_names() { return {"hertz", "semi_hertz"}; }
+std::vector<std::string> normal_model_names() {
+  return {"hertz", "semi_hertz"};
+}
 
 std::unique_ptr<NormalContactModel> make_normal_model(std::string_view name,
                                                       const ModelOptions& options) {
@@ -120,9 +122,9 @@ void check_option_keys(std::string_view model, const ModelOptions& options,
                        const std::vector<std::string>& allowed) {
   for (const auto& [key, value] : options) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      throw std::invalid_argument(fmt::format("model '{}': unknown option '{}'; allowed: {}", model,
-                                              key, allowed.empty() ? std::string("(none)")
-                                                                   : fmt::format("{}", fmt::join(allowed, ", "))));
+      throw std::invalid_argument(fmt::format(
+          "model '{}': unknown option '{}'; allowed: {}", model, key,
+          allowed.empty() ? std::string("(none)") : fmt::format("{}", fmt::join(allowed, ", "))));
     }
   }
 }

@@ -22,12 +22,14 @@ void PolachOptions::validate() const {
         fmt::format("polach.friction_ratio: must lie in (0, 1], got {}", friction_ratio));
   }
   if (!(friction_decay >= 0.0) || !std::isfinite(friction_decay)) {
-    throw std::invalid_argument(
-        fmt::format("polach.friction_decay: must be finite and >= 0 [s/m], got {}", friction_decay));
+    throw std::invalid_argument(fmt::format(
+        "polach.friction_decay: must be finite and >= 0 [s/m], got {}", friction_decay));
   }
 }
 
-PolachModel::PolachModel(PolachOptions options) : options_(options) { options_.validate(); }
+PolachModel::PolachModel(PolachOptions options) : options_(options) {
+  options_.validate();
+}
 
 TangentialSolution PolachModel::solve(const TangentialProblem& problem) const {
   problem.validate();
@@ -47,7 +49,8 @@ TangentialSolution PolachModel::solve(const TangentialProblem& problem) const {
     const double v = problem.rolling_speed;
     if (!(v > 0.0) || !std::isfinite(v)) {
       throw std::invalid_argument(fmt::format(
-          "polach: friction_decay > 0 needs tangential problem.rolling_speed > 0 [m/s], got {}", v));
+          "polach: friction_decay > 0 needs tangential problem.rolling_speed > 0 [m/s], got {}",
+          v));
     }
     const double w = v * sc;  // slip speed
     mu *= (1.0 - options_.friction_ratio) * std::exp(-options_.friction_decay * w) +
@@ -59,7 +62,8 @@ TangentialSolution PolachModel::solve(const TangentialProblem& problem) const {
   const double cjj = std::hypot(k.c.c11 * sx / sc, k.c.c22 * syc / sc);
   const double eps = g * kPi * a * b * cjj * sc / (4.0 * q_mu);
   const double ka_eps = options_.k_a * eps;
-  const double f = 2.0 * q_mu / kPi * (ka_eps / (1.0 + ka_eps * ka_eps) + std::atan(options_.k_s * eps));
+  const double f =
+      2.0 * q_mu / kPi * (ka_eps / (1.0 + ka_eps * ka_eps) + std::atan(options_.k_s * eps));
   out.force_x = -f * sx / sc;
   out.force_y = -f * sy / sc;
   // Lateral force from spin.
@@ -69,8 +73,9 @@ TangentialSolution PolachModel::solve(const TangentialProblem& problem) const {
     const double e2 = eps_psi * eps_psi;
     const double delta = (e2 - 1.0) / (e2 + 1.0);
     const double one_m_d2 = 1.0 - delta * delta;
-    const double km = std::abs(eps_psi) * (delta * delta * delta / 3.0 - delta * delta / 2.0 + 1.0 / 6.0) -
-                      std::sqrt(one_m_d2 * one_m_d2 * one_m_d2) / 3.0;
+    const double km =
+        std::abs(eps_psi) * (delta * delta * delta / 3.0 - delta * delta / 2.0 + 1.0 / 6.0) -
+        std::sqrt(one_m_d2 * one_m_d2 * one_m_d2) / 3.0;
     out.force_y += 9.0 / 16.0 * a * q_mu * km * shape * phi / sc;
   }
   // Moment: linear moment scaled like the creep force.

@@ -15,7 +15,8 @@
 namespace ferro::contact {
 
 void ReductionFactors::validate(const char* where) const {
-  const std::pair<double, const char*> f[] = {{k11, "k11"}, {k22, "k22"}, {k23, "k23"}, {k33, "k33"}};
+  const std::pair<double, const char*> f[] = {
+      {k11, "k11"}, {k22, "k22"}, {k23, "k23"}, {k33, "k33"}};
   for (const auto& [v, field] : f) {
     if (!(v > 0.0) || !std::isfinite(v)) {
       throw std::invalid_argument(
@@ -27,21 +28,27 @@ void ReductionFactors::validate(const char* where) const {
 KijTable::KijTable(std::vector<std::string> axis_names, std::vector<std::vector<double>> axes,
                    std::vector<double> k11, std::vector<double> k22, std::vector<double> k23,
                    std::vector<double> k33)
-    : names_(std::move(axis_names)), axes_(std::move(axes)), k11_(std::move(k11)),
-      k22_(std::move(k22)), k23_(std::move(k23)), k33_(std::move(k33)) {
+    : names_(std::move(axis_names)),
+      axes_(std::move(axes)),
+      k11_(std::move(k11)),
+      k22_(std::move(k22)),
+      k23_(std::move(k23)),
+      k33_(std::move(k33)) {
   if (names_.empty() || names_.size() != axes_.size()) {
-    throw std::invalid_argument(fmt::format(
-        "K_ij table: need >= 1 axis and one name per axis, got {} names for {} axes", names_.size(),
-        axes_.size()));
+    throw std::invalid_argument(
+        fmt::format("K_ij table: need >= 1 axis and one name per axis, got {} names for {} axes",
+                    names_.size(), axes_.size()));
   }
   std::size_t nodes = 1;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     const auto& ax = axes_[i];
-    if (ax.empty()) throw std::invalid_argument(fmt::format("K_ij table axis '{}': empty", names_[i]));
+    if (ax.empty())
+      throw std::invalid_argument(fmt::format("K_ij table axis '{}': empty", names_[i]));
     for (std::size_t j = 0; j + 1 < ax.size(); ++j) {
       if (!(ax[j + 1] > ax[j])) {
-        throw std::invalid_argument(fmt::format(
-            "K_ij table axis '{}': values must be strictly increasing (index {})", names_[i], j + 1));
+        throw std::invalid_argument(
+            fmt::format("K_ij table axis '{}': values must be strictly increasing (index {})",
+                        names_[i], j + 1));
       }
     }
     nodes *= ax.size();
@@ -49,13 +56,14 @@ KijTable::KijTable(std::vector<std::string> axis_names, std::vector<std::vector<
   auto check = [&](const std::vector<double>& v, const char* field, bool optional) {
     if (optional && v.empty()) return;
     if (v.size() != nodes) {
-      throw std::invalid_argument(fmt::format(
-          "K_ij table {}: expected {} values (product of the axis lengths), got {}", field, nodes,
-          v.size()));
+      throw std::invalid_argument(
+          fmt::format("K_ij table {}: expected {} values (product of the axis lengths), got {}",
+                      field, nodes, v.size()));
     }
     for (double x : v) {
       if (!(x > 0.0) || !std::isfinite(x)) {
-        throw std::invalid_argument(fmt::format("K_ij table {}: values must be finite and > 0", field));
+        throw std::invalid_argument(
+            fmt::format("K_ij table {}: values must be finite and > 0", field));
       }
     }
   };
@@ -70,7 +78,8 @@ ReductionFactors KijTable::at(const std::map<std::string, double>& point) const 
   for (std::size_t i = 0; i < names_.size(); ++i) {
     const auto it = point.find(names_[i]);
     if (it == point.end()) {
-      throw std::invalid_argument(fmt::format("K_ij table: no value given for axis '{}'", names_[i]));
+      throw std::invalid_argument(
+          fmt::format("K_ij table: no value given for axis '{}'", names_[i]));
     }
     values[i] = it->second;
   }
@@ -97,7 +106,8 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
     const auto& ax = axes_[i];
     double v = point[i];
     if (!std::isfinite(v)) {
-      throw std::invalid_argument(fmt::format("K_ij table: axis '{}' value is not finite", names_[i]));
+      throw std::invalid_argument(
+          fmt::format("K_ij table: axis '{}' value is not finite", names_[i]));
     }
     if (v < ax.front() || v > ax.back()) clamped = true;
     v = std::clamp(v, ax.front(), ax.back());
@@ -106,7 +116,8 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
       weight[i] = 0.0;
       continue;
     }
-    std::size_t j = static_cast<std::size_t>(std::upper_bound(ax.begin(), ax.end(), v) - ax.begin());
+    std::size_t j =
+        static_cast<std::size_t>(std::upper_bound(ax.begin(), ax.end(), v) - ax.begin());
     j = std::clamp<std::size_t>(j, 1, ax.size() - 1);
     lower[i] = j - 1;
     weight[i] = (v - ax[j - 1]) / (ax[j] - ax[j - 1]);
@@ -118,7 +129,10 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
     std::size_t index = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const bool upper = (corner >> i) & 1U;
-      if (upper && axes_[i].size() == 1) { w = 0.0; break; }
+      if (upper && axes_[i].size() == 1) {
+        w = 0.0;
+        break;
+      }
       w *= upper ? weight[i] : 1.0 - weight[i];
       index += (lower[i] + (upper ? 1 : 0)) * stride[i];
     }
@@ -154,7 +168,9 @@ struct Handle {
   hid_t id = -1;
   herr_t (*close)(hid_t) = nullptr;
   Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
-  ~Handle() { if (id >= 0 && close) close(id); }
+  ~Handle() {
+    if (id >= 0 && close) close(id);
+  }
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
 };
@@ -182,7 +198,8 @@ std::vector<double> read_dataset(hid_t file, const std::string& path, const std:
 KijTable KijTable::read_hdf5(const std::string& path) {
   QuietHdf5 quiet;
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (file.id < 0) throw std::invalid_argument(fmt::format("{}: cannot open as an HDF5 file", path));
+  if (file.id < 0)
+    throw std::invalid_argument(fmt::format("{}: cannot open as an HDF5 file", path));
   // Schema version.
   {
     Handle attr(H5Aopen(file.id, "schema_version", H5P_DEFAULT), H5Aclose);
@@ -220,7 +237,8 @@ KijTable KijTable::read_hdf5(const std::string& path) {
       throw std::invalid_argument(
           fmt::format("{}: dataset '/{}' has no integer attribute 'index'", path, dpath));
     }
-    if (index < 0 || static_cast<std::size_t>(index) >= n || seen[static_cast<std::size_t>(index)]) {
+    if (index < 0 || static_cast<std::size_t>(index) >= n ||
+        seen[static_cast<std::size_t>(index)]) {
       throw std::invalid_argument(fmt::format(
           "{}: dataset '/{}' attribute 'index' = {} is out of range or repeated (0..{})", path,
           dpath, index, n - 1));
@@ -238,7 +256,8 @@ KijTable KijTable::read_hdf5(const std::string& path) {
     if (!ok) {
       throw std::invalid_argument(fmt::format(
           "{}: dataset '/{}' must have one dimension per axis, in axis index order, with the "
-          "axis lengths", path, name));
+          "axis lengths",
+          path, name));
     }
     return v;
   };
@@ -252,8 +271,9 @@ void KijTable::write_hdf5(const std::string& path) const {
   if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
   {
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Handle attr(H5Acreate2(file.id, "schema_version", H5T_NATIVE_INT, space.id, H5P_DEFAULT,
-                           H5P_DEFAULT), H5Aclose);
+    Handle attr(
+        H5Acreate2(file.id, "schema_version", H5T_NATIVE_INT, space.id, H5P_DEFAULT, H5P_DEFAULT),
+        H5Aclose);
     const int version = 1;
     H5Awrite(attr.id, H5T_NATIVE_INT, &version);
   }

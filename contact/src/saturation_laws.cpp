@@ -26,11 +26,16 @@ double saturation_ratio(SaturationLaw law, double t) {
 
 std::string_view SaturatedCreepModel::name() const {
   switch (law_) {
-    case SaturationLaw::kNone: return "kalker_linear";
-    case SaturationLaw::kLinear: return "linear_saturated";
-    case SaturationLaw::kVermeulenJohnson: return "vermeulen_johnson";
-    case SaturationLaw::kShenHedrickElkins: return "shen_hedrick_elkins";
-    case SaturationLaw::kChopaya: return "chopaya";
+    case SaturationLaw::kNone:
+      return "kalker_linear";
+    case SaturationLaw::kLinear:
+      return "linear_saturated";
+    case SaturationLaw::kVermeulenJohnson:
+      return "vermeulen_johnson";
+    case SaturationLaw::kShenHedrickElkins:
+      return "shen_hedrick_elkins";
+    case SaturationLaw::kChopaya:
+      return "chopaya";
   }
   return "unknown";
 }

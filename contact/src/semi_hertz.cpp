@@ -32,8 +32,8 @@ double relative_gap(const NormalProblem& p, double z_min, double y) {
 }
 
 struct StripGrid {
-  double y0 = 0.0;   // first strip centre
-  double dy = 0.0;   // strip width
+  double y0 = 0.0;  // first strip centre
+  double dy = 0.0;  // strip width
   int count = 0;
   std::vector<double> gap;  // relative gap at the strip centres
 };
@@ -44,7 +44,8 @@ StripGrid make_grid(const NormalProblem& p, double z_min, double y_lo, double y_
   g.dy = (y_hi - y_lo) / count;
   g.y0 = y_lo + 0.5 * g.dy;
   g.gap.resize(static_cast<std::size_t>(count));
-  for (int i = 0; i < count; ++i) g.gap[static_cast<std::size_t>(i)] = relative_gap(p, z_min, g.y0 + i * g.dy);
+  for (int i = 0; i < count; ++i)
+    g.gap[static_cast<std::size_t>(i)] = relative_gap(p, z_min, g.y0 + i * g.dy);
   return g;
 }
 
@@ -62,11 +63,15 @@ double solve_penetration(const StripGrid& g, double target, double ac, double kp
   while (strip_load(g, hi, ac, kp) < target) {
     lo = hi;
     hi *= 2.0;
-    if (++guard > 200) throw std::runtime_error("semi_hertz: cannot bracket the virtual penetration");
+    if (++guard > 200)
+      throw std::runtime_error("semi_hertz: cannot bracket the virtual penetration");
   }
   for (int iter = 0; iter < 100 && hi - lo > 1e-15 * hi; ++iter) {
     const double mid = 0.5 * (lo + hi);
-    if (strip_load(g, mid, ac, kp) < target) lo = mid; else hi = mid;
+    if (strip_load(g, mid, ac, kp) < target)
+      lo = mid;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -78,8 +83,14 @@ std::pair<double, double> penetrated_span(const NormalProblem& p, double z_min, 
   double lo = INFINITY, hi = -INFINITY;
   for (std::size_t i = 0; i + 1 < ys.size(); ++i) {
     const double z0 = zs[i] - z_min - h0, z1 = zs[i + 1] - z_min - h0;
-    if (z0 < 0.0) { lo = std::min(lo, ys[i]); hi = std::max(hi, ys[i]); }
-    if (z1 < 0.0) { lo = std::min(lo, ys[i + 1]); hi = std::max(hi, ys[i + 1]); }
+    if (z0 < 0.0) {
+      lo = std::min(lo, ys[i]);
+      hi = std::max(hi, ys[i]);
+    }
+    if (z1 < 0.0) {
+      lo = std::min(lo, ys[i + 1]);
+      hi = std::max(hi, ys[i + 1]);
+    }
     if ((z0 < 0.0) != (z1 < 0.0)) {
       const double yc = ys[i] + (ys[i + 1] - ys[i]) * z0 / (z0 - z1);
       lo = std::min(lo, yc);
@@ -105,9 +116,9 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
         "semi_hertz: curvature_x (A) must be finite and > 0 [1/m], got {}", p.curvature_x));
   }
   if (p.gap_y.size() < 3 || p.gap_y.size() != p.gap_z.size()) {
-    throw std::invalid_argument(fmt::format(
-        "semi_hertz: gap_y and gap_z must have the same size >= 3, got {} and {}", p.gap_y.size(),
-        p.gap_z.size()));
+    throw std::invalid_argument(
+        fmt::format("semi_hertz: gap_y and gap_z must have the same size >= 3, got {} and {}",
+                    p.gap_y.size(), p.gap_z.size()));
   }
   for (std::size_t i = 0; i + 1 < p.gap_y.size(); ++i) {
     if (!(p.gap_y[i + 1] > p.gap_y[i])) {
@@ -116,8 +127,8 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
     }
   }
   const CombinedMaterial mat = combine(p.body1, p.body2);
-  const auto jmin = static_cast<std::size_t>(
-      std::min_element(p.gap_z.begin(), p.gap_z.end()) - p.gap_z.begin());
+  const auto jmin =
+      static_cast<std::size_t>(std::min_element(p.gap_z.begin(), p.gap_z.end()) - p.gap_z.begin());
   if (jmin == 0 || jmin + 1 == p.gap_y.size()) {
     throw std::invalid_argument(
         "semi_hertz: the gap minimum lies on the first or last sample; widen gap_y");
@@ -177,12 +188,15 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
   };
   for (int i = 0; i < grid.count; ++i) {
     const double h = h0 - grid.gap[static_cast<std::size_t>(i)];
-    if (h <= 0.0) { flush(); continue; }
+    if (h <= 0.0) {
+      flush();
+      continue;
+    }
     PatchStrip s;
     s.y = grid.y0 + i * grid.dy;
     s.width = grid.dy;
-    s.half_length = std::sqrt(h / ac);         // eq. (22)
-    s.peak_pressure = kp * s.half_length;      // eq. (23) along the strip
+    s.half_length = std::sqrt(h / ac);     // eq. (22)
+    s.peak_pressure = kp * s.half_length;  // eq. (23) along the strip
     current.strips.push_back(s);
   }
   flush();
@@ -191,7 +205,8 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
   const double theta = std::acos(std::abs(p.curvature_x - b_ref) / (p.curvature_x + b_ref));
   if (theta > 0.0) {
     const HertzCoefficients c = hertz_coefficients(theta);
-    const double n_lat = p.curvature_x <= b_ref ? c.n : c.m;  // b = n c when B is the larger curvature
+    const double n_lat =
+        p.curvature_x <= b_ref ? c.n : c.m;  // b = n c when B is the larger curvature
     sol.approach = h0 * c.r * (1.0 + lambda) / (n_lat * n_lat);
   }
   return sol;

@@ -36,9 +36,9 @@ void TangentialProblem::validate() const {
   }
   if (!std::isfinite(creepage.longitudinal) || !std::isfinite(creepage.lateral) ||
       !std::isfinite(creepage.spin)) {
-    throw std::invalid_argument(fmt::format(
-        "tangential problem.creepage: must be finite, got ({}, {}, {})", creepage.longitudinal,
-        creepage.lateral, creepage.spin));
+    throw std::invalid_argument(
+        fmt::format("tangential problem.creepage: must be finite, got ({}, {}, {})",
+                    creepage.longitudinal, creepage.lateral, creepage.spin));
   }
   // Material::validate builds a std::string: call it only when the quick check fails.
   const auto plausible = [](const Material& m) {
@@ -101,8 +101,9 @@ class KalkerLinearModel final : public TangentialModel {
 }  // namespace
 
 std::vector<std::string> tangential_model_names() {
-  return {"kalker_linear", "linear_saturated", "vermeulen_johnson", "shen_hedrick_elkins",
-          "chopaya",       "polach",           "fastsim"};
+  return {
+      "kalker_linear", "linear_saturated", "vermeulen_johnson", "shen_hedrick_elkins", "chopaya",
+      "polach",        "fastsim"};
 }
 
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,

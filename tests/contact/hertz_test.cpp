@@ -1,4 +1,6 @@
 // Hertz normal contact against closed forms, the thesis's annex A.1 table and Table 3.7.
+#include "ferro/contact/hertz.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -6,7 +8,6 @@
 #include <numbers>
 
 #include "ferro/contact/elliptic_integrals.hpp"
-#include "ferro/contact/hertz.hpp"
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/normal_model.hpp"
 
@@ -91,12 +92,13 @@ TEST(hertz_ellipse, curvatures_recovered_with_std_special_functions) {
 // consistent with each other (their ratio n/m = 0.1085 gives theta = 20.0 deg only with m = 3.816).
 // Those entries are held to kHistoricTol instead.
 TEST(hertz_annex_a1, m_n_r_table) {
-  struct Row { double theta_deg, m, n, r, r_tol; };
-  const Row rows[] = {{10, 6.61, 0.32, 2.8, 0.05},  {20, 3.78, 0.41, 2.3, 0.05},
-                      {30, 2.73, 0.49, 1.98, 0.005}, {40, 2.14, 0.57, 1.74, 0.005},
-                      {50, 1.75, 0.64, 1.55, 0.005}, {60, 1.49, 0.72, 1.39, 0.005},
-                      {70, 1.28, 0.80, 1.25, 0.005}, {80, 1.13, 0.89, 1.12, 0.005},
-                      {90, 1.0, 1.0, 1.0, 0.005}};
+  struct Row {
+    double theta_deg, m, n, r, r_tol;
+  };
+  const Row rows[] = {
+      {10, 6.61, 0.32, 2.8, 0.05},   {20, 3.78, 0.41, 2.3, 0.05},   {30, 2.73, 0.49, 1.98, 0.005},
+      {40, 2.14, 0.57, 1.74, 0.005}, {50, 1.75, 0.64, 1.55, 0.005}, {60, 1.49, 0.72, 1.39, 0.005},
+      {70, 1.28, 0.80, 1.25, 0.005}, {80, 1.13, 0.89, 1.12, 0.005}, {90, 1.0, 1.0, 1.0, 0.005}};
   constexpr double kHalfUnit = 0.005 + 1e-12;
   constexpr double kHistoricTol = 0.03;  // relative, for the three defective entries only
   // The r column is off by up to 0.37 % (40 and 50 deg: 1.746 and 1.556 printed 1.74 and 1.55).
@@ -130,7 +132,7 @@ TEST(thesis_table_3_7, hertz_row) {
   fc::NormalProblem p;
   const double gamma = std::atan(0.1);
   p.curvature_x = std::cos(gamma) / (2.0 * 0.460);  // eqs. (6), (14): rail straight along x
-  p.curvature_y = 1.0 / (2.0 * 0.300);               // eqs. (7), (15)-(16): conical tread
+  p.curvature_y = 1.0 / (2.0 * 0.300);              // eqs. (7), (15)-(16): conical tread
   p.normal_force = 7.5e3 * 9.81;
   p.body1 = steel;
   p.body2 = steel;
@@ -156,6 +158,7 @@ TEST(normal_registry, names_and_errors) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("semi_hertz"), std::string::npos);
   }
-  EXPECT_THROW((void)fc::make_normal_model("semi_hertz", {{"stripes", "5"}}), std::invalid_argument);
+  EXPECT_THROW((void)fc::make_normal_model("semi_hertz", {{"stripes", "5"}}),
+               std::invalid_argument);
   EXPECT_THROW((void)fc::make_normal_model("semi_hertz", {{"strips", "x"}}), std::invalid_argument);
 }

@@ -1,4 +1,6 @@
 // Kalker's C_ij: annex A.2 nodes, the g -> 0 asymptotes and VOCO's fits (eq. 154).
+#include "ferro/contact/kalker_coefficients.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,13 +10,13 @@
 #include <numbers>
 
 #include "ferro/contact/hertz.hpp"
-#include "ferro/contact/kalker_coefficients.hpp"
 
 namespace fc = ferro::contact;
 
 namespace {
 // Annex A.2 as printed (Toumi 2016; Kalker 1967): rows a/b = 0.1..1.0 then b/a = 0.9..0.1,
 // columns nu = 0, 1/4, 1/2, for C11, C22, C23, C33.
+// clang-format off
 struct Row { double ratio; bool a_over_b; double c[4][3]; };
 const Row kTable[] = {
     {0.1, true, {{2.51, 3.31, 4.85}, {2.51, 2.52, 2.53}, {0.334, 0.473, 0.731}, {6.42, 8.28, 11.7}}},
@@ -37,9 +39,12 @@ const Row kTable[] = {
     {0.2, false, {{6.96, 7.78, 8.82}, {6.96, 8.14, 9.79}, {5.72, 6.63, 7.89}, {0.828, 0.601, 0.341}}},
     {0.1, false, {{10.7, 11.7, 12.9}, {10.7, 12.8, 16.0}, {12.2, 14.6, 18.0}, {0.795, 0.526, 0.228}}},
 };
+// clang-format on
 constexpr double kNu[3] = {0.0, 0.25, 0.5};
 
-std::array<double, 4> as_array(const fc::KalkerCoefficients& c) { return {c.c11, c.c22, c.c23, c.c33}; }
+std::array<double, 4> as_array(const fc::KalkerCoefficients& c) {
+  return {c.c11, c.c22, c.c23, c.c33};
+}
 }  // namespace
 
 // Every printed node (19 rows x 3 nu x 4 coefficients) reproduced to rounding.
@@ -52,7 +57,8 @@ TEST(kalker_table_a2, every_node_exact) {
       const auto c = as_array(fc::kalker_coefficients_table(a, b, kNu[j]));
       for (int i = 0; i < 4; ++i) {
         EXPECT_NEAR(c[i], row.c[i][j], kTol * row.c[i][j])
-            << "C" << i << " ratio=" << row.ratio << (row.a_over_b ? " a/b" : " b/a") << " nu=" << kNu[j];
+            << "C" << i << " ratio=" << row.ratio << (row.a_over_b ? " a/b" : " b/a")
+            << " nu=" << kNu[j];
       }
     }
   }
@@ -94,12 +100,16 @@ TEST(voco_fit_154, deviation_from_table) {
     const fc::KalkerCoefficients f = fc::kalker_coefficients_voco_fit(x);
     const double dev[3] = {f.c11 / t.c11 - 1.0, f.c22 / t.c22 - 1.0, f.c23 / t.c23 - 1.0};
     for (int j = 0; j < 3; ++j) {
-      if (std::abs(dev[j]) > std::abs(worst[j])) { worst[j] = dev[j]; worst_x[j] = x; }
+      if (std::abs(dev[j]) > std::abs(worst[j])) {
+        worst[j] = dev[j];
+        worst_x[j] = x;
+      }
     }
   }
-  std::printf("voco_fit_154 max deviation vs table (nu=1/4), X in [0.1,10]: C11 %+.2f%% at X=%.3f, "
-              "C22 %+.2f%% at X=%.3f, C23 %+.2f%% at X=%.3f\n", 100 * worst[0], worst_x[0],
-              100 * worst[1], worst_x[1], 100 * worst[2], worst_x[2]);
+  std::printf(
+      "voco_fit_154 max deviation vs table (nu=1/4), X in [0.1,10]: C11 %+.2f%% at X=%.3f, "
+      "C22 %+.2f%% at X=%.3f, C23 %+.2f%% at X=%.3f\n",
+      100 * worst[0], worst_x[0], 100 * worst[1], worst_x[1], 100 * worst[2], worst_x[2]);
   // At X = 1 (circle) the fits equal the table's a/b = 1 row to its printed precision.
   const fc::KalkerCoefficients f1 = fc::kalker_coefficients_voco_fit(1.0);
   EXPECT_NEAR(f1.c11, 4.12, 0.005);
@@ -113,9 +123,11 @@ TEST(voco_fit_154, deviation_from_table) {
     const double a_over_b = x <= 1.0 ? 1.0 / k : k;
     const fc::KalkerCoefficients t = fc::kalker_coefficients_table(a_over_b, 1.0, 0.25);
     const fc::KalkerCoefficients f = fc::kalker_coefficients_voco_fit(x);
-    std::printf("| %5.2f | %6.3f | %5.2f / %5.2f (%+5.1f%%) | %5.2f / %5.2f (%+5.1f%%) | %5.3f / %5.3f (%+5.1f%%) |\n",
-                x, a_over_b, f.c11, t.c11, 100 * (f.c11 / t.c11 - 1), f.c22, t.c22,
-                100 * (f.c22 / t.c22 - 1), f.c23, t.c23, 100 * (f.c23 / t.c23 - 1));
+    std::printf(
+        "| %5.2f | %6.3f | %5.2f / %5.2f (%+5.1f%%) | %5.2f / %5.2f (%+5.1f%%) | %5.3f / %5.3f "
+        "(%+5.1f%%) |\n",
+        x, a_over_b, f.c11, t.c11, 100 * (f.c11 / t.c11 - 1), f.c22, t.c22,
+        100 * (f.c22 / t.c22 - 1), f.c23, t.c23, 100 * (f.c23 / t.c23 - 1));
   }
   EXPECT_THROW((void)fc::kalker_coefficients_voco_fit(0.0), std::invalid_argument);
   EXPECT_THROW((void)fc::coefficient_source_from_name("table"), std::invalid_argument);

@@ -11,7 +11,9 @@ namespace fc = ferro::contact;
 
 namespace {
 // K11 linear in both axes: multilinear interpolation must reproduce it exactly anywhere inside.
-double k11_of(double load, double thickness) { return 0.9 - 2e-6 * load - 1000.0 * thickness; }
+double k11_of(double load, double thickness) {
+  return 0.9 - 2e-6 * load - 1000.0 * thickness;
+}
 
 fc::KijTable make_table() {
   const std::vector<double> loads = {50e3, 75e3, 100e3, 150e3};  // N
@@ -48,7 +50,8 @@ TEST(kij_table, hdf5_round_trip_and_interpolation) {
     }
   }
   EXPECT_EQ(t.clamped_queries(), 0);
-  const fc::ReductionFactors c = t.at(std::vector<double>{200e3, 0.0});  // clamped to the 150 kN end
+  const fc::ReductionFactors c =
+      t.at(std::vector<double>{200e3, 0.0});  // clamped to the 150 kN end
   EXPECT_NEAR(c.k11, k11_of(150e3, 0.0), kExact);
   EXPECT_EQ(t.clamped_queries(), 1);
   EXPECT_THROW((void)t.at({{"normal_force", 1.0}}), std::invalid_argument);

@@ -1,4 +1,6 @@
 // Semi-Hertz (Ayasse-Chollet) against Hertz on a quadratic gap, and on two-lobe gaps.
+#include "ferro/contact/semi_hertz.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 
 #include "ferro/contact/hertz.hpp"
 #include "ferro/contact/normal_model.hpp"
-#include "ferro/contact/semi_hertz.hpp"
 
 namespace fc = ferro::contact;
 
@@ -71,7 +72,8 @@ TEST(semi_hertz, two_identical_lobes_are_half_load_hertz) {
   sample_gap(p, -0.03, 0.03, 1200, [&](double y) {
     return std::min(b_curv * (y - y1) * (y - y1), b_curv * (y - y2) * (y - y2));
   });
-  const fc::NormalSolution semi = fc::make_normal_model("semi_hertz", {{"strips", "400"}})->solve(p);
+  const fc::NormalSolution semi =
+      fc::make_normal_model("semi_hertz", {{"strips", "400"}})->solve(p);
   ASSERT_EQ(semi.patches.size(), 2u);
   const fc::Material steel = fc::Material::from_young(210e9, 0.28);
   const fc::HertzSolution half = fc::hertz_solve(p.curvature_x, b_curv, 0.5 * p.normal_force,
@@ -98,7 +100,8 @@ TEST(semi_hertz, two_curvature_regions_two_patches) {
   sample_gap(p, -0.03, 0.03, 1200, [&](double y) {
     return std::min(b1 * (y - y1) * (y - y1), b2 * (y - y2) * (y - y2) + dz);
   });
-  const fc::NormalSolution semi = fc::make_normal_model("semi_hertz", {{"strips", "400"}})->solve(p);
+  const fc::NormalSolution semi =
+      fc::make_normal_model("semi_hertz", {{"strips", "400"}})->solve(p);
   ASSERT_EQ(semi.patches.size(), 2u);
   EXPECT_GT(semi.patches[0].normal_force, semi.patches[1].normal_force);
   EXPECT_GT(semi.patches[1].normal_force, 0.0);

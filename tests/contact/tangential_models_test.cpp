@@ -87,8 +87,7 @@ TEST(tangential_linear_limit, slopes_equal_kalker) {
   const ThesisCase s;
   for (const ModelCase& m : all_models()) {
     const auto model = fc::make_tangential_model(m.name, m.options);
-    const fc::LinearCreepStiffness lin =
-        fc::linear_creep_stiffness(s.problem({}), source_of(m));
+    const fc::LinearCreepStiffness lin = fc::linear_creep_stiffness(s.problem({}), source_of(m));
     const double gab = lin.shear_modulus * lin.a * lin.b;
     const double limit = s.mu * s.patch.normal_force;
     const double xi_x = kTiny * limit / (gab * lin.c.c11);
@@ -124,13 +123,14 @@ TEST(tangential_saturation, reaches_coulomb_limit) {
   for (const ModelCase& m : all_models()) {
     if (m.saturation_tol < 0.0) continue;  // kalker_linear does not saturate, by definition
     const auto model = fc::make_tangential_model(m.name, m.options);
-    for (const fc::Creepage c : {fc::Creepage{0.5, 0.0, 0.0}, fc::Creepage{0.0, -0.5, 0.0},
-                                 fc::Creepage{0.3, 0.4, 0.0}}) {
+    for (const fc::Creepage c :
+         {fc::Creepage{0.5, 0.0, 0.0}, fc::Creepage{0.0, -0.5, 0.0}, fc::Creepage{0.3, 0.4, 0.0}}) {
       const fc::TangentialSolution f = model->solve(s.problem(c));
       EXPECT_NEAR(std::hypot(f.force_x, f.force_y) / limit, 1.0, m.saturation_tol) << m.label();
       // Direction opposite to the creepage (no spin).
-      const double cosang = -(f.force_x * c.longitudinal + f.force_y * c.lateral) /
-                            (std::hypot(f.force_x, f.force_y) * std::hypot(c.longitudinal, c.lateral));
+      const double cosang =
+          -(f.force_x * c.longitudinal + f.force_y * c.lateral) /
+          (std::hypot(f.force_x, f.force_y) * std::hypot(c.longitudinal, c.lateral));
       EXPECT_GT(cosang, 0.99) << m.label();
     }
   }
@@ -300,7 +300,8 @@ TEST(tangential_registry, names_options_errors) {
 TEST(polach_reduction, initial_slope_and_falling_branch) {
   const ThesisCase s;
   const auto model = fc::make_tangential_model(
-      "polach", {{"k_a", "1"}, {"k_s", "0.4"}, {"friction_ratio", "0.4"}, {"friction_decay", "0.6"}});
+      "polach",
+      {{"k_a", "1"}, {"k_s", "0.4"}, {"friction_ratio", "0.4"}, {"friction_decay", "0.6"}});
   const fc::LinearCreepStiffness lin =
       fc::linear_creep_stiffness(s.problem({}), fc::CoefficientSource::kKalkerTable);
   const double xi = 1e-15;

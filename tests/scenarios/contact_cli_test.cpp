@@ -63,24 +63,26 @@ TEST(contact_cli_eval, thesis_spheres_linear_theory) {
   const double a = std::cbrt(3.0 * force * r / (4.0 * m.contact_modulus));
   const double c11 = ferro::contact::kalker_coefficients_table(1.0, 1.0, 0.28).c11;
   const double curv = 0.5 / r1 + 0.5 / r2;
-  const CliRun out = run("contact eval --model kalker_linear --curvature-x " + std::to_string(curv) +
-                      " --curvature-y " + std::to_string(curv) + " --fn 10000 --mu 0.2 --xi-x 0.001" +
-                      " --g1 " + std::to_string(steel.shear_modulus) + " --g2 " +
-                      std::to_string(steel.shear_modulus));
+  const CliRun out = run(
+      "contact eval --model kalker_linear --curvature-x " + std::to_string(curv) +
+      " --curvature-y " + std::to_string(curv) + " --fn 10000 --mu 0.2 --xi-x 0.001" + " --g1 " +
+      std::to_string(steel.shear_modulus) + " --g2 " + std::to_string(steel.shear_modulus));
   ASSERT_EQ(out.code, 0) << out.out;
   EXPECT_NEAR(json_field(out.out, "semi_axis_x") / a, 1.0, 1e-6);  // curvature printed to 6 digits
-  EXPECT_NEAR(json_field(out.out, "force_x") /
-                  (-m.shear_modulus * json_field(out.out, "semi_axis_x") *
-                   json_field(out.out, "semi_axis_y") * c11 * xi), 1.0, kTol);
+  EXPECT_NEAR(
+      json_field(out.out, "force_x") / (-m.shear_modulus * json_field(out.out, "semi_axis_x") *
+                                        json_field(out.out, "semi_axis_y") * c11 * xi),
+      1.0, kTol);
   EXPECT_NE(out.out.find("on the wheel from the rail"), std::string::npos);
 }
 
 TEST(contact_cli_eval, batch_and_errors) {
   const fs::path dir = scratch("contact_cli_batch");
   const fs::path csv = dir / "in.csv";
-  std::ofstream(csv) << "model,xi_x,xi_y,k11\nfastsim,0.001,0,1\nchopaya,0.001,0,0.5\npolach,0,0.002,1\n";
+  std::ofstream(csv)
+      << "model,xi_x,xi_y,k11\nfastsim,0.001,0,1\nchopaya,0.001,0,0.5\npolach,0,0.002,1\n";
   const CliRun out = run("contact eval --batch --a 0.0065 --b 0.0049 --fn 73575 --mu 0.3 < '" +
-                      csv.string() + "'");
+                         csv.string() + "'");
   ASSERT_EQ(out.code, 0) << out.out;
   std::istringstream lines(out.out);
   std::string line;
@@ -89,7 +91,7 @@ TEST(contact_cli_eval, batch_and_errors) {
   EXPECT_EQ(rows, 4);  // header + 3 cases
   std::ofstream(csv) << "model,xi_z\nfastsim,0.001\n";
   const CliRun bad = run("contact eval --batch --a 0.0065 --b 0.0049 --fn 73575 --mu 0.3 < '" +
-                      csv.string() + "'");
+                         csv.string() + "'");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.out.find("xi_z"), std::string::npos);
   EXPECT_EQ(run("contact eval --a 0.0065 --b 0.005 --fn 1 --mu 0.3 --model nope").code, 2);
@@ -99,7 +101,8 @@ TEST(contact_cli_eval, batch_and_errors) {
 // Creep curves of the thesis sphere case: CSV (every model x every curve), HDF5, PNG.
 TEST(contact_cli_curve, thesis_spheres_all_models) {
   const fs::path dir = scratch("contact_cli_curve");
-  const std::string yaml = std::string(FERRO_SOURCE_DIR) + "/scenarios/cases/contact/thesis_spheres.yaml";
+  const std::string yaml =
+      std::string(FERRO_SOURCE_DIR) + "/scenarios/cases/contact/thesis_spheres.yaml";
   const CliRun out = run("contact curve '" + yaml + "' --out '" + dir.string() + "'");
   if (out.code == 1 && out.out.find("no Python with matplotlib") != std::string::npos) {
     GTEST_SKIP() << "matplotlib unavailable: " << out.out;
@@ -126,7 +129,8 @@ TEST(contact_cli_curve, thesis_spheres_all_models) {
 TEST(contact_cli_patch, spheres_and_two_lobes) {
   const fs::path dir = scratch("contact_cli_patch");
   for (const char* name : {"thesis_spheres", "semi_hertz_two_lobes"}) {
-    const std::string yaml = std::string(FERRO_SOURCE_DIR) + "/scenarios/cases/contact/" + name + ".yaml";
+    const std::string yaml =
+        std::string(FERRO_SOURCE_DIR) + "/scenarios/cases/contact/" + name + ".yaml";
     const CliRun out = run("contact patch '" + yaml + "' --no-png --out '" + dir.string() + "'");
     ASSERT_EQ(out.code, 0) << out.out;
     EXPECT_TRUE(fs::exists(dir / (std::string(name) + "_patch.csv")));

@@ -3,9 +3,9 @@
 // Units: SI everywhere (m, N, Pa, 1/m for spin). Sign convention: creepages are the rigid slip
 // of the wheel relative to the rail over the rolling speed; forces and moment are those of the
 // rail on the wheel (F_x = -G a b C11 xi_x in the linear range).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -33,9 +33,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // One Hertzian evaluation, as given on the command line or in a --batch CSV row.
 struct EvalInput {
-  double a = kNaN, b = kNaN;                      // semi-axes [m]
-  double curvature_x = kNaN, curvature_y = kNaN;  // A, B [1/m]
-  double fn = kNaN;                               // [N]
+  double a = kNaN, b = kNaN;                            // semi-axes [m]
+  double curvature_x = kNaN, curvature_y = kNaN;        // A, B [1/m]
+  double fn = kNaN;                                     // [N]
   double g1 = 82e9, nu1 = 0.28, g2 = 82e9, nu2 = 0.28;  // [Pa], [-] (steel by default)
   double mu = kNaN;
   double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
@@ -58,9 +58,11 @@ fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) 
     throw std::invalid_argument(
         "give either --a and --b (semi-axes [m]) or --curvature-x and --curvature-y (A, B [1/m])");
   }
-  if (!(in.fn > 0.0)) throw std::invalid_argument(fmt::format("--fn: must be > 0 [N], got {}", in.fn));
+  if (!(in.fn > 0.0))
+    throw std::invalid_argument(fmt::format("--fn: must be > 0 [N], got {}", in.fn));
   if (have_curv) {
-    const fc::HertzSolution h = fc::hertz_solve(in.curvature_x, in.curvature_y, in.fn, m.contact_modulus);
+    const fc::HertzSolution h =
+        fc::hertz_solve(in.curvature_x, in.curvature_y, in.fn, m.contact_modulus);
     fc::ContactPatch p;
     p.semi_axis_x = h.semi_axis_x;
     p.semi_axis_y = h.semi_axis_y;
@@ -72,7 +74,8 @@ fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) 
     return p;
   }
   if (!(in.a > 0.0) || !(in.b > 0.0)) {
-    throw std::invalid_argument(fmt::format("--a, --b: must both be > 0 [m], got {}, {}", in.a, in.b));
+    throw std::invalid_argument(
+        fmt::format("--a, --b: must both be > 0 [m], got {}, {}", in.a, in.b));
   }
   // Hertz inverse: ratio from k = minor/major, then A + B = 3 F E(e) / (2 pi E* k^2 major^3).
   const double major = std::max(in.a, in.b), minor = std::min(in.a, in.b);
@@ -80,8 +83,8 @@ fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) 
   const double rho = fc::hertz_curvature_ratio(k);
   const double ee = k < 1.0 ? fc::complete_elliptic_integrals(std::sqrt(1.0 - k * k)).second
                             : 0.5 * std::numbers::pi;
-  const double sum = 3.0 * in.fn * ee / (2.0 * std::numbers::pi * m.contact_modulus * k * k *
-                                          major * major * major);
+  const double sum = 3.0 * in.fn * ee /
+                     (2.0 * std::numbers::pi * m.contact_modulus * k * k * major * major * major);
   const double small = sum / (1.0 + rho), large = sum - small;
   return fc::elliptic_patch(in.a, in.b, in.fn, in.a >= in.b ? small : large,
                             in.a >= in.b ? large : small);
@@ -106,7 +109,8 @@ EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model) {
   p.body1 = body1;
   p.body2 = body2;
   p.reduction = {in.k11, in.k22, in.k23, in.k33};
-  if (!(in.mu >= 0.0)) throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
+  if (!(in.mu >= 0.0))
+    throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
   out.forces = model.solve(p);
   return out;
 }
@@ -123,7 +127,9 @@ fc::ModelOptions parse_options(const std::vector<std::string>& items) {
   return o;
 }
 
-std::string json_number(double v) { return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null"; }
+std::string json_number(double v) {
+  return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null";
+}
 
 void print_json(const EvalInput& in, const EvalOutput& out) {
   fmt::print(
@@ -153,25 +159,39 @@ std::vector<std::string> split_csv(const std::string& line) {
 // --batch: CSV with a header on stdin; each row overrides the command-line values.
 int run_batch(const EvalInput& defaults, const fc::ModelOptions& options) {
   std::string line;
-  if (!std::getline(std::cin, line)) throw std::invalid_argument("--batch: empty standard input (expected a CSV header)");
+  if (!std::getline(std::cin, line))
+    throw std::invalid_argument("--batch: empty standard input (expected a CSV header)");
   const std::vector<std::string> header = split_csv(line);
   const std::map<std::string, double EvalInput::*> numeric = {
-      {"a", &EvalInput::a},         {"b", &EvalInput::b},
-      {"curvature_x", &EvalInput::curvature_x}, {"curvature_y", &EvalInput::curvature_y},
-      {"fn", &EvalInput::fn},       {"g1", &EvalInput::g1},   {"nu1", &EvalInput::nu1},
-      {"g2", &EvalInput::g2},       {"nu2", &EvalInput::nu2}, {"mu", &EvalInput::mu},
-      {"xi_x", &EvalInput::xi_x},   {"xi_y", &EvalInput::xi_y}, {"phi", &EvalInput::phi},
-      {"k11", &EvalInput::k11},     {"k22", &EvalInput::k22}, {"k23", &EvalInput::k23},
+      {"a", &EvalInput::a},
+      {"b", &EvalInput::b},
+      {"curvature_x", &EvalInput::curvature_x},
+      {"curvature_y", &EvalInput::curvature_y},
+      {"fn", &EvalInput::fn},
+      {"g1", &EvalInput::g1},
+      {"nu1", &EvalInput::nu1},
+      {"g2", &EvalInput::g2},
+      {"nu2", &EvalInput::nu2},
+      {"mu", &EvalInput::mu},
+      {"xi_x", &EvalInput::xi_x},
+      {"xi_y", &EvalInput::xi_y},
+      {"phi", &EvalInput::phi},
+      {"k11", &EvalInput::k11},
+      {"k22", &EvalInput::k22},
+      {"k23", &EvalInput::k23},
       {"k33", &EvalInput::k33}};
   for (const std::string& h : header) {
     if (h != "model" && numeric.find(h) == numeric.end()) {
       throw std::invalid_argument(fmt::format(
           "--batch: unknown CSV column '{}'; allowed: a, b, curvature_x, curvature_y, fn, g1, nu1, "
-          "g2, nu2, mu, xi_x, xi_y, phi, k11, k22, k23, k33, model", h));
+          "g2, nu2, mu, xi_x, xi_y, phi, k11, k22, k23, k33, model",
+          h));
     }
   }
   std::map<std::string, std::unique_ptr<fc::TangentialModel>> models;
-  fmt::print("row,model,semi_axis_x,semi_axis_y,peak_pressure,force_x,force_y,moment_z,adhesion_fraction\n");
+  fmt::print(
+      "row,model,semi_axis_x,semi_axis_y,peak_pressure,force_x,force_y,moment_z,adhesion_"
+      "fraction\n");
   int row = 0, line_no = 1;
   while (std::getline(std::cin, line)) {
     ++line_no;
@@ -193,12 +213,14 @@ int run_batch(const EvalInput& defaults, const fc::ModelOptions& options) {
         in.*(numeric.at(header[i])) = std::stod(cells[i], &used);
         if (used != cells[i].size()) throw std::invalid_argument("trailing");
       } catch (const std::exception&) {
-        throw std::invalid_argument(fmt::format("--batch: stdin line {}, column '{}': not a number: '{}'",
-                                                line_no, header[i], cells[i]));
+        throw std::invalid_argument(
+            fmt::format("--batch: stdin line {}, column '{}': not a number: '{}'", line_no,
+                        header[i], cells[i]));
       }
     }
     auto it = models.find(in.model);
-    if (it == models.end()) it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
+    if (it == models.end())
+      it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
     try {
       const EvalOutput out = evaluate(in, *it->second);
       fmt::print("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row, in.model,
@@ -213,7 +235,8 @@ int run_batch(const EvalInput& defaults, const fc::ModelOptions& options) {
   return kExitOk;
 }
 
-std::string output_path(const std::string& dir, const std::string& name, const std::string& suffix) {
+std::string output_path(const std::string& dir, const std::string& name,
+                        const std::string& suffix) {
   std::filesystem::create_directories(dir);
   return (std::filesystem::path(dir) / (name + suffix)).string();
 }
@@ -221,7 +244,8 @@ std::string output_path(const std::string& dir, const std::string& name, const s
 }  // namespace
 
 void add_contact_commands(CLI::App& app, VerbHandler& handler) {
-  CLI::App* contact = app.add_subcommand("contact", "Contact models: evaluate, creep curves, patch pictures");
+  CLI::App* contact =
+      app.add_subcommand("contact", "Contact models: evaluate, creep curves, patch pictures");
   contact->require_subcommand(1);
 
   // contact eval
@@ -231,7 +255,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   auto kij_table = std::make_shared<std::string>();
   auto kij_at = std::make_shared<std::vector<std::string>>();
   CLI::App* eval = contact->add_subcommand(
-      "eval", "Solve a Hertzian case; prints forces on the wheel (from the rail) as JSON, SI units");
+      "eval",
+      "Solve a Hertzian case; prints forces on the wheel (from the rail) as JSON, SI units");
   eval->add_option("--a", in->a, "semi-axis along rolling x [m] (with --b)");
   eval->add_option("--b", in->b, "lateral semi-axis [m] (with --a)");
   eval->add_option("--curvature-x", in->curvature_x, "A: longitudinal relative curvature [1/m]");
@@ -247,17 +272,21 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   eval->add_option("--phi", in->phi, "spin creepage [1/m]");
   eval->add_option("--model", in->model,
                    "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
-                   "chopaya, polach, fastsim")->capture_default_str();
-  eval->add_option("--option", *opts, "model option key=value (repeatable), e.g. mx=40, "
-                                      "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
+                   "chopaya, polach, fastsim")
+      ->capture_default_str();
+  eval->add_option("--option", *opts,
+                   "model option key=value (repeatable), e.g. mx=40, "
+                   "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
   eval->add_option("--k11", in->k11, "reduction factor K11")->capture_default_str();
   eval->add_option("--k22", in->k22, "reduction factor K22")->capture_default_str();
   eval->add_option("--k23", in->k23, "reduction factor K23")->capture_default_str();
   eval->add_option("--k33", in->k33, "reduction factor K33")->capture_default_str();
-  eval->add_option("--kij-table", *kij_table, "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
+  eval->add_option("--kij-table", *kij_table,
+                   "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
   eval->add_option("--kij-at", *kij_at, "table coordinate axis=value (repeatable)");
-  eval->add_flag("--batch", *batch, "read cases as CSV (header = option names with '_') on stdin, "
-                                    "write one CSV row per case");
+  eval->add_flag("--batch", *batch,
+                 "read cases as CSV (header = option names with '_') on stdin, "
+                 "write one CSV row per case");
   eval->callback([&handler, in, opts, batch, kij_table, kij_at] {
     handler = [in, opts, batch, kij_table, kij_at] {
       const fc::ModelOptions options = parse_options(*opts);
@@ -291,7 +320,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   auto no_png = std::make_shared<bool>(false);
   CLI::App* curve = contact->add_subcommand(
       "curve", "Creep curves of every model of a case: CSV, HDF5 and one PNG overlay");
-  curve->add_option("case", *curve_case, "contact case YAML (scenarios/cases/contact/)")->required();
+  curve->add_option("case", *curve_case, "contact case YAML (scenarios/cases/contact/)")
+      ->required();
   curve->add_option("--out", *curve_out, "output directory")->capture_default_str();
   curve->add_flag("--no-png", *no_png, "skip the picture");
   curve->callback([&handler, curve_case, curve_out, no_png] {
@@ -300,7 +330,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       const fc::NormalSolution normal = scenarios::solve_case_normal(c);
       const auto points = scenarios::compute_creep_curves(c, normal);
       if (points.empty()) {
-        throw std::invalid_argument(fmt::format("{}: key 'curves': no curve requested", *curve_case));
+        throw std::invalid_argument(
+            fmt::format("{}: key 'curves': no curve requested", *curve_case));
       }
       const std::string csv = output_path(*curve_out, c.name, "_curves.csv");
       const std::string h5 = output_path(*curve_out, c.name, "_curves.h5");
@@ -341,7 +372,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       for (std::size_t k = 0; k < normal.patches.size(); ++k) {
         const fc::ContactPatch& p = normal.patches[k];
         summary += fmt::format(
-            "{}{{\"patch\": {}, \"y_center\": {:.6g}, \"semi_axis_x\": {:.6g}, \"semi_axis_y\": {:.6g}, "
+            "{}{{\"patch\": {}, \"y_center\": {:.6g}, \"semi_axis_x\": {:.6g}, \"semi_axis_y\": "
+            "{:.6g}, "
             "\"normal_force\": {:.6g}, \"peak_pressure\": {:.6g}, \"force_x\": {:.6g}, "
             "\"force_y\": {:.6g}, \"moment_z\": {:.6g}, \"adhesion_fraction\": {:.4g}}}",
             k ? ", " : "", k, p.y_center, p.semi_axis_x, p.semi_axis_y, p.normal_force,

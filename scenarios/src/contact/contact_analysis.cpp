@@ -40,18 +40,23 @@ contact::TangentialSolution solve_all_patches(const contact::TangentialModel& mo
 std::string shell_quote(const std::string& s) {
   std::string out = "'";
   for (char ch : s) {
-    if (ch == '\'') out += "'\\''"; else out += ch;
+    if (ch == '\'')
+      out += "'\\''";
+    else
+      out += ch;
   }
   return out + "'";
 }
 
 std::string plot_script_path() {
-  const std::filesystem::path source = std::filesystem::path(FERRO_SOURCE_DIR) / "tools" / "plot_contact.py";
+  const std::filesystem::path source =
+      std::filesystem::path(FERRO_SOURCE_DIR) / "tools" / "plot_contact.py";
   if (std::filesystem::exists(source)) return source.string();
-  const std::filesystem::path installed = std::filesystem::path(FERRO_INSTALL_DATADIR) / "plot_contact.py";
+  const std::filesystem::path installed =
+      std::filesystem::path(FERRO_INSTALL_DATADIR) / "plot_contact.py";
   if (std::filesystem::exists(installed)) return installed.string();
-  throw std::runtime_error(fmt::format("plot_contact.py not found in {} or {}", source.string(),
-                                       installed.string()));
+  throw std::runtime_error(
+      fmt::format("plot_contact.py not found in {} or {}", source.string(), installed.string()));
 }
 
 }  // namespace
@@ -59,9 +64,14 @@ std::string plot_script_path() {
 std::vector<CurvePoint> compute_creep_curves(const ContactCase& c,
                                              const contact::NormalSolution& normal) {
   std::vector<CurvePoint> out;
-  struct Sweep { const char* name; const CurveRequest* req; };
-  const Sweep sweeps[] = {{"longitudinal", &c.longitudinal}, {"lateral", &c.lateral},
-                          {"spin", &c.spin}, {"combined", &c.combined}};
+  struct Sweep {
+    const char* name;
+    const CurveRequest* req;
+  };
+  const Sweep sweeps[] = {{"longitudinal", &c.longitudinal},
+                          {"lateral", &c.lateral},
+                          {"spin", &c.spin},
+                          {"combined", &c.combined}};
   for (const NamedModel& m : c.models) {
     const auto model = contact::make_tangential_model(m.name, m.options);
     for (const Sweep& sw : sweeps) {
@@ -69,8 +79,8 @@ std::vector<CurvePoint> compute_creep_curves(const ContactCase& c,
       const int n = sw.req->points;
       const bool combined = std::string(sw.name) == "combined";
       for (int i = 0; i < n; ++i) {
-        const double s = combined ? sw.req->max * i / (n - 1)
-                                  : -sw.req->max + 2.0 * sw.req->max * i / (n - 1);
+        const double s =
+            combined ? sw.req->max * i / (n - 1) : -sw.req->max + 2.0 * sw.req->max * i / (n - 1);
         contact::Creepage cr;
         if (std::string(sw.name) == "longitudinal") cr.longitudinal = s;
         if (std::string(sw.name) == "lateral") cr.lateral = s;
@@ -118,8 +128,9 @@ void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& p
     H5Sclose(sp);
   };
   attr_int(file, "schema_version", 1);
-  attr_str(file, "units", "SI: creepage [-] or [1/m] (spin), force [N], moment [N m]; "
-                          "forces on the wheel from the rail");
+  attr_str(file, "units",
+           "SI: creepage [-] or [1/m] (spin), force [N], moment [N m]; "
+           "forces on the wheel from the rail");
   // Group the points by curve then model, keeping order.
   std::map<std::string, std::map<std::string, std::vector<const CurvePoint*>>> groups;
   for (const CurvePoint& p : points) groups[p.curve][p.model].push_back(&p);
@@ -127,7 +138,8 @@ void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& p
     const hid_t g = H5Gcreate2(file, curve.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     for (const auto& [model, pts] : models) {
       std::string name = model;
-      for (char& ch : name) if (ch == '/') ch = '_';
+      for (char& ch : name)
+        if (ch == '/') ch = '_';
       const hid_t mg = H5Gcreate2(g, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
       const hsize_t n = pts.size();
       auto write = [&](const char* ds, auto get) {
@@ -135,7 +147,8 @@ void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& p
         v.reserve(pts.size());
         for (const CurvePoint* p : pts) v.push_back(get(*p));
         const hid_t sp = H5Screate_simple(1, &n, nullptr);
-        const hid_t d = H5Dcreate2(mg, ds, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        const hid_t d =
+            H5Dcreate2(mg, ds, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
         H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
         H5Dclose(d);
         H5Sclose(sp);
@@ -168,8 +181,8 @@ PatchPicture compute_patch_picture(const ContactCase& c, const contact::NormalSo
     p.map = &map;
     pic.forces.push_back(model->solve(p));
     if (map.x.empty()) {
-      throw std::invalid_argument(fmt::format(
-          "patch.model '{}' gives no traction map; use fastsim", c.patch_model.name));
+      throw std::invalid_argument(
+          fmt::format("patch.model '{}' gives no traction map; use fastsim", c.patch_model.name));
     }
     std::size_t strip = 0;
     for (std::size_t i = 0; i < map.x.size(); ++i) {
@@ -216,14 +229,15 @@ void run_plot_script(const std::string& mode, const std::string& csv, const std:
   interpreters.emplace_back("python3");
   interpreters.emplace_back("/usr/bin/python3");
   for (const std::string& py : interpreters) {
-    const std::string cmd = fmt::format("{} {} {} {} {} {} 2>/dev/null", shell_quote(py),
-                                        shell_quote(script), mode, shell_quote(csv),
-                                        shell_quote(png), shell_quote(title));
+    const std::string cmd =
+        fmt::format("{} {} {} {} {} {} 2>/dev/null", shell_quote(py), shell_quote(script), mode,
+                    shell_quote(csv), shell_quote(png), shell_quote(title));
     if (std::system(cmd.c_str()) == 0) return;
   }
-  throw std::runtime_error(fmt::format(
-      "could not draw {}: no Python with matplotlib (tried $FERRO_PYTHON, python3, "
-      "/usr/bin/python3); the CSV {} is written", png, csv));
+  throw std::runtime_error(
+      fmt::format("could not draw {}: no Python with matplotlib (tried $FERRO_PYTHON, python3, "
+                  "/usr/bin/python3); the CSV {} is written",
+                  png, csv));
 }
 
 }  // namespace ferro::scenarios

@@ -26,11 +26,13 @@ double number(const YAML::Node& n, const std::string& path, const std::string& k
 
 double positive(const YAML::Node& n, const std::string& path, const std::string& key) {
   const double v = number(n, path, key);
-  if (!(v > 0.0) || !std::isfinite(v)) bad(path, key, fmt::format("must be finite and > 0, got {}", v));
+  if (!(v > 0.0) || !std::isfinite(v))
+    bad(path, key, fmt::format("must be finite and > 0, got {}", v));
   return v;
 }
 
-contact::ModelOptions options_of(const YAML::Node& n, const std::string& path, const std::string& key) {
+contact::ModelOptions options_of(const YAML::Node& n, const std::string& path,
+                                 const std::string& key) {
   contact::ModelOptions o;
   if (!n) return o;
   if (!n.IsMap()) bad(path, key, "expected a map of option: value");
@@ -38,8 +40,10 @@ contact::ModelOptions options_of(const YAML::Node& n, const std::string& path, c
   return o;
 }
 
-contact::Material material_of(const YAML::Node& n, const std::string& path, const std::string& key) {
-  if (!n || !n.IsMap()) bad(path, key, "expected a map with 'poisson' and 'young' or 'shear_modulus' [Pa]");
+contact::Material material_of(const YAML::Node& n, const std::string& path,
+                              const std::string& key) {
+  if (!n || !n.IsMap())
+    bad(path, key, "expected a map with 'poisson' and 'young' or 'shear_modulus' [Pa]");
   if (!n["poisson"]) bad(path, key + ".poisson", "missing");
   const double nu = number(n["poisson"], path, key + ".poisson");
   contact::Material m;
@@ -117,8 +121,10 @@ ContactCase load_contact_case(const std::string& path) {
   // Geometry.
   const YAML::Node g = root["geometry"];
   if (!g || !g.IsMap()) bad(path, "geometry", "missing (curvatures, radii or gap)");
-  if (g["curvature_x"]) c.normal.curvature_x = positive(g["curvature_x"], path, "geometry.curvature_x");
-  if (g["curvature_y"]) c.normal.curvature_y = positive(g["curvature_y"], path, "geometry.curvature_y");
+  if (g["curvature_x"])
+    c.normal.curvature_x = positive(g["curvature_x"], path, "geometry.curvature_x");
+  if (g["curvature_y"])
+    c.normal.curvature_y = positive(g["curvature_y"], path, "geometry.curvature_y");
   if (const auto r = g["radii"]) {
     c.normal.curvature_x = half_curvature(r["body1_x"], path, "geometry.radii.body1_x") +
                            half_curvature(r["body2_x"], path, "geometry.radii.body2_x");
@@ -149,7 +155,8 @@ ContactCase load_contact_case(const std::string& path) {
     c.normal.gap_y = g["gap_y"].as<std::vector<double>>();
     c.normal.gap_z = g["gap_z"].as<std::vector<double>>();
   }
-  if (!(c.normal.curvature_x > 0.0)) bad(path, "geometry.curvature_x", "missing or not > 0 (A [1/m])");
+  if (!(c.normal.curvature_x > 0.0))
+    bad(path, "geometry.curvature_x", "missing or not > 0 (A [1/m])");
   if (c.normal_model == "hertz" && !(c.normal.curvature_y > 0.0)) {
     bad(path, "geometry.curvature_y", "hertz needs B > 0 [1/m]");
   }
@@ -175,7 +182,8 @@ ContactCase load_contact_case(const std::string& path) {
   if (!root["friction"]) bad(path, "friction", "missing (mu [-])");
   c.friction = positive(root["friction"], path, "friction");
   if (const auto k = root["reduction"]) {
-    if (k["k"]) c.reduction = contact::ReductionFactors::uniform(positive(k["k"], path, "reduction.k"));
+    if (k["k"])
+      c.reduction = contact::ReductionFactors::uniform(positive(k["k"], path, "reduction.k"));
     if (k["k11"]) c.reduction.k11 = positive(k["k11"], path, "reduction.k11");
     if (k["k22"]) c.reduction.k22 = positive(k["k22"], path, "reduction.k22");
     if (k["k23"]) c.reduction.k23 = positive(k["k23"], path, "reduction.k23");
@@ -209,7 +217,8 @@ ContactCase load_contact_case(const std::string& path) {
     if (p["model"]) c.patch_model.name = p["model"].as<std::string>();
     if (p["options"]) c.patch_model.options = options_of(p["options"], path, "patch.options");
     if (const auto cr = p["creepage"]) {
-      if (cr["xi_x"]) c.patch_creepage.longitudinal = number(cr["xi_x"], path, "patch.creepage.xi_x");
+      if (cr["xi_x"])
+        c.patch_creepage.longitudinal = number(cr["xi_x"], path, "patch.creepage.xi_x");
       if (cr["xi_y"]) c.patch_creepage.lateral = number(cr["xi_y"], path, "patch.creepage.xi_y");
       if (cr["phi"]) c.patch_creepage.spin = number(cr["phi"], path, "patch.creepage.phi");
     }

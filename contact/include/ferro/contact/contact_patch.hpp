@@ -11,10 +11,10 @@ namespace ferro::contact {
 
 /// One strip of a non-elliptic patch, parallel to the rolling direction x.
 struct PatchStrip {
-  double y = 0.0;            ///< lateral position of the strip centre [m]
-  double width = 0.0;        ///< lateral width dy [m]
-  double x_center = 0.0;     ///< longitudinal centre of the strip [m]
-  double half_length = 0.0;  ///< a_i [m]
+  double y = 0.0;              ///< lateral position of the strip centre [m]
+  double width = 0.0;          ///< lateral width dy [m]
+  double x_center = 0.0;       ///< longitudinal centre of the strip [m]
+  double half_length = 0.0;    ///< a_i [m]
   double peak_pressure = 0.0;  ///< p0_i: pressure p = p0_i sqrt(1 - (x - xc)^2 / a_i^2) [Pa]
 };
 
@@ -24,14 +24,14 @@ struct PatchStrip {
 /// flexibilities).
 struct ContactPatch {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  double semi_axis_x = kNaN;     ///< a [m] (rolling direction)
-  double semi_axis_y = kNaN;     ///< b [m] (lateral)
-  double normal_force = kNaN;    ///< F_n [N]
-  double peak_pressure = kNaN;   ///< p_max [Pa]
-  double approach = kNaN;        ///< delta [m] (NaN if the model does not give it)
-  double curvature_x = kNaN;     ///< A [1/m] (NaN if unknown; needed by VOCO's C_ij fits)
-  double curvature_y = kNaN;     ///< B [1/m] (equivalent value for semi-Hertz patches)
-  double y_center = 0.0;         ///< lateral position of the patch centre in the gap frame [m]
+  double semi_axis_x = kNaN;       ///< a [m] (rolling direction)
+  double semi_axis_y = kNaN;       ///< b [m] (lateral)
+  double normal_force = kNaN;      ///< F_n [N]
+  double peak_pressure = kNaN;     ///< p_max [Pa]
+  double approach = kNaN;          ///< delta [m] (NaN if the model does not give it)
+  double curvature_x = kNaN;       ///< A [1/m] (NaN if unknown; needed by VOCO's C_ij fits)
+  double curvature_y = kNaN;       ///< B [1/m] (equivalent value for semi-Hertz patches)
+  double y_center = 0.0;           ///< lateral position of the patch centre in the gap frame [m]
   std::vector<PatchStrip> strips;  ///< empty for an elliptic (Hertz) patch
 
   [[nodiscard]] bool elliptic() const { return strips.empty(); }

@@ -13,9 +13,9 @@ namespace ferro::contact {
 
 /// Hertzian ellipse. x is the rolling (longitudinal) direction, y the lateral one.
 struct HertzSolution {
-  double semi_axis_x = std::numeric_limits<double>::quiet_NaN();  ///< a [m]
-  double semi_axis_y = std::numeric_limits<double>::quiet_NaN();  ///< b [m]
-  double approach = std::numeric_limits<double>::quiet_NaN();     ///< delta [m]
+  double semi_axis_x = std::numeric_limits<double>::quiet_NaN();    ///< a [m]
+  double semi_axis_y = std::numeric_limits<double>::quiet_NaN();    ///< b [m]
+  double approach = std::numeric_limits<double>::quiet_NaN();       ///< delta [m]
   double peak_pressure = std::numeric_limits<double>::quiet_NaN();  ///< p_max = 3F/(2 pi a b) [Pa]
   double normal_force = std::numeric_limits<double>::quiet_NaN();   ///< F_n [N]
 

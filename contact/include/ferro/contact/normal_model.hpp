@@ -48,8 +48,8 @@ class NormalContactModel {
 [[nodiscard]] std::vector<std::string> normal_model_names();
 /// Creates a model by name. Throws std::invalid_argument for an unknown name or option, with
 /// the allowed values in the message. Options: semi_hertz: "strips" (default 200).
-[[nodiscard]] std::unique_ptr<NormalContactModel> make_normal_model(std::string_view name,
-                                                                    const ModelOptions& options = {});
+[[nodiscard]] std::unique_ptr<NormalContactModel> make_normal_model(
+    std::string_view name, const ModelOptions& options = {});
 
 /// Option helpers shared by the registries (throw std::invalid_argument naming the key).
 [[nodiscard]] double option_double(const ModelOptions& options, const std::string& key,

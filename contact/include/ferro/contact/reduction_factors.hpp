@@ -51,8 +51,13 @@ class KijTable {
   [[nodiscard]] long clamped_queries() const { return clamped_; }
 
   KijTable(const KijTable& other)
-      : names_(other.names_), axes_(other.axes_), k11_(other.k11_), k22_(other.k22_),
-        k23_(other.k23_), k33_(other.k33_), clamped_(other.clamped_.load()) {}
+      : names_(other.names_),
+        axes_(other.axes_),
+        k11_(other.k11_),
+        k22_(other.k22_),
+        k23_(other.k23_),
+        k33_(other.k33_),
+        clamped_(other.clamped_.load()) {}
 
  private:
   std::vector<std::string> names_;

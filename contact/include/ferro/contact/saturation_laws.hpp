@@ -12,7 +12,8 @@
 // The saturated force keeps the direction of the linear force.
 // Known deviations: M_z is the linear-theory moment scaled by the same factor F_t/F_t,linear
 // (none of these laws defines a spin moment); vermeulen_johnson ignores spin altogether, so its
-// moment is only the C23 xi_y coupling term, scaled. For non-elliptic patches the equivalent ellipse a, b is used.
+// moment is only the C23 xi_y coupling term, scaled. For non-elliptic patches the equivalent
+// ellipse a, b is used.
 
 #include "ferro/contact/tangential_model.hpp"
 

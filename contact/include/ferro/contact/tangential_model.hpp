@@ -33,21 +33,21 @@ struct Creepage {
 /// Traction picture on a grid (filled by models that resolve the patch, e.g. FASTSIM). One
 /// entry per element, strip after strip.
 struct TractionMap {
-  std::vector<double> x, y;           ///< element centres [m] (patch frame)
-  std::vector<double> dx, dy;         ///< element sizes [m]
-  std::vector<double> pressure;       ///< p_n [Pa]
+  std::vector<double> x, y;                    ///< element centres [m] (patch frame)
+  std::vector<double> dx, dy;                  ///< element sizes [m]
+  std::vector<double> pressure;                ///< p_n [Pa]
   std::vector<double> traction_x, traction_y;  ///< on the wheel [Pa]
-  std::vector<unsigned char> slip;    ///< 1 = slip, 0 = adhesion
+  std::vector<unsigned char> slip;             ///< 1 = slip, 0 = adhesion
   void clear();
 };
 
 struct TangentialProblem {
   const ContactPatch* patch = nullptr;  ///< required
   Creepage creepage;
-  double friction = ContactPatch::kNaN;  ///< mu [-]
-  Material body1;                        ///< wheel
-  Material body2;                        ///< rail
-  ReductionFactors reduction;            ///< K_ij (all 1 = Kalker)
+  double friction = ContactPatch::kNaN;       ///< mu [-]
+  Material body1;                             ///< wheel
+  Material body2;                             ///< rail
+  ReductionFactors reduction;                 ///< K_ij (all 1 = Kalker)
   double rolling_speed = ContactPatch::kNaN;  ///< V [m/s], for slip-speed-dependent friction
   /// Full undeformed gap, for models that solve the contact numerically (MIM); may be null.
   const NormalProblem* gap = nullptr;
@@ -58,9 +58,9 @@ struct TangentialProblem {
 };
 
 struct TangentialSolution {
-  double force_x = 0.0;   ///< F_x on the wheel [N]
-  double force_y = 0.0;   ///< F_y on the wheel [N]
-  double moment_z = 0.0;  ///< M_z on the wheel [N m]
+  double force_x = 0.0;                           ///< F_x on the wheel [N]
+  double force_y = 0.0;                           ///< F_y on the wheel [N]
+  double moment_z = 0.0;                          ///< M_z on the wheel [N m]
   double adhesion_fraction = ContactPatch::kNaN;  ///< adhesion area / patch area (NaN if n/a)
 };
 

@@ -10,8 +10,8 @@
 namespace ferro::scenarios {
 
 struct CurvePoint {
-  std::string curve;   ///< longitudinal | lateral | spin | combined
-  std::string model;   ///< model label
+  std::string curve;      ///< longitudinal | lateral | spin | combined
+  std::string model;      ///< model label
   double creepage = 0.0;  ///< swept creepage: xi_x, xi_y [-], phi [1/m], or |xi| (combined)
   double force_x = 0.0, force_y = 0.0, moment_z = 0.0;  ///< [N], [N m], summed over patches
 };

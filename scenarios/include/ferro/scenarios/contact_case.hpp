@@ -21,7 +21,8 @@ struct NamedModel {
 
 struct CurveRequest {
   bool enabled = false;
-  double max = std::numeric_limits<double>::quiet_NaN();  ///< largest |creepage| (xi [-], phi [1/m])
+  double max =
+      std::numeric_limits<double>::quiet_NaN();  ///< largest |creepage| (xi [-], phi [1/m])
   int points = 101;
   double angle_deg = 45.0;  ///< combined curve: xi_x = s cos(angle), xi_y = s sin(angle)
 };
