@@ -136,7 +136,9 @@ void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& p
   for (const CurvePoint& p : points) groups[p.curve][p.model].push_back(&p);
   for (const auto& [curve, models] : groups) {
     const hid_t g = H5Gcreate2(file, curve.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (const auto& [model, pts] : models) {
+    for (const auto& entry : models) {
+      const std::string& model = entry.first;
+      const std::vector<const CurvePoint*>& pts = entry.second;
       std::string name = model;
       for (char& ch : name)
         if (ch == '/') ch = '_';

@@ -86,7 +86,10 @@ std::string NamedModel::label() const {
     s += "(";
     bool first = true;
     for (const auto& [k, v] : options) {
-      s += (first ? "" : ",") + k + "=" + v;
+      s += first ? "" : ",";
+      s += k;
+      s += '=';
+      s += v;
       first = false;
     }
     s += ")";
