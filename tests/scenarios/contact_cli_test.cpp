@@ -1,5 +1,6 @@
 // Smoke and consistency tests of `ferrodyn contact eval | curve | patch` on the shipped cases.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <array>
 #include <cmath>
@@ -108,7 +109,21 @@ TEST(contact_cli_curve, thesis_spheres_all_models) {
     GTEST_SKIP() << "matplotlib unavailable: " << out.out;
   }
   ASSERT_EQ(out.code, 0) << out.out;
-  EXPECT_TRUE(fs::exists(dir / "thesis_spheres_curves.h5"));
+  {
+    // HDF5: /longitudinal/kalker_linear/force_x has one value per point.
+    const std::string h5 = (dir / "thesis_spheres_curves.h5").string();
+    const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t d = H5Dopen2(f, "longitudinal/kalker_linear/force_x", H5P_DEFAULT);
+    ASSERT_GE(d, 0);
+    const hid_t sp = H5Dget_space(d);
+    hsize_t n = 0;
+    H5Sget_simple_extent_dims(sp, &n, nullptr);
+    EXPECT_EQ(n, 81u);
+    H5Sclose(sp);
+    H5Dclose(d);
+    H5Fclose(f);
+  }
   EXPECT_GT(fs::file_size(dir / "thesis_spheres_curves.png"), 10000u);
   std::ifstream csv(dir / "thesis_spheres_curves.csv");
   std::string line;

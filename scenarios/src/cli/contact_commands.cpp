@@ -47,6 +47,7 @@ struct EvalOutput {
   fc::ContactPatch patch;
   fc::NormalProblem gap;  // the quadratic gap A x^2 + B y^2, for models that need it (MIM)
   fc::TangentialSolution forces;
+  fc::KalkerCoefficients c;  // C_ij used (with K_ij applied), table or fit per the options
 };
 
 // Elliptic patch from A, B (Hertz) or from a, b (curvatures recovered from Hertz so that
@@ -90,7 +91,8 @@ fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) 
                             in.a >= in.b ? large : small);
 }
 
-EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model) {
+EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,
+                    fc::CoefficientSource source) {
   const fc::Material body1{in.g1, in.nu1}, body2{in.g2, in.nu2};
   body1.validate("--g1/--nu1");
   body2.validate("--g2/--nu2");
@@ -112,6 +114,7 @@ EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model) {
   if (!(in.mu >= 0.0))
     throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
   out.forces = model.solve(p);
+  out.c = fc::linear_creep_stiffness(p, source).c;
   return out;
 }
 
@@ -135,12 +138,15 @@ void print_json(const EvalInput& in, const EvalOutput& out) {
   fmt::print(
       "{{\"model\": \"{}\", \"semi_axis_x\": {}, \"semi_axis_y\": {}, \"normal_force\": {}, "
       "\"peak_pressure\": {}, \"force_x\": {}, \"force_y\": {}, \"moment_z\": {}, "
-      "\"adhesion_fraction\": {}, \"units\": \"SI (m, N, Pa, N m)\", "
+      "\"adhesion_fraction\": {}, \"c11\": {}, \"c22\": {}, \"c23\": {}, \"c33\": {}, "
+      "\"units\": \"SI (m, N, Pa, N m)\", "
       "\"convention\": \"forces and moment on the wheel from the rail\"}}\n",
       in.model, json_number(out.patch.semi_axis_x), json_number(out.patch.semi_axis_y),
       json_number(out.patch.normal_force), json_number(out.patch.peak_pressure),
       json_number(out.forces.force_x), json_number(out.forces.force_y),
-      json_number(out.forces.moment_z), json_number(out.forces.adhesion_fraction));
+      json_number(out.forces.moment_z), json_number(out.forces.adhesion_fraction),
+      json_number(out.c.c11), json_number(out.c.c22), json_number(out.c.c23),
+      json_number(out.c.c33));
 }
 
 std::vector<std::string> split_csv(const std::string& line) {
@@ -157,7 +163,8 @@ std::vector<std::string> split_csv(const std::string& line) {
 }
 
 // --batch: CSV with a header on stdin; each row overrides the command-line values.
-int run_batch(const EvalInput& defaults, const fc::ModelOptions& options) {
+int run_batch(const EvalInput& defaults, const fc::ModelOptions& options,
+              fc::CoefficientSource source) {
   std::string line;
   if (!std::getline(std::cin, line))
     throw std::invalid_argument("--batch: empty standard input (expected a CSV header)");
@@ -222,7 +229,7 @@ int run_batch(const EvalInput& defaults, const fc::ModelOptions& options) {
     if (it == models.end())
       it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
     try {
-      const EvalOutput out = evaluate(in, *it->second);
+      const EvalOutput out = evaluate(in, *it->second, source);
       fmt::print("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row, in.model,
                  out.patch.semi_axis_x, out.patch.semi_axis_y, out.patch.peak_pressure,
                  out.forces.force_x, out.forces.force_y, out.forces.moment_z,
@@ -307,9 +314,11 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
         input.k23 = k.k23;
         input.k33 = k.k33;
       }
-      if (*batch) return run_batch(input, options);
+      const fc::CoefficientSource source = fc::coefficient_source_from_name(
+          fc::option_string(options, "coefficients", "kalker_table"));
+      if (*batch) return run_batch(input, options, source);
       const auto model = fc::make_tangential_model(input.model, options);
-      print_json(input, evaluate(input, *model));
+      print_json(input, evaluate(input, *model, source));
       return kExitOk;
     };
   });
