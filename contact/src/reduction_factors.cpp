@@ -74,6 +74,14 @@ KijTable::KijTable(std::vector<std::string> axis_names, std::vector<std::vector<
 }
 
 ReductionFactors KijTable::at(const std::map<std::string, double>& point) const {
+  for (const auto& kv : point) {
+    if (std::find(names_.begin(), names_.end(), kv.first) == names_.end()) {
+      std::string list;
+      for (const std::string& n : names_) list += (list.empty() ? "" : ", ") + n;
+      throw std::invalid_argument(
+          fmt::format("K_ij table: unknown axis '{}'; the table's axes: {}", kv.first, list));
+    }
+  }
   std::vector<double> values(names_.size());
   for (std::size_t i = 0; i < names_.size(); ++i) {
     const auto it = point.find(names_[i]);
@@ -84,6 +92,16 @@ ReductionFactors KijTable::at(const std::map<std::string, double>& point) const 
     values[i] = it->second;
   }
   return at(values);
+}
+
+ReductionFactors KijTable::at_patch(const ContactPatch& patch,
+                                    std::map<std::string, double> point) const {
+  for (const std::string& name : names_) {
+    if (point.count(name) != 0) continue;
+    if (name == "normal_force") point[name] = patch.normal_force;
+    if (name == "peak_pressure") point[name] = patch.peak_pressure;
+  }
+  return at(point);
 }
 
 ReductionFactors KijTable::at(const std::vector<double>& point) const {

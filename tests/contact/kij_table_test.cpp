@@ -55,6 +55,10 @@ TEST(kij_table, hdf5_round_trip_and_interpolation) {
   EXPECT_NEAR(c.k11, k11_of(150e3, 0.0), kExact);
   EXPECT_EQ(t.clamped_queries(), 1);
   EXPECT_THROW((void)t.at({{"normal_force", 1.0}}), std::invalid_argument);
+  // at_patch fills normal_force from the patch; the other axes must still be given.
+  const fc::ContactPatch patch = fc::elliptic_patch(6e-3, 5e-3, 90e3);
+  EXPECT_NEAR(t.at_patch(patch, {{"layer_thickness", 50e-6}}).k11, k11_of(90e3, 50e-6), kExact);
+  EXPECT_THROW((void)t.at_patch(patch), std::invalid_argument);
 }
 
 TEST(kij_table, bad_files_and_tables) {

@@ -167,5 +167,10 @@ TEST(contact_cli_eval, kij_table_scales_linear_force) {
   ASSERT_EQ(plain.code, 0) << plain.out;
   ASSERT_EQ(reduced.code, 0) << reduced.out;
   EXPECT_NEAR(json_field(reduced.out, "force_x") / json_field(plain.out, "force_x"), 0.7, 1e-9);
+  // Without --kij-at the normal_force axis takes the patch's load (73575 N).
+  const CliRun from_patch = run(common + "--kij-table '" + table + "'");
+  ASSERT_EQ(from_patch.code, 0) << from_patch.out;
+  EXPECT_NEAR(json_field(from_patch.out, "force_x") / json_field(plain.out, "force_x"),
+              0.8 - 0.2 * (73575.0 - 5e4) / 5e4, 1e-9);
   EXPECT_EQ(run(common + "--kij-table '" + table + "' --kij-at load=1").code, 2);
 }

@@ -41,6 +41,10 @@ struct EvalInput {
   double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
   std::string model = "fastsim";
   double k11 = 1.0, k22 = 1.0, k23 = 1.0, k33 = 1.0;
+  // K_ij table (overrides k11..k33): looked up at table_point, normal_force and peak_pressure
+  // axes filled from the patch when not given.
+  std::shared_ptr<const fc::KijTable> table;
+  std::map<std::string, double> table_point;
 };
 
 struct EvalOutput {
@@ -111,6 +115,7 @@ EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,
   p.body1 = body1;
   p.body2 = body2;
   p.reduction = {in.k11, in.k22, in.k23, in.k33};
+  if (in.table) p.reduction = in.table->at_patch(out.patch, in.table_point);
   if (!(in.mu >= 0.0))
     throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
   out.forces = model.solve(p);
@@ -290,7 +295,9 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   eval->add_option("--k33", in->k33, "reduction factor K33")->capture_default_str();
   eval->add_option("--kij-table", *kij_table,
                    "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
-  eval->add_option("--kij-at", *kij_at, "table coordinate axis=value (repeatable)");
+  eval->add_option("--kij-at", *kij_at,
+                   "table coordinate axis=value (repeatable); normal_force and peak_pressure "
+                   "default to the patch's");
   eval->add_flag("--batch", *batch,
                  "read cases as CSV (header = option names with '_') on stdin, "
                  "write one CSV row per case");
@@ -299,20 +306,14 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       const fc::ModelOptions options = parse_options(*opts);
       EvalInput input = *in;
       if (!kij_table->empty()) {
-        const fc::KijTable table = fc::KijTable::read_hdf5(*kij_table);
-        std::map<std::string, double> point;
+        input.table = std::make_shared<const fc::KijTable>(fc::KijTable::read_hdf5(*kij_table));
         for (const auto& kv : parse_options(*kij_at)) {
           try {
-            point[kv.first] = std::stod(kv.second);
+            input.table_point[kv.first] = std::stod(kv.second);
           } catch (const std::exception&) {
             throw std::invalid_argument(fmt::format("--kij-at {}: not a number", kv.first));
           }
         }
-        const fc::ReductionFactors k = table.at(point);
-        input.k11 = k.k11;
-        input.k22 = k.k22;
-        input.k23 = k.k23;
-        input.k33 = k.k33;
       }
       const fc::CoefficientSource source = fc::coefficient_source_from_name(
           fc::option_string(options, "coefficients", "kalker_table"));

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/contact_patch.hpp"
+
 namespace ferro::contact {
 
 struct ReductionFactors {
@@ -43,10 +45,15 @@ class KijTable {
   [[nodiscard]] const std::vector<std::vector<double>>& axes() const { return axes_; }
 
   /// Multilinear interpolation at the point given by axis name -> value (every axis needed;
-  /// std::invalid_argument names a missing axis). Values outside an axis are clamped.
+  /// std::invalid_argument names a missing or unknown axis). Values outside an axis are clamped.
   [[nodiscard]] ReductionFactors at(const std::map<std::string, double>& point) const;
   /// Same with values in axis order.
   [[nodiscard]] ReductionFactors at(const std::vector<double>& point) const;
+
+  /// Same, filling the axes "normal_force" [N] and "peak_pressure" [Pa] from the patch when the
+  /// table has them and `point` does not give them.
+  [[nodiscard]] ReductionFactors at_patch(const ContactPatch& patch,
+                                          std::map<std::string, double> point = {}) const;
 
   [[nodiscard]] long clamped_queries() const { return clamped_; }
 
