@@ -9,6 +9,8 @@
 // c = sqrt(ab). Parabolic pressure p = 2F/(pi a b) (1 - x^2/a^2 - y^2/b^2) (simplified theory);
 // on semi-Hertz strips each strip gets the parabola with its own load,
 // p = (3 pi/8) p0_i (1 - (x - xc)^2/a_i^2).
+// Rolling: material passes through the patch from the leading edge x = +a(y) to the trailing edge
+// x = -a(y) (the wheel rolls towards +x); adhesion is at the leading edge.
 // Known deviations: tractions are evaluated at element centres, the rigid-slip increment between
 // two centres being integrated exactly (so adhesion tractions are exact in x and the linear
 // slopes F_x/xi_x, F_y/xi_y, F_y/phi converge as 1/(2 my^2)); the moment M_z is FASTSIM's own
