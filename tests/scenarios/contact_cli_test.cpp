@@ -173,4 +173,11 @@ TEST(contact_cli_eval, kij_table_scales_linear_force) {
   EXPECT_NEAR(json_field(from_patch.out, "force_x") / json_field(plain.out, "force_x"),
               0.8 - 0.2 * (73575.0 - 5e4) / 5e4, 1e-9);
   EXPECT_EQ(run(common + "--kij-table '" + table + "' --kij-at load=1").code, 2);
+  // K23 follows K22 unless given (thesis 4.2.4): the spin-induced F_y scales with --k22.
+  const std::string spin =
+      "contact eval --model kalker_linear --a 0.0065 --b 0.0049 --fn 73575 "
+      "--mu 0.3 --phi 0.1 ";
+  const CliRun s1 = run(spin), s2 = run(spin + "--k22 0.56"), s3 = run(spin + "--k22 0.56 --k23 1");
+  EXPECT_NEAR(json_field(s2.out, "force_y") / json_field(s1.out, "force_y"), 0.56, 1e-9);
+  EXPECT_NEAR(json_field(s3.out, "force_y") / json_field(s1.out, "force_y"), 1.0, 1e-9);
 }

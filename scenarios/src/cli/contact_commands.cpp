@@ -40,7 +40,7 @@ struct EvalInput {
   double mu = kNaN;
   double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
   std::string model = "fastsim";
-  double k11 = 1.0, k22 = 1.0, k23 = 1.0, k33 = 1.0;
+  double k11 = 1.0, k22 = 1.0, k23 = kNaN, k33 = 1.0;  // K23 unset: K23 = K22 (Toumi 4.2.4)
   // K_ij table (overrides k11..k33): looked up at table_point, normal_force and peak_pressure
   // axes filled from the patch when not given.
   std::shared_ptr<const fc::KijTable> table;
@@ -114,7 +114,7 @@ EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,
   p.friction = in.mu;
   p.body1 = body1;
   p.body2 = body2;
-  p.reduction = {in.k11, in.k22, in.k23, in.k33};
+  p.reduction = {in.k11, in.k22, std::isnan(in.k23) ? in.k22 : in.k23, in.k33};
   if (in.table) p.reduction = in.table->at_patch(out.patch, in.table_point);
   if (!(in.mu >= 0.0))
     throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
@@ -291,7 +291,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
                    "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
   eval->add_option("--k11", in->k11, "reduction factor K11")->capture_default_str();
   eval->add_option("--k22", in->k22, "reduction factor K22")->capture_default_str();
-  eval->add_option("--k23", in->k23, "reduction factor K23")->capture_default_str();
+  eval->add_option("--k23", in->k23, "reduction factor K23 (default: K22, as in the thesis 4.2.4)");
   eval->add_option("--k33", in->k33, "reduction factor K33")->capture_default_str();
   eval->add_option("--kij-table", *kij_table,
                    "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");

@@ -189,6 +189,8 @@ ContactCase load_contact_case(const std::string& path) {
       c.reduction = contact::ReductionFactors::uniform(positive(k["k"], path, "reduction.k"));
     if (k["k11"]) c.reduction.k11 = positive(k["k11"], path, "reduction.k11");
     if (k["k22"]) c.reduction.k22 = positive(k["k22"], path, "reduction.k22");
+    // K23 = K22 unless given (Toumi 2016, section 4.2.4).
+    if (k["k22"] && !k["k23"] && !k["k"]) c.reduction.k23 = c.reduction.k22;
     if (k["k23"]) c.reduction.k23 = positive(k["k23"], path, "reduction.k23");
     if (k["k33"]) c.reduction.k33 = positive(k["k33"], path, "reduction.k33");
   }
