@@ -75,9 +75,19 @@ std::unique_ptr<NormalContactModel> make_normal_model(std::string_view name,
     return std::make_unique<HertzModel>();
   }
   if (name == "semi_hertz") {
-    check_option_keys(name, options, {"strips"});
+    check_option_keys(name, options, {"strips", "curvature"});
     SemiHertzOptions o;
     o.strips = option_int(options, "strips", o.strips);
+    const std::string curvature = option_string(options, "curvature", "fit");
+    if (curvature == "fit") {
+      o.curvature = SemiHertzOptions::Curvature::kFit;
+    } else if (curvature == "three_point") {
+      o.curvature = SemiHertzOptions::Curvature::kThreePoint;
+    } else {
+      throw std::invalid_argument(fmt::format(
+          "semi_hertz option 'curvature': unknown value '{}'; allowed: fit, three_point",
+          curvature));
+    }
     return std::make_unique<SemiHertzModel>(o);
   }
   throw std::invalid_argument(fmt::format("unknown normal contact model '{}'; allowed: {}", name,

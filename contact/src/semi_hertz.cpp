@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -100,9 +101,43 @@ std::pair<double, double> penetrated_span(const NormalProblem& p, double z_min, 
   return {lo, hi};
 }
 
+// Least-squares parabola z = c0 + c1 t + B t^2 (t = y - y[center]) through samples lo..hi;
+// returns B (NaN if the system is singular).
+double least_squares_curvature(const NormalProblem& p, std::size_t center, std::size_t lo,
+                               std::size_t hi) {
+  double m[3][4] = {};  // normal equations [sum t^(i+j) | sum z t^i]
+  for (std::size_t j = lo; j <= hi; ++j) {
+    const double t = p.gap_y[j] - p.gap_y[center];
+    const double z = p.gap_z[j] - p.gap_z[center];
+    const double pw[5] = {1.0, t, t * t, t * t * t, t * t * t * t};
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) m[r][c] += pw[r + c];
+      m[r][3] += z * pw[r];
+    }
+  }
+  // Gaussian elimination with partial pivoting.
+  for (int c = 0; c < 3; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < 3; ++r) {
+      if (std::abs(m[r][c]) > std::abs(m[piv][c])) piv = r;
+    }
+    for (int k = 0; k < 4; ++k) std::swap(m[c][k], m[piv][k]);
+    if (m[c][c] == 0.0) return std::numeric_limits<double>::quiet_NaN();
+    for (int r = c + 1; r < 3; ++r) {
+      const double f = m[r][c] / m[c][c];
+      for (int k = c; k < 4; ++k) m[r][k] -= f * m[c][k];
+    }
+  }
+  // Back substitution is only needed for the last unknown (B).
+  return m[2][3] / m[2][2];
+}
+
 }  // namespace
 
 void SemiHertzOptions::validate() const {
+  if (curvature != Curvature::kFit && curvature != Curvature::kThreePoint) {
+    throw std::invalid_argument("semi_hertz.curvature: must be fit or three_point");
+  }
   if (strips < 4 || strips > 100000) {
     throw std::invalid_argument(
         fmt::format("semi_hertz.strips: must lie in [4, 100000], got {}", strips));
@@ -137,7 +172,14 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
   // Transverse curvature at the deepest point: second divided difference = coefficient of y^2.
   const double y0 = p.gap_y[jmin - 1], y1 = p.gap_y[jmin], y2 = p.gap_y[jmin + 1];
   const double z0 = p.gap_z[jmin - 1], z1 = p.gap_z[jmin], z2 = p.gap_z[jmin + 1];
-  const double b_ref = ((z2 - z1) / (y2 - y1) - (z1 - z0) / (y1 - y0)) / (y2 - y0);
+  double b_ref = ((z2 - z1) / (y2 - y1) - (z1 - z0) / (y1 - y0)) / (y2 - y0);
+  if (options.curvature == SemiHertzOptions::Curvature::kFit) {
+    // First estimate from the 21 samples around the minimum (robust to sampling noise).
+    const std::size_t lo = jmin >= 10 ? jmin - 10 : 0;
+    const std::size_t hi = std::min(jmin + 10, p.gap_y.size() - 1);
+    const double b_window = least_squares_curvature(p, jmin, lo, hi);
+    if (b_window > 0.0 && std::isfinite(b_window)) b_ref = b_window;
+  }
   if (!(b_ref > 0.0)) {
     throw std::invalid_argument(fmt::format(
         "semi_hertz: the gap has no positive transverse curvature at its minimum (B = {} 1/m)",
@@ -146,21 +188,39 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
   NormalSolution sol;
   if (p.normal_force == 0.0) return sol;
 
-  // Reference Hertz ellipse and compensation (eqs. 18-21).
-  const HertzSolution ref = hertz_solve(p.curvature_x, b_ref, p.normal_force, mat.contact_modulus);
-  const double l = ref.semi_axis_y / ref.semi_axis_x;
-  const double ac = b_ref * l * l;                        // A_c (eq. 19)
-  const double kp = ref.peak_pressure / ref.semi_axis_x;  // p0_i / a_i
-  double h0 = ref.semi_axis_y * ref.semi_axis_y * b_ref;  // eq. (21), exact for a quadric gap
-
-  // Pass 1 over the whole sampled range, then refine the strips on the penetrated span.
-  StripGrid grid = make_grid(p, z_min, p.gap_y.front(), p.gap_y.back(), options.strips);
-  h0 = solve_penetration(grid, p.normal_force, ac, kp, h0);
-  for (int pass = 0; pass < 2; ++pass) {
-    const auto [lo, hi] = penetrated_span(p, z_min, h0 * 1.0000001);
-    if (!(hi > lo)) break;
-    grid = make_grid(p, z_min, lo, hi, options.strips);
+  // Reference Hertz ellipse and compensation (eqs. 18-21), then the virtual penetration h0 from
+  // the load on strips refined over the penetrated span.
+  double ac = 0.0, kp = 0.0, h0 = 0.0;
+  StripGrid grid;
+  auto solve_with = [&](double b) {
+    const HertzSolution ref = hertz_solve(p.curvature_x, b, p.normal_force, mat.contact_modulus);
+    const double l = ref.semi_axis_y / ref.semi_axis_x;
+    ac = b * l * l;                              // A_c (eq. 19)
+    kp = ref.peak_pressure / ref.semi_axis_x;    // p0_i / a_i
+    h0 = ref.semi_axis_y * ref.semi_axis_y * b;  // eq. (21), exact for a quadric gap
+    grid = make_grid(p, z_min, p.gap_y.front(), p.gap_y.back(), options.strips);
     h0 = solve_penetration(grid, p.normal_force, ac, kp, h0);
+    for (int pass = 0; pass < 2; ++pass) {
+      const auto [lo, hi] = penetrated_span(p, z_min, h0 * 1.0000001);
+      if (!(hi > lo)) break;
+      grid = make_grid(p, z_min, lo, hi, options.strips);
+      h0 = solve_penetration(grid, p.normal_force, ac, kp, h0);
+    }
+  };
+  solve_with(b_ref);
+  if (options.curvature == SemiHertzOptions::Curvature::kFit) {
+    // Least-squares parabola z = c0 + c1 t + B t^2 (t = y - y_min) over the samples of the
+    // deepest lobe (z - z_min < h0), then solve again with that B.
+    std::size_t lo = jmin, hi = jmin;
+    while (lo > 0 && p.gap_z[lo - 1] - z_min < h0) --lo;
+    while (hi + 1 < p.gap_z.size() && p.gap_z[hi + 1] - z_min < h0) ++hi;
+    if (hi - lo + 1 >= 5) {
+      const double b_fit = least_squares_curvature(p, jmin, lo, hi);
+      if (b_fit > 0.0 && std::isfinite(b_fit)) {
+        b_ref = b_fit;
+        solve_with(b_ref);
+      }
+    }
   }
 
   // Strips and lobes.

@@ -47,7 +47,8 @@ class NormalContactModel {
 /// Names accepted by make_normal_model: "hertz", "semi_hertz".
 [[nodiscard]] std::vector<std::string> normal_model_names();
 /// Creates a model by name. Throws std::invalid_argument for an unknown name or option, with
-/// the allowed values in the message. Options: semi_hertz: "strips" (default 200).
+/// the allowed values in the message. Options: semi_hertz: "strips" (default 200), "curvature"
+/// (fit | three_point, default fit).
 [[nodiscard]] std::unique_ptr<NormalContactModel> make_normal_model(
     std::string_view name, const ModelOptions& options = {});
 
