@@ -50,31 +50,28 @@ StripGrid make_grid(const NormalProblem& p, double z_min, double y_lo, double y_
   return g;
 }
 
-// Load carried by the strips for the virtual penetration h0: F = (pi/2) Kp sum a_i^2 dy with
-// a_i^2 = (h0 - z_i)/A_c (eqs. 22-23 with p0_i = Kp a_i).
-double strip_load(const StripGrid& g, double h0, double compensated_curvature, double kp) {
-  double sum = 0.0;
-  for (double z : g.gap) sum += std::max(h0 - z, 0.0);
-  return 0.5 * kPi * kp * sum / compensated_curvature * g.dy;
-}
-
-double solve_penetration(const StripGrid& g, double target, double ac, double kp, double h_guess) {
-  double lo = 0.0, hi = std::max(h_guess, 1e-12);
-  int guard = 0;
-  while (strip_load(g, hi, ac, kp) < target) {
-    lo = hi;
-    hi *= 2.0;
-    if (++guard > 200)
-      throw std::runtime_error("semi_hertz: cannot bracket the virtual penetration");
+// Load carried by the strips for the virtual penetration h0 (eqs. 22-23 with p0_i = Kp a_i):
+// F = (pi/2) Kp sum a_i^2 dy, a_i^2 = (h0 - z_i)/A_c.
+// F(h0) = c sum_i max(h0 - z_i, 0) is piecewise linear and increasing in h0: sort the strip gaps
+// and solve exactly on the right piece.
+double solve_penetration(const StripGrid& g, double target, double compensated_curvature, double kp,
+                         std::vector<double>& scratch) {
+  const double c = 0.5 * kPi * kp / compensated_curvature * g.dy;
+  scratch.clear();
+  for (double z : g.gap) {
+    if (std::isfinite(z)) scratch.push_back(z);
   }
-  for (int iter = 0; iter < 100 && hi - lo > 1e-15 * hi; ++iter) {
-    const double mid = 0.5 * (lo + hi);
-    if (strip_load(g, mid, ac, kp) < target)
-      lo = mid;
-    else
-      hi = mid;
+  if (scratch.empty()) throw std::runtime_error("semi_hertz: no strip inside the sampled gap");
+  std::sort(scratch.begin(), scratch.end());
+  const double need = target / c;  // sum_i (h0 - z_i) over the penetrated strips
+  double sum_z = 0.0;
+  for (std::size_t k = 0; k < scratch.size(); ++k) {
+    sum_z += scratch[k];
+    const double n = static_cast<double>(k + 1);
+    const double h = (need + sum_z) / n;  // h0 if exactly strips 0..k are penetrated
+    if (k + 1 == scratch.size() || h <= scratch[k + 1]) return h;
   }
-  return 0.5 * (lo + hi);
+  return (need + sum_z) / static_cast<double>(scratch.size());
 }
 
 // Lateral span where the relative gap is below h0 (from the samples, linear crossings).
@@ -192,6 +189,7 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
   // the load on strips refined over the penetrated span.
   double ac = 0.0, kp = 0.0, h0 = 0.0;
   StripGrid grid;
+  std::vector<double> scratch;
   auto solve_with = [&](double b) {
     const HertzSolution ref = hertz_solve(p.curvature_x, b, p.normal_force, mat.contact_modulus);
     const double l = ref.semi_axis_y / ref.semi_axis_x;
@@ -199,12 +197,12 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
     kp = ref.peak_pressure / ref.semi_axis_x;    // p0_i / a_i
     h0 = ref.semi_axis_y * ref.semi_axis_y * b;  // eq. (21), exact for a quadric gap
     grid = make_grid(p, z_min, p.gap_y.front(), p.gap_y.back(), options.strips);
-    h0 = solve_penetration(grid, p.normal_force, ac, kp, h0);
+    h0 = solve_penetration(grid, p.normal_force, ac, kp, scratch);
     for (int pass = 0; pass < 2; ++pass) {
       const auto [lo, hi] = penetrated_span(p, z_min, h0 * 1.0000001);
       if (!(hi > lo)) break;
       grid = make_grid(p, z_min, lo, hi, options.strips);
-      h0 = solve_penetration(grid, p.normal_force, ac, kp, h0);
+      h0 = solve_penetration(grid, p.normal_force, ac, kp, scratch);
     }
   };
   solve_with(b_ref);
