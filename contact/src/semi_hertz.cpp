@@ -195,7 +195,7 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
     const double l = ref.semi_axis_y / ref.semi_axis_x;
     ac = b * l * l;                              // A_c (eq. 19)
     kp = ref.peak_pressure / ref.semi_axis_x;    // p0_i / a_i
-    h0 = ref.semi_axis_y * ref.semi_axis_y * b;  // eq. (21), exact for a quadric gap
+    // h0 = b^2 B (eq. 21) for a quadric gap; in general h0 follows from the load:
     grid = make_grid(p, z_min, p.gap_y.front(), p.gap_y.back(), options.strips);
     h0 = solve_penetration(grid, p.normal_force, ac, kp, scratch);
     for (int pass = 0; pass < 2; ++pass) {
