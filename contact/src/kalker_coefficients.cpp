@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace ferro::contact {
@@ -104,8 +105,34 @@ double in_poisson(const Column3& c, double nu) {
   return l0 * c[0] + l1 * c[1] + l2 * c[2];
 }
 
-double lookup(const std::array<Column3, kRows>& table, double t, double nu) {
-  if (t <= row_parameter(0)) return in_poisson(table[0], nu);
+// Below a/b = 0.1: Kalker's g -> 0 asymptotes (annex A.2 first row), see the header.
+enum class Coef { k11, k22, k23, k33 };
+double below_table(const std::array<Column3, kRows>& table, Coef which, double g, double nu) {
+  constexpr double kPi2 = 9.869604401089358;  // pi^2
+  constexpr double g1 = 0.1;
+  const double node = in_poisson(table[0], nu);
+  switch (which) {
+    case Coef::k11: {
+      const double lim = kPi2 / (4.0 * (1.0 - nu));
+      return lim + (node - lim) * g / g1;
+    }
+    case Coef::k22: {
+      const double lim = kPi2 / 4.0;
+      return lim + (node - lim) * g / g1;
+    }
+    case Coef::k23:
+      return node * std::sqrt(g / g1);
+    case Coef::k33: {
+      const double lim = kPi2 / (16.0 * (1.0 - nu));
+      return (lim + (g1 * node - lim) * g / g1) / g;
+    }
+  }
+  return node;
+}
+
+double lookup(const std::array<Column3, kRows>& table, Coef which, double t, double nu) {
+  if (t < row_parameter(0)) return below_table(table, which, t, nu);
+  if (t == row_parameter(0)) return in_poisson(table[0], nu);
   if (t >= row_parameter(kRows - 1)) return in_poisson(table[kRows - 1], nu);
   int i = 0;
   while (i < kRows - 2 && t > row_parameter(i + 1)) ++i;
@@ -126,8 +153,45 @@ KalkerCoefficients kalker_coefficients_table(double a, double b, double poisson)
         fmt::format("kalker_coefficients_table: poisson must lie in [0, 0.5], got {}", poisson));
   }
   const double t = a <= b ? a / b : 2.0 - b / a;
-  return KalkerCoefficients{lookup(kC11, t, poisson), lookup(kC22, t, poisson),
-                            lookup(kC23, t, poisson), lookup(kC33, t, poisson)};
+  return KalkerCoefficients{lookup(kC11, Coef::k11, t, poisson), lookup(kC22, Coef::k22, t, poisson),
+                            lookup(kC23, Coef::k23, t, poisson), lookup(kC33, Coef::k33, t, poisson)};
+}
+
+KalkerCoefficients kalker_coefficients_voco_fit(double curvature_ratio) {
+  const double x = curvature_ratio;
+  if (!(x > 0.0) || !std::isfinite(x)) {
+    throw std::invalid_argument(fmt::format(
+        "kalker_coefficients_voco_fit: curvature ratio X = A/B must be finite and > 0, got {}", x));
+  }
+  KalkerCoefficients c;
+  c.c11 = 3.3 + 0.89 / (0.085 + x);
+  c.c22 = 2.46 + 1.34 / (0.109 + x);
+  c.c23 = 0.18 + 1.29 / std::pow(0.002 + x, 0.63);
+  c.c33 = std::numeric_limits<double>::quiet_NaN();
+  return c;
+}
+
+CoefficientSource coefficient_source_from_name(const std::string& name) {
+  if (name == "kalker_table") return CoefficientSource::kKalkerTable;
+  if (name == "voco_fit") return CoefficientSource::kVocoFit;
+  throw std::invalid_argument(fmt::format(
+      "coefficients: unknown source '{}'; allowed: kalker_table, voco_fit", name));
+}
+
+const char* coefficient_source_name(CoefficientSource source) {
+  return source == CoefficientSource::kVocoFit ? "voco_fit" : "kalker_table";
+}
+
+KalkerCoefficients kalker_coefficients(CoefficientSource source, double a, double b,
+                                       double poisson, double curvature_ratio) {
+  KalkerCoefficients c = kalker_coefficients_table(a, b, poisson);
+  if (source == CoefficientSource::kVocoFit) {
+    const KalkerCoefficients fit = kalker_coefficients_voco_fit(curvature_ratio);
+    c.c11 = fit.c11;
+    c.c22 = fit.c22;
+    c.c23 = fit.c23;
+  }
+  return c;
 }
 
 }  // namespace ferro::contact

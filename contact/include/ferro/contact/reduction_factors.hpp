@@ -1,0 +1,76 @@
+#pragma once
+// Reduction factors K_ij applied to Kalker's coefficients, C_ij,r = K_ij C_ij (Toumi eq. 156),
+// either constants or interpolated from an HDF5 table (layout: docs/KIJ_TABLE.md).
+//
+// References: Toumi (2016) eq. (156), section 3 (K_ij from FE creep curves), Table 4.1.
+// Known deviations: the table is interpolated multilinearly and clamped at its axis ends
+// (queries outside the axes are counted in KijTable::clamped_queries()).
+
+#include <atomic>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/contact_patch.hpp"
+
+namespace ferro::contact {
+
+struct ReductionFactors {
+  double k11 = 1.0;  ///< longitudinal [-]
+  double k22 = 1.0;  ///< lateral [-]
+  double k23 = 1.0;  ///< lateral/spin coupling [-]
+  double k33 = 1.0;  ///< spin [-]
+  /// Throws std::invalid_argument naming the field when a factor is not finite or not > 0.
+  void validate(const char* where = "reduction") const;
+  /// K11 = K22 = K23 = K33 = k.
+  static ReductionFactors uniform(double k) { return {k, k, k, k}; }
+};
+
+/// K_ij tabulated over named axes (e.g. "normal_force" [N], "layer_thickness" [m]).
+class KijTable {
+ public:
+  /// Reads a table written in the docs/KIJ_TABLE.md layout. Throws std::invalid_argument
+  /// (file, dataset, reason) on a missing or inconsistent file.
+  static KijTable read_hdf5(const std::string& path);
+  /// Writes the table in the same layout (for the FE module and the tests).
+  void write_hdf5(const std::string& path) const;
+
+  /// Builds a table in memory. values_* are row-major over axes in the given order, one value per
+  /// grid node; k33 may be empty (then K33 = K22 is not assumed: K33 = 1).
+  KijTable(std::vector<std::string> axis_names, std::vector<std::vector<double>> axes,
+           std::vector<double> k11, std::vector<double> k22, std::vector<double> k23,
+           std::vector<double> k33 = {});
+
+  [[nodiscard]] const std::vector<std::string>& axis_names() const { return names_; }
+  [[nodiscard]] const std::vector<std::vector<double>>& axes() const { return axes_; }
+
+  /// Multilinear interpolation at the point given by axis name -> value (every axis needed;
+  /// std::invalid_argument names a missing or unknown axis). Values outside an axis are clamped.
+  [[nodiscard]] ReductionFactors at(const std::map<std::string, double>& point) const;
+  /// Same with values in axis order.
+  [[nodiscard]] ReductionFactors at(const std::vector<double>& point) const;
+
+  /// Same, filling the axes "normal_force" [N] and "peak_pressure" [Pa] from the patch when the
+  /// table has them and `point` does not give them.
+  [[nodiscard]] ReductionFactors at_patch(const ContactPatch& patch,
+                                          std::map<std::string, double> point = {}) const;
+
+  [[nodiscard]] long clamped_queries() const { return clamped_; }
+
+  KijTable(const KijTable& other)
+      : names_(other.names_),
+        axes_(other.axes_),
+        k11_(other.k11_),
+        k22_(other.k22_),
+        k23_(other.k23_),
+        k33_(other.k33_),
+        clamped_(other.clamped_.load()) {}
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<std::vector<double>> axes_;
+  std::vector<double> k11_, k22_, k23_, k33_;
+  mutable std::atomic<long> clamped_{0};
+};
+
+}  // namespace ferro::contact

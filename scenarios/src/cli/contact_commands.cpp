@@ -1,0 +1,408 @@
+// `ferrodyn contact eval | curve | patch`: the contact layer from the command line.
+//
+// Units: SI everywhere (m, N, Pa, 1/m for spin). Sign convention: creepages are the rigid slip
+// of the wheel relative to the rail over the rolling speed; forces and moment are those of the
+// rail on the wheel (F_x = -G a b C11 xi_x in the linear range).
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/elliptic_integrals.hpp"
+#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/tangential_model.hpp"
+#include "ferro/scenarios/cli.hpp"
+#include "ferro/scenarios/contact_analysis.hpp"
+#include "ferro/scenarios/contact_case.hpp"
+
+namespace ferro::cli {
+namespace {
+
+namespace fc = ferro::contact;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One Hertzian evaluation, as given on the command line or in a --batch CSV row.
+struct EvalInput {
+  double a = kNaN, b = kNaN;                            // semi-axes [m]
+  double curvature_x = kNaN, curvature_y = kNaN;        // A, B [1/m]
+  double fn = kNaN;                                     // [N]
+  double g1 = 82e9, nu1 = 0.28, g2 = 82e9, nu2 = 0.28;  // [Pa], [-] (steel by default)
+  double mu = kNaN;
+  double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
+  std::string model = "fastsim";
+  double k11 = 1.0, k22 = 1.0, k23 = kNaN, k33 = 1.0;  // K23 unset: K23 = K22 (Toumi 4.2.4)
+  // K_ij table (overrides k11..k33): looked up at table_point, normal_force and peak_pressure
+  // axes filled from the patch when not given.
+  std::shared_ptr<const fc::KijTable> table;
+  std::map<std::string, double> table_point;
+};
+
+struct EvalOutput {
+  fc::ContactPatch patch;
+  fc::NormalProblem gap;  // the quadratic gap A x^2 + B y^2, for models that need it (MIM)
+  fc::TangentialSolution forces;
+  fc::KalkerCoefficients c;  // C_ij used (with K_ij applied), table or fit per the options
+};
+
+// Elliptic patch from A, B (Hertz) or from a, b (curvatures recovered from Hertz so that
+// VOCO's fits in A/B can be used).
+fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) {
+  const bool have_ab = std::isfinite(in.a) || std::isfinite(in.b);
+  const bool have_curv = std::isfinite(in.curvature_x) || std::isfinite(in.curvature_y);
+  if (have_ab == have_curv) {
+    throw std::invalid_argument(
+        "give either --a and --b (semi-axes [m]) or --curvature-x and --curvature-y (A, B [1/m])");
+  }
+  if (!(in.fn > 0.0))
+    throw std::invalid_argument(fmt::format("--fn: must be > 0 [N], got {}", in.fn));
+  if (have_curv) {
+    const fc::HertzSolution h =
+        fc::hertz_solve(in.curvature_x, in.curvature_y, in.fn, m.contact_modulus);
+    fc::ContactPatch p;
+    p.semi_axis_x = h.semi_axis_x;
+    p.semi_axis_y = h.semi_axis_y;
+    p.normal_force = in.fn;
+    p.peak_pressure = h.peak_pressure;
+    p.approach = h.approach;
+    p.curvature_x = in.curvature_x;
+    p.curvature_y = in.curvature_y;
+    return p;
+  }
+  if (!(in.a > 0.0) || !(in.b > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("--a, --b: must both be > 0 [m], got {}, {}", in.a, in.b));
+  }
+  // Hertz inverse: ratio from k = minor/major, then A + B = 3 F E(e) / (2 pi E* k^2 major^3).
+  const double major = std::max(in.a, in.b), minor = std::min(in.a, in.b);
+  const double k = minor / major;
+  const double rho = fc::hertz_curvature_ratio(k);
+  const double ee = k < 1.0 ? fc::complete_elliptic_integrals(std::sqrt(1.0 - k * k)).second
+                            : 0.5 * std::numbers::pi;
+  const double sum = 3.0 * in.fn * ee /
+                     (2.0 * std::numbers::pi * m.contact_modulus * k * k * major * major * major);
+  const double small = sum / (1.0 + rho), large = sum - small;
+  return fc::elliptic_patch(in.a, in.b, in.fn, in.a >= in.b ? small : large,
+                            in.a >= in.b ? large : small);
+}
+
+EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,
+                    fc::CoefficientSource source) {
+  const fc::Material body1{in.g1, in.nu1}, body2{in.g2, in.nu2};
+  body1.validate("--g1/--nu1");
+  body2.validate("--g2/--nu2");
+  EvalOutput out;
+  out.patch = make_patch(in, fc::combine(body1, body2));
+  out.gap.curvature_x = out.patch.curvature_x;
+  out.gap.curvature_y = out.patch.curvature_y;
+  out.gap.normal_force = out.patch.normal_force;
+  out.gap.body1 = body1;
+  out.gap.body2 = body2;
+  fc::TangentialProblem p;
+  p.gap = &out.gap;
+  p.patch = &out.patch;
+  p.creepage = {in.xi_x, in.xi_y, in.phi};
+  p.friction = in.mu;
+  p.body1 = body1;
+  p.body2 = body2;
+  p.reduction = {in.k11, in.k22, std::isnan(in.k23) ? in.k22 : in.k23, in.k33};
+  if (in.table) p.reduction = in.table->at_patch(out.patch, in.table_point);
+  if (!(in.mu >= 0.0))
+    throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
+  out.forces = model.solve(p);
+  out.c = fc::linear_creep_stiffness(p, source).c;
+  return out;
+}
+
+fc::ModelOptions parse_options(const std::vector<std::string>& items) {
+  fc::ModelOptions o;
+  for (const std::string& it : items) {
+    const auto eq = it.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw std::invalid_argument(fmt::format("--option '{}': expected key=value", it));
+    }
+    o[it.substr(0, eq)] = it.substr(eq + 1);
+  }
+  return o;
+}
+
+std::string json_number(double v) {
+  return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null";
+}
+
+void print_json(const EvalInput& in, const EvalOutput& out) {
+  fmt::print(
+      "{{\"model\": \"{}\", \"semi_axis_x\": {}, \"semi_axis_y\": {}, \"normal_force\": {}, "
+      "\"peak_pressure\": {}, \"force_x\": {}, \"force_y\": {}, \"moment_z\": {}, "
+      "\"adhesion_fraction\": {}, \"c11\": {}, \"c22\": {}, \"c23\": {}, \"c33\": {}, "
+      "\"units\": \"SI (m, N, Pa, N m)\", "
+      "\"convention\": \"forces and moment on the wheel from the rail\"}}\n",
+      in.model, json_number(out.patch.semi_axis_x), json_number(out.patch.semi_axis_y),
+      json_number(out.patch.normal_force), json_number(out.patch.peak_pressure),
+      json_number(out.forces.force_x), json_number(out.forces.force_y),
+      json_number(out.forces.moment_z), json_number(out.forces.adhesion_fraction),
+      json_number(out.c.c11), json_number(out.c.c22), json_number(out.c.c23),
+      json_number(out.c.c33));
+}
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cell;
+  std::istringstream ss(line);
+  while (std::getline(ss, cell, ',')) {
+    while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
+    while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
+    out.push_back(cell);
+  }
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+// --batch: CSV with a header on stdin; each row overrides the command-line values.
+int run_batch(const EvalInput& defaults, const fc::ModelOptions& options,
+              fc::CoefficientSource source) {
+  std::string line;
+  if (!std::getline(std::cin, line))
+    throw std::invalid_argument("--batch: empty standard input (expected a CSV header)");
+  const std::vector<std::string> header = split_csv(line);
+  const std::map<std::string, double EvalInput::*> numeric = {
+      {"a", &EvalInput::a},
+      {"b", &EvalInput::b},
+      {"curvature_x", &EvalInput::curvature_x},
+      {"curvature_y", &EvalInput::curvature_y},
+      {"fn", &EvalInput::fn},
+      {"g1", &EvalInput::g1},
+      {"nu1", &EvalInput::nu1},
+      {"g2", &EvalInput::g2},
+      {"nu2", &EvalInput::nu2},
+      {"mu", &EvalInput::mu},
+      {"xi_x", &EvalInput::xi_x},
+      {"xi_y", &EvalInput::xi_y},
+      {"phi", &EvalInput::phi},
+      {"k11", &EvalInput::k11},
+      {"k22", &EvalInput::k22},
+      {"k23", &EvalInput::k23},
+      {"k33", &EvalInput::k33}};
+  for (const std::string& h : header) {
+    if (h != "model" && numeric.find(h) == numeric.end()) {
+      throw std::invalid_argument(fmt::format(
+          "--batch: unknown CSV column '{}'; allowed: a, b, curvature_x, curvature_y, fn, g1, nu1, "
+          "g2, nu2, mu, xi_x, xi_y, phi, k11, k22, k23, k33, model",
+          h));
+    }
+  }
+  std::map<std::string, std::unique_ptr<fc::TangentialModel>> models;
+  fmt::print(
+      "row,model,semi_axis_x,semi_axis_y,peak_pressure,force_x,force_y,moment_z,adhesion_"
+      "fraction\n");
+  int row = 0, line_no = 1;
+  while (std::getline(std::cin, line)) {
+    ++line_no;
+    if (line.find_first_not_of(" \r\t") == std::string::npos) continue;
+    const std::vector<std::string> cells = split_csv(line);
+    if (cells.size() != header.size()) {
+      throw std::invalid_argument(fmt::format("--batch: stdin line {}: {} cells, header has {}",
+                                              line_no, cells.size(), header.size()));
+    }
+    EvalInput in = defaults;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (cells[i].empty()) continue;
+      if (header[i] == "model") {
+        in.model = cells[i];
+        continue;
+      }
+      try {
+        std::size_t used = 0;
+        in.*(numeric.at(header[i])) = std::stod(cells[i], &used);
+        if (used != cells[i].size()) throw std::invalid_argument("trailing");
+      } catch (const std::exception&) {
+        throw std::invalid_argument(
+            fmt::format("--batch: stdin line {}, column '{}': not a number: '{}'", line_no,
+                        header[i], cells[i]));
+      }
+    }
+    auto it = models.find(in.model);
+    if (it == models.end())
+      it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
+    try {
+      const EvalOutput out = evaluate(in, *it->second, source);
+      fmt::print("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row, in.model,
+                 out.patch.semi_axis_x, out.patch.semi_axis_y, out.patch.peak_pressure,
+                 out.forces.force_x, out.forces.force_y, out.forces.moment_z,
+                 out.forces.adhesion_fraction);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("--batch: stdin line {}: {}", line_no, e.what()));
+    }
+    ++row;
+  }
+  return kExitOk;
+}
+
+std::string output_path(const std::string& dir, const std::string& name,
+                        const std::string& suffix) {
+  std::filesystem::create_directories(dir);
+  return (std::filesystem::path(dir) / (name + suffix)).string();
+}
+
+}  // namespace
+
+void add_contact_commands(CLI::App& app, VerbHandler& handler) {
+  CLI::App* contact =
+      app.add_subcommand("contact", "Contact models: evaluate, creep curves, patch pictures");
+  contact->require_subcommand(1);
+
+  // contact eval
+  auto in = std::make_shared<EvalInput>();
+  auto opts = std::make_shared<std::vector<std::string>>();
+  auto batch = std::make_shared<bool>(false);
+  auto kij_table = std::make_shared<std::string>();
+  auto kij_at = std::make_shared<std::vector<std::string>>();
+  CLI::App* eval = contact->add_subcommand(
+      "eval",
+      "Solve a Hertzian case; prints forces on the wheel (from the rail) as JSON, SI units");
+  eval->add_option("--a", in->a, "semi-axis along rolling x [m] (with --b)");
+  eval->add_option("--b", in->b, "lateral semi-axis [m] (with --a)");
+  eval->add_option("--curvature-x", in->curvature_x, "A: longitudinal relative curvature [1/m]");
+  eval->add_option("--curvature-y", in->curvature_y, "B: lateral relative curvature [1/m]");
+  eval->add_option("--fn", in->fn, "normal load [N]");
+  eval->add_option("--g1", in->g1, "wheel shear modulus [Pa]")->capture_default_str();
+  eval->add_option("--nu1", in->nu1, "wheel Poisson ratio")->capture_default_str();
+  eval->add_option("--g2", in->g2, "rail shear modulus [Pa]")->capture_default_str();
+  eval->add_option("--nu2", in->nu2, "rail Poisson ratio")->capture_default_str();
+  eval->add_option("--mu", in->mu, "friction coefficient");
+  eval->add_option("--xi-x", in->xi_x, "longitudinal creepage [-]");
+  eval->add_option("--xi-y", in->xi_y, "lateral creepage [-]");
+  eval->add_option("--phi", in->phi, "spin creepage [1/m]");
+  eval->add_option("--model", in->model,
+                   "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
+                   "chopaya, polach, fastsim")
+      ->capture_default_str();
+  eval->add_option("--option", *opts,
+                   "model option key=value (repeatable), e.g. mx=40, "
+                   "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
+  eval->add_option("--k11", in->k11, "reduction factor K11")->capture_default_str();
+  eval->add_option("--k22", in->k22, "reduction factor K22")->capture_default_str();
+  eval->add_option("--k23", in->k23, "reduction factor K23 (default: K22, as in the thesis 4.2.4)");
+  eval->add_option("--k33", in->k33, "reduction factor K33")->capture_default_str();
+  eval->add_option("--kij-table", *kij_table,
+                   "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
+  eval->add_option("--kij-at", *kij_at,
+                   "table coordinate axis=value (repeatable); normal_force and peak_pressure "
+                   "default to the patch's");
+  eval->add_flag("--batch", *batch,
+                 "read cases as CSV (header = option names with '_') on stdin, "
+                 "write one CSV row per case");
+  eval->callback([&handler, in, opts, batch, kij_table, kij_at] {
+    handler = [in, opts, batch, kij_table, kij_at] {
+      const fc::ModelOptions options = parse_options(*opts);
+      EvalInput input = *in;
+      if (!kij_table->empty()) {
+        input.table = std::make_shared<const fc::KijTable>(fc::KijTable::read_hdf5(*kij_table));
+        for (const auto& kv : parse_options(*kij_at)) {
+          try {
+            input.table_point[kv.first] = std::stod(kv.second);
+          } catch (const std::exception&) {
+            throw std::invalid_argument(fmt::format("--kij-at {}: not a number", kv.first));
+          }
+        }
+      }
+      const fc::CoefficientSource source = fc::coefficient_source_from_name(
+          fc::option_string(options, "coefficients", "kalker_table"));
+      if (*batch) return run_batch(input, options, source);
+      const auto model = fc::make_tangential_model(input.model, options);
+      print_json(input, evaluate(input, *model, source));
+      return kExitOk;
+    };
+  });
+
+  // contact curve
+  auto curve_case = std::make_shared<std::string>();
+  auto curve_out = std::make_shared<std::string>(".");
+  auto no_png = std::make_shared<bool>(false);
+  CLI::App* curve = contact->add_subcommand(
+      "curve", "Creep curves of every model of a case: CSV, HDF5 and one PNG overlay");
+  curve->add_option("case", *curve_case, "contact case YAML (scenarios/cases/contact/)")
+      ->required();
+  curve->add_option("--out", *curve_out, "output directory")->capture_default_str();
+  curve->add_flag("--no-png", *no_png, "skip the picture");
+  curve->callback([&handler, curve_case, curve_out, no_png] {
+    handler = [curve_case, curve_out, no_png] {
+      scenarios::ContactCase c = scenarios::load_contact_case(*curve_case);
+      const fc::NormalSolution normal = scenarios::solve_case_normal(c);
+      const auto points = scenarios::compute_creep_curves(c, normal);
+      if (points.empty()) {
+        throw std::invalid_argument(
+            fmt::format("{}: key 'curves': no curve requested", *curve_case));
+      }
+      const std::string csv = output_path(*curve_out, c.name, "_curves.csv");
+      const std::string h5 = output_path(*curve_out, c.name, "_curves.h5");
+      scenarios::write_curves_csv(csv, points);
+      scenarios::write_curves_hdf5(h5, points);
+      fmt::print("{}\n{}\n", csv, h5);
+      if (!*no_png) {
+        const std::string png = output_path(*curve_out, c.name, "_curves.png");
+        const fc::ContactPatch& p = normal.patches.at(0);
+        scenarios::run_plot_script(
+            "curves", csv, png,
+            fmt::format("{}: a = {:.3g} mm, b = {:.3g} mm, Fn = {:.4g} kN, mu = {}", c.name,
+                        p.semi_axis_x * 1e3, p.semi_axis_y * 1e3, c.normal.normal_force * 1e-3,
+                        c.friction));
+        fmt::print("{}\n", png);
+      }
+      return kExitOk;
+    };
+  });
+
+  // contact patch
+  auto patch_case = std::make_shared<std::string>();
+  auto patch_out = std::make_shared<std::string>(".");
+  auto patch_no_png = std::make_shared<bool>(false);
+  CLI::App* patch = contact->add_subcommand(
+      "patch", "Patch picture of a case: pressure, traction vectors, adhesion/slip (CSV + PNG)");
+  patch->add_option("case", *patch_case, "contact case YAML")->required();
+  patch->add_option("--out", *patch_out, "output directory")->capture_default_str();
+  patch->add_flag("--no-png", *patch_no_png, "skip the picture");
+  patch->callback([&handler, patch_case, patch_out, patch_no_png] {
+    handler = [patch_case, patch_out, patch_no_png] {
+      scenarios::ContactCase c = scenarios::load_contact_case(*patch_case);
+      const fc::NormalSolution normal = scenarios::solve_case_normal(c);
+      const scenarios::PatchPicture pic = scenarios::compute_patch_picture(c, normal);
+      const std::string csv = output_path(*patch_out, c.name, "_patch.csv");
+      scenarios::write_patch_csv(csv, pic);
+      std::string summary = "[";
+      for (std::size_t k = 0; k < normal.patches.size(); ++k) {
+        const fc::ContactPatch& p = normal.patches[k];
+        summary += fmt::format(
+            "{}{{\"patch\": {}, \"y_center\": {:.6g}, \"semi_axis_x\": {:.6g}, \"semi_axis_y\": "
+            "{:.6g}, "
+            "\"normal_force\": {:.6g}, \"peak_pressure\": {:.6g}, \"force_x\": {:.6g}, "
+            "\"force_y\": {:.6g}, \"moment_z\": {:.6g}, \"adhesion_fraction\": {:.4g}}}",
+            k ? ", " : "", k, p.y_center, p.semi_axis_x, p.semi_axis_y, p.normal_force,
+            p.peak_pressure, pic.forces[k].force_x, pic.forces[k].force_y, pic.forces[k].moment_z,
+            pic.forces[k].adhesion_fraction);
+      }
+      fmt::print("{}]\n{}\n", summary, csv);
+      if (!*patch_no_png) {
+        const std::string png = output_path(*patch_out, c.name, "_patch.png");
+        scenarios::run_plot_script(
+            "patch", csv, png,
+            fmt::format("{}: {} + {}, xi_x = {:.3g}, xi_y = {:.3g}, phi = {:.3g} 1/m", c.name,
+                        c.normal_model, c.patch_model.label(), c.patch_creepage.longitudinal,
+                        c.patch_creepage.lateral, c.patch_creepage.spin));
+        fmt::print("{}\n", png);
+      }
+      return kExitOk;
+    };
+  });
+}
+
+}  // namespace ferro::cli

@@ -1,0 +1,245 @@
+// Creep curves and patch pictures for `ferrodyn contact curve|patch`.
+#include "ferro/scenarios/contact_analysis.hpp"
+
+#include <fmt/format.h>
+#include <fmt/os.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+
+namespace ferro::scenarios {
+namespace {
+
+contact::TangentialSolution solve_all_patches(const contact::TangentialModel& model,
+                                              const ContactCase& c,
+                                              const contact::NormalSolution& normal,
+                                              const contact::Creepage& cr) {
+  contact::TangentialSolution sum;
+  for (const contact::ContactPatch& patch : normal.patches) {
+    contact::TangentialProblem p;
+    p.patch = &patch;
+    p.creepage = cr;
+    p.friction = c.friction;
+    p.body1 = c.normal.body1;
+    p.body2 = c.normal.body2;
+    p.reduction = c.reduction;
+    p.gap = &c.normal;
+    const contact::TangentialSolution s = model.solve(p);
+    sum.force_x += s.force_x;
+    sum.force_y += s.force_y;
+    sum.moment_z += s.moment_z;
+  }
+  return sum;
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (char ch : s) {
+    if (ch == '\'')
+      out += "'\\''";
+    else
+      out += ch;
+  }
+  return out + "'";
+}
+
+std::string plot_script_path() {
+  const std::filesystem::path source =
+      std::filesystem::path(FERRO_SOURCE_DIR) / "tools" / "plot_contact.py";
+  if (std::filesystem::exists(source)) return source.string();
+  const std::filesystem::path installed =
+      std::filesystem::path(FERRO_INSTALL_DATADIR) / "plot_contact.py";
+  if (std::filesystem::exists(installed)) return installed.string();
+  throw std::runtime_error(
+      fmt::format("plot_contact.py not found in {} or {}", source.string(), installed.string()));
+}
+
+}  // namespace
+
+std::vector<CurvePoint> compute_creep_curves(const ContactCase& c,
+                                             const contact::NormalSolution& normal) {
+  std::vector<CurvePoint> out;
+  struct Sweep {
+    const char* name;
+    const CurveRequest* req;
+  };
+  const Sweep sweeps[] = {{"longitudinal", &c.longitudinal},
+                          {"lateral", &c.lateral},
+                          {"spin", &c.spin},
+                          {"combined", &c.combined}};
+  for (const NamedModel& m : c.models) {
+    const auto model = contact::make_tangential_model(m.name, m.options);
+    for (const Sweep& sw : sweeps) {
+      if (!sw.req->enabled) continue;
+      const int n = sw.req->points;
+      const bool combined = std::string(sw.name) == "combined";
+      for (int i = 0; i < n; ++i) {
+        const double s =
+            combined ? sw.req->max * i / (n - 1) : -sw.req->max + 2.0 * sw.req->max * i / (n - 1);
+        contact::Creepage cr;
+        if (std::string(sw.name) == "longitudinal") cr.longitudinal = s;
+        if (std::string(sw.name) == "lateral") cr.lateral = s;
+        if (std::string(sw.name) == "spin") cr.spin = s;
+        if (combined) {
+          const double ang = sw.req->angle_deg * std::numbers::pi / 180.0;
+          cr.longitudinal = s * std::cos(ang);
+          cr.lateral = s * std::sin(ang);
+        }
+        const contact::TangentialSolution f = solve_all_patches(*model, c, normal, cr);
+        out.push_back({sw.name, m.label(), s, f.force_x, f.force_y, f.moment_z});
+      }
+    }
+  }
+  return out;
+}
+
+void write_curves_csv(const std::string& path, const std::vector<CurvePoint>& points) {
+  auto f = fmt::output_file(path);
+  f.print("curve,model,creepage,force_x,force_y,moment_z,force_t\n");
+  for (const CurvePoint& p : points) {
+    f.print("{},\"{}\",{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", p.curve, p.model, p.creepage,
+            p.force_x, p.force_y, p.moment_z, std::hypot(p.force_x, p.force_y));
+  }
+}
+
+void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& points) {
+  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
+  auto attr_int = [](hid_t where, const char* name, int v) {
+    const hid_t sp = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2(where, name, H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, H5T_NATIVE_INT, &v);
+    H5Aclose(a);
+    H5Sclose(sp);
+  };
+  auto attr_str = [](hid_t where, const char* name, const std::string& v) {
+    const hid_t sp = H5Screate(H5S_SCALAR);
+    const hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, v.size() + 1);
+    const hid_t a = H5Acreate2(where, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, t, v.c_str());
+    H5Aclose(a);
+    H5Tclose(t);
+    H5Sclose(sp);
+  };
+  attr_int(file, "schema_version", 1);
+  attr_str(file, "units",
+           "SI: creepage [-] or [1/m] (spin), force [N], moment [N m]; "
+           "forces on the wheel from the rail");
+  // Group the points by curve then model, keeping order.
+  std::map<std::string, std::map<std::string, std::vector<const CurvePoint*>>> groups;
+  for (const CurvePoint& p : points) groups[p.curve][p.model].push_back(&p);
+  for (const auto& [curve, models] : groups) {
+    const hid_t g = H5Gcreate2(file, curve.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (const auto& entry : models) {
+      const std::string& model = entry.first;
+      const std::vector<const CurvePoint*>& pts = entry.second;
+      std::string name = model;
+      for (char& ch : name)
+        if (ch == '/') ch = '_';
+      const hid_t mg = H5Gcreate2(g, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      const hsize_t n = pts.size();
+      auto write = [&](const char* ds, auto get) {
+        std::vector<double> v;
+        v.reserve(pts.size());
+        for (const CurvePoint* p : pts) v.push_back(get(*p));
+        const hid_t sp = H5Screate_simple(1, &n, nullptr);
+        const hid_t d =
+            H5Dcreate2(mg, ds, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+        H5Dclose(d);
+        H5Sclose(sp);
+      };
+      write("creepage", [](const CurvePoint& p) { return p.creepage; });
+      write("force_x", [](const CurvePoint& p) { return p.force_x; });
+      write("force_y", [](const CurvePoint& p) { return p.force_y; });
+      write("moment_z", [](const CurvePoint& p) { return p.moment_z; });
+      H5Gclose(mg);
+    }
+    H5Gclose(g);
+  }
+  H5Fclose(file);
+}
+
+PatchPicture compute_patch_picture(const ContactCase& c, const contact::NormalSolution& normal) {
+  PatchPicture pic;
+  const auto model = contact::make_tangential_model(c.patch_model.name, c.patch_model.options);
+  for (std::size_t k = 0; k < normal.patches.size(); ++k) {
+    const contact::ContactPatch& patch = normal.patches[k];
+    contact::TractionMap map;
+    contact::TangentialProblem p;
+    p.patch = &patch;
+    p.creepage = c.patch_creepage;
+    p.friction = c.friction;
+    p.body1 = c.normal.body1;
+    p.body2 = c.normal.body2;
+    p.reduction = c.reduction;
+    p.gap = &c.normal;
+    p.map = &map;
+    pic.forces.push_back(model->solve(p));
+    if (map.x.empty()) {
+      throw std::invalid_argument(
+          fmt::format("patch.model '{}' gives no traction map; use fastsim", c.patch_model.name));
+    }
+    std::size_t strip = 0;
+    for (std::size_t i = 0; i < map.x.size(); ++i) {
+      PatchCell cell;
+      cell.patch = static_cast<int>(k);
+      cell.x = map.x[i];
+      cell.y = map.y[i] + patch.y_center;
+      cell.dx = map.dx[i];
+      cell.dy = map.dy[i];
+      cell.traction_x = map.traction_x[i];
+      cell.traction_y = map.traction_y[i];
+      cell.slip = map.slip[i];
+      // Pressure of the normal model (semi-ellipse), not FASTSIM's parabola.
+      if (patch.elliptic()) {
+        const double u = 1.0 - std::pow(map.x[i] / patch.semi_axis_x, 2) -
+                         std::pow(map.y[i] / patch.semi_axis_y, 2);
+        cell.pressure = u > 0.0 ? patch.peak_pressure * std::sqrt(u) : 0.0;
+      } else {
+        while (strip + 1 < patch.strips.size() && patch.strips[strip].y < map.y[i] - 1e-15) ++strip;
+        const contact::PatchStrip& s = patch.strips[strip];
+        const double u = 1.0 - std::pow((map.x[i] - s.x_center) / s.half_length, 2);
+        cell.pressure = u > 0.0 ? s.peak_pressure * std::sqrt(u) : 0.0;
+      }
+      pic.cells.push_back(cell);
+    }
+  }
+  return pic;
+}
+
+void write_patch_csv(const std::string& path, const PatchPicture& picture) {
+  auto f = fmt::output_file(path);
+  f.print("patch,x,y,dx,dy,pressure,traction_x,traction_y,slip\n");
+  for (const PatchCell& c : picture.cells) {
+    f.print("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", c.patch, c.x, c.y, c.dx,
+            c.dy, c.pressure, c.traction_x, c.traction_y, c.slip);
+  }
+}
+
+void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
+                     const std::string& title) {
+  const std::string script = plot_script_path();
+  std::vector<std::string> interpreters;
+  if (const char* env = std::getenv("FERRO_PYTHON")) interpreters.emplace_back(env);
+  interpreters.emplace_back("python3");
+  interpreters.emplace_back("/usr/bin/python3");
+  for (const std::string& py : interpreters) {
+    const std::string cmd =
+        fmt::format("{} {} {} {} {} {} 2>/dev/null", shell_quote(py), shell_quote(script), mode,
+                    shell_quote(csv), shell_quote(png), shell_quote(title));
+    if (std::system(cmd.c_str()) == 0) return;
+  }
+  throw std::runtime_error(
+      fmt::format("could not draw {}: no Python with matplotlib (tried $FERRO_PYTHON, python3, "
+                  "/usr/bin/python3); the CSV {} is written",
+                  png, csv));
+}
+
+}  // namespace ferro::scenarios
