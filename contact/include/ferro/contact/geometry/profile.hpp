@@ -90,3 +90,13 @@ struct RailReference {
 [[nodiscard]] Profile splice_conical_tread(const Profile& wheel, double conicity, double y_join);
 
 }  // namespace ferro::contact
+
+namespace ferro::contact {
+
+/// S1002 wheel profile from the piecewise EN 13715 definition (sections A-H: a line, two
+/// polynomials of degree 8 and 7, a line and four circular arcs), in the profile frame above
+/// (flange back at y = -70 mm, taping line at y = 0, z = radius increase), sampled every
+/// `step` [m] over [-70, 60] mm, plus the section boundaries.
+[[nodiscard]] Profile make_s1002_wheel(double step = 0.1e-3);
+
+}  // namespace ferro::contact
