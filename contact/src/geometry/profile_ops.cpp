@@ -21,11 +21,25 @@ Profile incline_rail(const Profile& rail, double inclination) {
   if (!std::isfinite(inclination)) {
     throw std::invalid_argument("incline_rail: inclination must be finite [rad]");
   }
-  Profile out = rail;
   const double c = std::cos(inclination), s = std::sin(inclination);
+  std::vector<double> ry(rail.size()), rz(rail.size());
   for (std::size_t i = 0; i < rail.size(); ++i) {
-    out.y[i] = c * rail.y[i] + s * rail.z[i];
-    out.z[i] = -s * rail.y[i] + c * rail.z[i];
+    ry[i] = c * rail.y[i] + s * rail.z[i];
+    rz[i] = -s * rail.y[i] + c * rail.z[i];
+  }
+  // Keep the part visible from above: walk from the top point outwards on both sides and stop
+  // where the rotated flank turns back under the head (an undercut cannot be touched by a
+  // wheel and would make the profile multi-valued in y).
+  const auto itop = static_cast<std::size_t>(std::min_element(rz.begin(), rz.end()) - rz.begin());
+  std::size_t first = itop, last = itop;
+  while (first > 0 && ry[first - 1] < ry[first]) --first;
+  while (last + 1 < rail.size() && ry[last + 1] > ry[last]) ++last;
+  Profile out;
+  out.kind = rail.kind;
+  for (std::size_t i = first; i <= last; ++i) {
+    out.y.push_back(ry[i]);
+    out.z.push_back(rz[i]);
+    out.line.push_back(i < rail.line.size() ? rail.line[i] : 0);
   }
   out.source = fmt::format("{} inclined by {:.6g} rad", rail.source, inclination);
   check_profile(out);

@@ -55,7 +55,8 @@ struct Profile {
 void check_profile(Profile& profile);
 
 /// Rotates a rail profile by `inclination` [rad] about its origin so that its head leans
-/// towards the track centre (1:40 -> atan(1/40)): y' = c y + s z, z' = -s y + c z.
+/// towards the track centre (1:40 -> atan(1/40)): y' = c y + s z, z' = -s y + c z. Points of
+/// a flank that the rotation turns under the head (not visible from above) are dropped.
 [[nodiscard]] Profile incline_rail(const Profile& rail, double inclination);
 
 /// Top of rail: the highest point (smallest z) of a rail profile, y and z [m].
