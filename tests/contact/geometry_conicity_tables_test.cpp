@@ -80,6 +80,11 @@ TEST(geometry_conicity, conical_tread_gives_nominal_conicity_with_rigid_roll_cou
     const double expected = lambda / (1.0 - lambda * (r0 + rr) / (e + lambda * rr));
     const double got = fc::equivalent_conicity(y, dr, 0.5e-3);
     EXPECT_NEAR(got / expected, 1.0, kRelTol) << "lambda " << lambda << " got " << got;
+    // With the roll held at zero (linear-theory kinematics) the cone gives its nominal conicity
+    // exactly (rail contact points do not move): delta_r = 2 lambda y. Tolerance 1e-5 relative:
+    // the contact location is refined to ~1 nm, i.e. 1e-6 of the smallest shift used.
+    const auto dr0 = fc::rolling_radius_difference(pair, y, fc::RollTreatment::zero);
+    EXPECT_NEAR(fc::equivalent_conicity(y, dr0, 0.5e-3), lambda, 1e-5 * lambda);
     // And the contact angle at the centre is the cone angle.
     EXPECT_NEAR(std::tan(c0.main[1].contact_angle), lambda, 1e-6);
   }

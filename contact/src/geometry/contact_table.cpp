@@ -248,10 +248,27 @@ ContactTable ContactTable::load_hdf5(const std::string& path) {
 }
 
 std::vector<double> rolling_radius_difference(const WheelRailPair& pair,
-                                              const std::vector<double>& lateral) {
+                                              const std::vector<double>& lateral,
+                                              RollTreatment roll) {
   std::vector<double> out;
   out.reserve(lateral.size());
   for (double y : lateral) {
+    if (roll == RollTreatment::zero) {
+      WheelsetPose pose;
+      pose.lateral = y;
+      double radius[2] = {0.0, 0.0};
+      for (Side side : {Side::left, Side::right}) {
+        double best = 1.0;
+        for (const ContactPoint& p : candidate_points(pair, pose, side)) {
+          if (p.vertical_gap < best) {
+            best = p.vertical_gap;
+            radius[static_cast<int>(side)] = p.rolling_radius;
+          }
+        }
+      }
+      out.push_back(radius[1] - radius[0]);
+      continue;
+    }
     const RigidContact rc = solve_rigid_contact(pair, y, 0.0);
     out.push_back(rc.main[1].rolling_radius - rc.main[0].rolling_radius);
   }

@@ -77,9 +77,16 @@ class ContactTable {
   void finish_grid();
 };
 
-/// Rolling-radius difference of the rigid wheelset, r_right - r_left [m], at each lateral shift.
-[[nodiscard]] std::vector<double> rolling_radius_difference(const WheelRailPair& pair,
-                                                            const std::vector<double>& lateral);
+/// How the wheelset roll is treated when tabulating delta_r.
+enum class RollTreatment {
+  rigid,  ///< roll solved so that both wheels touch (EN 15302 rigid wheelset)
+  zero,   ///< roll held at 0, each wheel at its own deepest point (linear-theory kinematics)
+};
+
+/// Rolling-radius difference r_right - r_left [m] at each lateral shift (no yaw).
+[[nodiscard]] std::vector<double> rolling_radius_difference(
+    const WheelRailPair& pair, const std::vector<double>& lateral,
+    RollTreatment roll = RollTreatment::rigid);
 
 /// Equivalent conicity at amplitude `amplitude` [m] from a tabulated delta_r(y) (y increasing,
 /// linear interpolation, clamped): lambda_e = 1/(2 pi a) int_0^2pi delta_r(a sin t) sin t dt.
