@@ -116,9 +116,12 @@ struct ContactPoint {
   static constexpr double kFlangeAngle = 0.5236;  ///< 30 deg: above it the point is "flange"
 };
 
-/// All candidate points (local minima of the section gap) of one wheel, in increasing wheel_y.
-[[nodiscard]] std::vector<ContactPoint> candidate_points(const WheelRailPair& pair,
-                                                         const WheelsetPose& pose, Side side);
+/// All candidate points (local minima of the section gap) of one wheel, in increasing wheel_y;
+/// minima whose gap exceeds `max_gap` [m] are skipped (not refined). A skipped candidate's
+/// barrier is folded into the next one's.
+[[nodiscard]] std::vector<ContactPoint> candidate_points(
+    const WheelRailPair& pair, const WheelsetPose& pose, Side side,
+    double max_gap = std::numeric_limits<double>::infinity());
 
 /// Contact points at `pose`: one per connected run of interpenetration on each wheel, both
 /// wheels (left first, then right, each in increasing wheel_y).
