@@ -150,3 +150,33 @@ TEST(geometry_gap, contact_plane_gap_is_hertzian_near_the_point) {
   const double gs = 0.5 * (g.at(10, 0) + g.at(10, 2));
   EXPECT_NEAR(gs / (best->curvature_b * h * h), 1.0, 0.05);
 }
+
+TEST(geometry_gap, thesis_centred_case_gap_gives_two_connected_lobes) {
+  // Toumi (2016) ch. 2 non-Hertzian case: S1002 / UIC60 1:40, centred wheelset, gap sampled for
+  // s in [-14.374, 7.908] mm, approach delta = 0.049 mm, patch = two connected elliptic lobes.
+  // Geometry alone must show it: along x = 0 the gap has exactly two local minima (the contact
+  // point, gap 0, and a second lobe towards the flange) and nowhere between them does it exceed
+  // delta, so both lobes and the bridge between them are inside the patch.
+  constexpr double kDelta = 0.049e-3;
+  const fc::WheelRailPair pair(wheel_file(), rail_file(), a22_params());
+  const fc::WheelsetPose pose = fc::touching_pose(pair, fc::WheelsetPose{});
+  const auto pts = fc::candidate_points(pair, pose, fc::Side::right);
+  const fc::ContactPoint* best = &pts.front();
+  for (const auto& p : pts) if (p.vertical_gap < best->vertical_gap) best = &p;
+  const int ny = 149;
+  const double ds = (7.908e-3 + 14.374e-3) / (ny - 1);
+  const fc::GapGrid g = fc::sample_gap(pair, pose, *best, 1, ny, 0.223e-3, ds, 0.0,
+                                       0.5 * (7.908e-3 - 14.374e-3));
+  std::vector<int> minima;
+  for (int i = 1; i + 1 < ny; ++i) {
+    if (g.at(0, i) < g.at(0, i - 1) && g.at(0, i) <= g.at(0, i + 1)) minima.push_back(i);
+  }
+  ASSERT_EQ(minima.size(), 2u);
+  EXPECT_LT(g.s(minima[0]), -5e-3);                 // second lobe on the flange side
+  EXPECT_NEAR(g.s(minima[1]), 0.0, ds);              // the contact point
+  EXPECT_NEAR(g.at(0, minima[1]), 0.0, 0.1e-6);
+  double bridge = 0.0;
+  for (int i = minima[0]; i <= minima[1]; ++i) bridge = std::max(bridge, g.at(0, i));
+  EXPECT_LT(bridge, kDelta);
+  EXPECT_LT(g.at(0, minima[0]), kDelta);
+}

@@ -194,7 +194,7 @@ WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose) 
 }
 
 GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const ContactPoint& pt,
-                   int nx, int ny, double dx, double ds) {
+                   int nx, int ny, double dx, double ds, double x_centre, double s_centre) {
   if (nx < 1 || ny < 1 || !(dx > 0.0) || !(ds > 0.0)) {
     throw std::invalid_argument("sample_gap: need nx, ny >= 1 and dx, ds > 0 [m]");
   }
@@ -227,12 +227,14 @@ GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const Co
   grid.ny = ny;
   grid.dx = dx;
   grid.ds = ds;
+  grid.x_centre = x_centre;
+  grid.s_centre = s_centre;
   grid.gap.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny),
                   std::numeric_limits<double>::quiet_NaN());
   for (int iy = 0; iy < ny; ++iy) {
-    const double s = (iy - 0.5 * (ny - 1)) * ds;
+    const double s = grid.s(iy);
     for (int ix = 0; ix < nx; ++ix) {
-      const double x = pt.x + (ix - 0.5 * (nx - 1)) * dx;
+      const double x = pt.x + grid.x(ix);
       const double qy = pt.y + s * ty, qz = pt.z + s * tz;
       // Rail along the normal line: f(qy + t ny) = qz + t nz.
       double t_r = 0.0;

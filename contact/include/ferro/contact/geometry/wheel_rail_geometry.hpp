@@ -170,19 +170,28 @@ struct RigidContact {
 
 /// Undeformed separation between wheel and rail along the contact normal, sampled on a grid in
 /// the contact plane of `point`: x along the track, s across (towards the field side of that
-/// wheel), centred on the point. gap[iy * nx + ix] at x = (ix - (nx-1)/2) dx,
-/// s = (iy - (ny-1)/2) ds [m]; negative inside the interpenetration. For semi-Hertz / MIM use
-/// gap - min(gap) as the undeformed distance z(x, y) of Toumi eq. (1).
+/// wheel), the grid centred at (x_centre, s_centre) relative to the point:
+/// gap[iy * nx + ix] at x = x_centre + (ix - (nx-1)/2) dx, s = s_centre + (iy - (ny-1)/2) ds
+/// [m]; negative inside the interpenetration, NaN where a profile ends. For semi-Hertz / MIM
+/// use gap - min(gap) as the undeformed distance z(x, y) of Toumi eq. (1).
+/// Example (Toumi ch. 2 non-Hertzian case, S1002 / UIC60 1:40 centred): pose =
+/// touching_pose(pair, {}); point = deepest of candidate_points(pair, pose, Side::right);
+/// sample_gap(pair, pose, point, 46, 100, 0.223e-3, 0.223e-3, 0.0, -3.233e-3) covers the
+/// thesis' s in [-14.374, 7.908] mm (both lobes).
 struct GapGrid {
   int nx = 0, ny = 0;
-  double dx = 0.0, ds = 0.0;     ///< [m]
-  std::vector<double> gap;       ///< [m]
+  double dx = 0.0, ds = 0.0;              ///< [m]
+  double x_centre = 0.0, s_centre = 0.0;  ///< grid centre relative to the point [m]
+  std::vector<double> gap;                ///< [m]
   [[nodiscard]] double at(int ix, int iy) const { return gap[static_cast<std::size_t>(iy * nx + ix)]; }
+  [[nodiscard]] double x(int ix) const { return x_centre + (ix - 0.5 * (nx - 1)) * dx; }
+  [[nodiscard]] double s(int iy) const { return s_centre + (iy - 0.5 * (ny - 1)) * ds; }
 };
 [[nodiscard]] GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose,
-                                 const ContactPoint& point, int nx, int ny, double dx, double ds);
+                                 const ContactPoint& point, int nx, int ny, double dx, double ds,
+                                 double x_centre = 0.0, double s_centre = 0.0);
 
-/// Convenience: the pose of a centred wheelset (no yaw, no roll) just touching both rails.
+/// `pose` moved vertically so that its deepest point just touches (smallest gap zero).
 [[nodiscard]] WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose);
 
 }  // namespace ferro::contact
