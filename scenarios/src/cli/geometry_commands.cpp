@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -311,6 +312,7 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
   prof.close();
   fmt::print("wrote {}/contact_table.h5, contact_points.csv, conicity.csv, profiles.csv\n",
              out_dir);
+  std::fflush(stdout);
   if (plot) {
     const std::string script = std::string(FERRO_SOURCE_DIR) + "/tools/geometry_plot.py";
     const std::string cmd = fmt::format("python3 '{}' '{}'", script, out_dir);
