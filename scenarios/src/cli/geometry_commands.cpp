@@ -114,7 +114,7 @@ double lead_of(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
 }
 
 constexpr const char* kCsvPointHeader =
-    "side,wheel_y_mm,rail_y_mm,x_mm,y_mm,z_mm,lead_mm,contact_angle_deg,rolling_radius_mm,"
+    "side,wheel_y_mm,rail_y_mm,track_x_mm,track_y_mm,track_z_mm,lead_mm,contact_angle_deg,rolling_radius_mm,"
     "curvature_a_per_m,curvature_b_per_m,penetration_mm,vertical_gap_mm,normal_force_n,flange";
 
 std::string point_csv(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
@@ -138,7 +138,8 @@ std::string result_json(const fc::WheelRailPair& pair, const PoseResult& r) {
     os << (i ? ",\n" : "\n")
        << fmt::format(
               "    {{\"side\": \"{}\", \"wheel_y_mm\": {:.6f}, \"rail_y_mm\": {:.6f}, "
-              "\"x_mm\": {:.6f}, \"y_mm\": {:.6f}, \"z_mm\": {:.6f}, \"lead_mm\": {:.6f}, "
+              "\"track_x_mm\": {:.6f}, \"track_y_mm\": {:.6f}, \"track_z_mm\": {:.6f}, "
+              "\"lead_mm\": {:.6f}, "
               "\"contact_angle_deg\": {:.6f}, \"rolling_radius_mm\": {:.6f}, "
               "\"curvature_a_per_m\": {:.6g}, \"curvature_b_per_m\": {:.6g}, "
               "\"penetration_mm\": {:.6e}, \"vertical_gap_mm\": {:.6e}, "
