@@ -250,8 +250,23 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
     gheap.resize(n);
     g = gheap.data();
   }
+  // Only sections whose bottom point lies over the rail can touch it: invert the (nearly
+  // linear) map y_w -> track y of the circle bottom, with a margin for the radius term and lead.
+  const ProfileCurve& rail = pair.rail();
+  const double a = c.cpsi * c.cphi * c.sgn;  // d(P_y)/d(y_w), ignoring r(y_w) sin(roll)
+  const double b = c.y_ws + c.cpsi * c.cphi * c.sgn * c.wheel_offset - c.cpsi * c.sphi * c.r0;
+  // Rail y_r = sgn * P_y - rail_offset  =>  P_y range for each end of the rail.
+  const double p1 = c.sgn * (rail.y_min() + c.rail_offset), p2 = c.sgn * (rail.y_max() + c.rail_offset);
+  double w1 = (p1 - b) / a, w2 = (p2 - b) / a;
+  if (w1 > w2) std::swap(w1, w2);
+  const double margin = 2e-3 + 0.05 * std::abs(c.sphi) + 0.5 * std::abs(c.spsi) * c.r0;
+  const double kmin_d = std::floor((w1 - margin - wheel.y_min()) / h);
+  const double kmax_d = std::ceil((w2 + margin - wheel.y_min()) / h);
+  const std::size_t kmin = kmin_d < 0.0 ? 0 : std::min(n, static_cast<std::size_t>(kmin_d));
+  const std::size_t kmax = kmax_d < 0.0 ? 0 : std::min(n, static_cast<std::size_t>(kmax_d) + 1);
   for (std::size_t k = 0; k < n; ++k) {
-    g[k] = section_estimate(c, wheel.y_min() + h * static_cast<double>(k));
+    g[k] = (k >= kmin && k < kmax) ? section_estimate(c, wheel.y_min() + h * static_cast<double>(k))
+                                   : kFar;
   }
   // Local minima with prominence: a minimum survives unless the gap between it and the
   // previous kept minimum never rises more than kProminence above the higher of the two.

@@ -35,7 +35,7 @@ double hertz_stiffness(double ca, double cb, double estar) {
     return (ee / (1.0 - e * e) - k) / (k - ee);
   };
   double lo = 1e-6, hi = 1.0 - 1e-15;
-  for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+  for (int it = 0; it < 60 && hi - lo > 1e-14; ++it) {
     const double mid = 0.5 * (lo + hi);
     if (ratio(mid) < q) lo = mid; else hi = mid;
   }
