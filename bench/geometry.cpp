@@ -90,9 +90,8 @@ BENCHMARK(BM_GeometryTableDeltaR);
 // Arg 0: case; arg 1: 1 for 1 mm wheel sections instead of the default 0.5 mm.
 void BM_GeometrySearch3D(benchmark::State& state) {
   const fc::WheelRailPair& pair = a22_pair(state.range(1) != 0);
-  static const double cases[3][3] = {{0.0, 0.0, 0.0},
-                                     {5.0e-3, -0.00035540, 0.0120},
-                                     {8.0e-3, -0.00860600, 0.0192}};
+  static const double cases[3][3] = {
+      {0.0, 0.0, 0.0}, {5.0e-3, -0.00035540, 0.0120}, {8.0e-3, -0.00860600, 0.0192}};
   const auto* c = cases[state.range(0)];
   fc::WheelsetPose pose{c[0], 0.0, c[1], c[2]};
   pose = fc::touching_pose(pair, pose);
@@ -105,9 +104,7 @@ void BM_GeometrySearch3D(benchmark::State& state) {
   }
   state.counters["points"] = static_cast<double>(n) / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_GeometrySearch3D)
-    ->ArgsProduct({{0, 1, 2}, {0, 1}})
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_GeometrySearch3D)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
 void BM_GeometryVerticalLoadSolve(benchmark::State& state) {
   const fc::WheelRailPair& pair = a22_pair();

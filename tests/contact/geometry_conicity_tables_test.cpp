@@ -26,8 +26,12 @@ fc::WheelRailPairParams a22_params() {
   return p;
 }
 
-fc::Profile rail_file() { return fc::read_simpack_profile(kData + "/profiles/MBench_UIC60_v3.prr"); }
-fc::Profile wheel_file() { return fc::read_simpack_profile(kData + "/profiles/MBench_S1002_v3.prw"); }
+fc::Profile rail_file() {
+  return fc::read_simpack_profile(kData + "/profiles/MBench_UIC60_v3.prr");
+}
+fc::Profile wheel_file() {
+  return fc::read_simpack_profile(kData + "/profiles/MBench_S1002_v3.prw");
+}
 
 std::vector<double> grid(double a, double b, double h) {
   std::vector<double> v;
@@ -141,7 +145,8 @@ TEST(geometry_gap, contact_plane_gap_is_hertzian_near_the_point) {
   const fc::WheelsetPose pose = fc::touching_pose(pair, fc::WheelsetPose{});
   const auto pts = fc::candidate_points(pair, pose, fc::Side::right);
   const fc::ContactPoint* best = &pts.front();
-  for (const auto& p : pts) if (p.vertical_gap < best->vertical_gap) best = &p;
+  for (const auto& p : pts)
+    if (p.vertical_gap < best->vertical_gap) best = &p;
   const double h = 0.2e-3;
   const fc::GapGrid g = fc::sample_gap(pair, pose, *best, 21, 3, 0.2e-3, h);
   EXPECT_NEAR(g.at(10, 1), 0.0, 1e-9);
@@ -162,18 +167,19 @@ TEST(geometry_gap, thesis_centred_case_gap_gives_two_connected_lobes) {
   const fc::WheelsetPose pose = fc::touching_pose(pair, fc::WheelsetPose{});
   const auto pts = fc::candidate_points(pair, pose, fc::Side::right);
   const fc::ContactPoint* best = &pts.front();
-  for (const auto& p : pts) if (p.vertical_gap < best->vertical_gap) best = &p;
+  for (const auto& p : pts)
+    if (p.vertical_gap < best->vertical_gap) best = &p;
   const int ny = 149;
   const double ds = (7.908e-3 + 14.374e-3) / (ny - 1);
-  const fc::GapGrid g = fc::sample_gap(pair, pose, *best, 1, ny, 0.223e-3, ds, 0.0,
-                                       0.5 * (7.908e-3 - 14.374e-3));
+  const fc::GapGrid g =
+      fc::sample_gap(pair, pose, *best, 1, ny, 0.223e-3, ds, 0.0, 0.5 * (7.908e-3 - 14.374e-3));
   std::vector<int> minima;
   for (int i = 1; i + 1 < ny; ++i) {
     if (g.at(0, i) < g.at(0, i - 1) && g.at(0, i) <= g.at(0, i + 1)) minima.push_back(i);
   }
   ASSERT_EQ(minima.size(), 2u);
-  EXPECT_LT(g.s(minima[0]), -5e-3);                 // second lobe on the flange side
-  EXPECT_NEAR(g.s(minima[1]), 0.0, ds);              // the contact point
+  EXPECT_LT(g.s(minima[0]), -5e-3);      // second lobe on the flange side
+  EXPECT_NEAR(g.s(minima[1]), 0.0, ds);  // the contact point
   EXPECT_NEAR(g.at(0, minima[1]), 0.0, 0.1e-6);
   double bridge = 0.0;
   for (int i = minima[0]; i <= minima[1]; ++i) bridge = std::max(bridge, g.at(0, i));

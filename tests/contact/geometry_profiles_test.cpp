@@ -37,7 +37,10 @@ int count_point_lines(const std::string& path) {
   bool inside = false;
   int n = 0;
   while (std::getline(in, line)) {
-    if (line.find("point.begin") != std::string::npos) { inside = true; continue; }
+    if (line.find("point.begin") != std::string::npos) {
+      inside = true;
+      continue;
+    }
     if (line.find("point.end") != std::string::npos) break;
     const auto b = line.find_first_not_of(" \t");
     if (inside && b != std::string::npos && line[b] != '!') ++n;
@@ -139,7 +142,10 @@ TEST(geometry_profiles, gauge_point_is_14mm_below_top_on_the_gauge_face) {
   double lo = ref.top_y - 0.045, hi = ref.top_y - 0.030;
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (lo + hi);
-    if (c.z(mid) - ref.top_z > 0.014) lo = mid; else hi = mid;
+    if (c.z(mid) - ref.top_z > 0.014)
+      lo = mid;
+    else
+      hi = mid;
   }
   EXPECT_NEAR(0.5 * (lo + hi), ref.gauge_y, 0.01e-3);
 }
@@ -167,7 +173,8 @@ TEST(geometry_profiles, resampling_and_smoothing_keep_flange_and_gauge_corner) {
 }
 
 TEST(geometry_profiles, errors_name_file_and_line) {
-  const std::string nonmono = write_temp("nonmono.txt", "0 0\n1 0.1\n2 0.2\n1.5 0.3\n3 0.4\n4 0.5\n");
+  const std::string nonmono =
+      write_temp("nonmono.txt", "0 0\n1 0.1\n2 0.2\n1.5 0.3\n3 0.4\n4 0.5\n");
   const std::string loop = write_temp("loop.txt", "0 0\n2 0\n2 2\n1 -1\n3 -1\n4 0\n");
   const std::string bad = write_temp("bad.txt", "0 0\n1 x\n2 0\n3 0\n");
   auto message = [](const std::string& path) {
@@ -189,7 +196,8 @@ TEST(geometry_profiles, errors_name_file_and_line) {
 }
 
 TEST(geometry_profiles, two_column_file_in_mm_converts_to_si) {
-  const std::string path = write_temp("cone.txt", "# y z (mm)\n-10, 0.25\n0, 0\n10, -0.25\n20, -0.5\n");
+  const std::string path =
+      write_temp("cone.txt", "# y z (mm)\n-10, 0.25\n0, 0\n10, -0.25\n20, -0.5\n");
   const fc::Profile p = fc::read_two_column_profile(path, fc::ProfileKind::wheel);
   ASSERT_EQ(p.size(), 4u);
   EXPECT_DOUBLE_EQ(p.y[0], -0.010);

@@ -25,9 +25,9 @@ void require(bool ok, const char* field, const std::string& what) {
 // Everything the section solve needs, for one wheel at one pose.
 struct SideContext {
   const WheelRailPair* pair;
-  double sgn;               // +1 right, -1 left
+  double sgn;  // +1 right, -1 left
   double cpsi, spsi, cphi, sphi;
-  double y_ws, z_c;         // axle centre in the track frame
+  double y_ws, z_c;  // axle centre in the track frame
   double wheel_offset, rail_offset, rail_top, r0, zw0;
 };
 
@@ -219,18 +219,18 @@ WheelRailPair::WheelRailPair(const Profile& wheel, const Profile& rail,
   if (rail.kind != ProfileKind::rail) {
     throw std::invalid_argument(fmt::format("{}: expected a rail profile", rail.source));
   }
-  rail_profile_ = params_.rail_inclination != 0.0 ? incline_rail(rail, params_.rail_inclination)
-                                                  : rail;
+  rail_profile_ =
+      params_.rail_inclination != 0.0 ? incline_rail(rail, params_.rail_inclination) : rail;
   wheel_ = ProfileCurve(wheel_profile_, params_.grid_step);
   rail_ = ProfileCurve(rail_profile_, params_.grid_step);
   rail_ref_ = ::ferro::contact::rail_reference(rail_profile_, params_.gauge_depth);
   if (!wheel_.contains(0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "{}: the wheel profile must contain the taping line y = 0", wheel.source));
+    throw std::invalid_argument(
+        fmt::format("{}: the wheel profile must contain the taping line y = 0", wheel.source));
   }
   wheel_z0_ = wheel_.z(0.0);
-  const double fb = std::isnan(params_.flange_back_y) ? wheel_profile_.y.front()
-                                                      : params_.flange_back_y;
+  const double fb =
+      std::isnan(params_.flange_back_y) ? wheel_profile_.y.front() : params_.flange_back_y;
   wheel_offset_ = 0.5 * params_.flange_back_distance - fb;
   rail_offset_ = 0.5 * params_.track_gauge - rail_ref_.gauge_y;
 }
@@ -256,7 +256,8 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
   const double a = c.cpsi * c.cphi * c.sgn;  // d(P_y)/d(y_w), ignoring r(y_w) sin(roll)
   const double b = c.y_ws + c.cpsi * c.cphi * c.sgn * c.wheel_offset - c.cpsi * c.sphi * c.r0;
   // Rail y_r = sgn * P_y - rail_offset  =>  P_y range for each end of the rail.
-  const double p1 = c.sgn * (rail.y_min() + c.rail_offset), p2 = c.sgn * (rail.y_max() + c.rail_offset);
+  const double p1 = c.sgn * (rail.y_min() + c.rail_offset),
+               p2 = c.sgn * (rail.y_max() + c.rail_offset);
   double w1 = (p1 - b) / a, w2 = (p2 - b) / a;
   if (w1 > w2) std::swap(w1, w2);
   const double margin = 2e-3 + 0.05 * std::abs(c.sphi) + 0.5 * std::abs(c.spsi) * c.r0;
@@ -323,8 +324,8 @@ std::vector<ContactPoint> contacts_from_candidates(const std::vector<ContactPoin
     ContactPoint p = cand;
     p.vertical_gap = cand.vertical_gap - extra_drop;
     p.penetration = -p.vertical_gap * std::cos(p.contact_angle);
-    const bool connected = !out.empty() && out.back().side == p.side &&
-                           cand.barrier - extra_drop < 0.0;
+    const bool connected =
+        !out.empty() && out.back().side == p.side && cand.barrier - extra_drop < 0.0;
     if (connected) {
       if (p.vertical_gap < out.back().vertical_gap) out.back() = p;
     } else {

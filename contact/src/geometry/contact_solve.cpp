@@ -37,7 +37,10 @@ double hertz_stiffness(double ca, double cb, double estar) {
   double lo = 1e-6, hi = 1.0 - 1e-15;
   for (int it = 0; it < 60 && hi - lo > 1e-14; ++it) {
     const double mid = 0.5 * (lo + hi);
-    if (ratio(mid) < q) lo = mid; else hi = mid;
+    if (ratio(mid) < q)
+      lo = mid;
+    else
+      hi = mid;
   }
   const double e = 0.5 * (lo + hi);
   const double k = std::comp_ellint_1(e), ee = std::comp_ellint_2(e);
@@ -50,9 +53,8 @@ double hertz_stiffness(double ca, double cb, double estar) {
 
 double hertz_load_from_approach(double ca, double cb, double estar, double approach) {
   if (!(ca > 0.0) || !(estar > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("hertz_load_from_approach: need A > 0 and E* > 0, got A = {}, E* = {}", ca,
-                    estar));
+    throw std::invalid_argument(fmt::format(
+        "hertz_load_from_approach: need A > 0 and E* > 0, got A = {}, E* = {}", ca, estar));
   }
   if (!(approach > 0.0)) return 0.0;
   return hertz_stiffness(ca, cb, estar) * std::pow(approach, 1.5);
@@ -61,9 +63,9 @@ double hertz_load_from_approach(double ca, double cb, double estar, double appro
 LoadedWheelset solve_vertical_load(const WheelRailPair& pair, const WheelsetPose& pose,
                                    double total_load, double estar) {
   if (!(total_load > 0.0) || !(estar > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "solve_vertical_load: load and contact modulus must be > 0, got {} N, {} Pa", total_load,
-        estar));
+    throw std::invalid_argument(
+        fmt::format("solve_vertical_load: load and contact modulus must be > 0, got {} N, {} Pa",
+                    total_load, estar));
   }
   WheelsetPose base = pose;
   base.vertical = 0.0;
@@ -99,7 +101,10 @@ LoadedWheelset solve_vertical_load(const WheelRailPair& pair, const WheelsetPose
   }
   for (int it = 0; it < 80 && hi - lo > 1e-13; ++it) {
     const double mid = 0.5 * (lo + hi);
-    if (load_at(mid, nullptr) < total_load) lo = mid; else hi = mid;
+    if (load_at(mid, nullptr) < total_load)
+      lo = mid;
+    else
+      hi = mid;
   }
   LoadedWheelset out;
   out.pose = base;
@@ -187,8 +192,8 @@ RigidContact solve_rigid_contact(const WheelRailPair& pair, double lateral, doub
 
 WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose) {
   WheelsetPose p = pose;
-  const double g = std::min(min_vertical_gap(pair, pose, Side::left),
-                            min_vertical_gap(pair, pose, Side::right));
+  const double g =
+      std::min(min_vertical_gap(pair, pose, Side::left), min_vertical_gap(pair, pose, Side::right));
   p.vertical += g;
   return p;
 }
@@ -207,8 +212,8 @@ GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const Co
   rail.eval(pt.rail_y, zr, dzr);
   const double f1 = sgn * dzr;  // track-frame rail slope dz/dy at the point
   const double nn = std::sqrt(1.0 + f1 * f1);
-  const double ny_ = f1 / nn, nz_ = -1.0 / nn;               // normal, out of the rail
-  const double ty = sgn / nn, tz = sgn * f1 / nn;            // lateral tangent, to the field
+  const double ny_ = f1 / nn, nz_ = -1.0 / nn;     // normal, out of the rail
+  const double ty = sgn / nn, tz = sgn * f1 / nn;  // lateral tangent, to the field
   // Wheelset rotation R = Rz(yaw) Rx(roll); we need R^T.
   const double cp = std::cos(pose.yaw), sp = std::sin(pose.yaw);
   const double cr = std::cos(pose.roll), sr = std::sin(pose.roll);
@@ -241,7 +246,10 @@ GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const Co
       bool ok = true;
       for (int it = 0; it < 30; ++it) {
         const double yr = sgn * (qy + t_r * ny_) - ro;
-        if (!rail.contains(yr)) { ok = false; break; }
+        if (!rail.contains(yr)) {
+          ok = false;
+          break;
+        }
         double z, dz;
         rail.eval(yr, z, dz);
         const double h = (z - top) - (qz + t_r * nz_);
@@ -256,7 +264,10 @@ GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const Co
         double lx, ly, lz;
         to_local(x, qy + t_w * ny_ - yc, qz + t_w * nz_ - zc, lx, ly, lz);
         const double yw = sgn * ly - wo;
-        if (!wheel.contains(yw)) { ok = false; break; }
+        if (!wheel.contains(yw)) {
+          ok = false;
+          break;
+        }
         double zw, dzw;
         wheel.eval(yw, zw, dzw);
         const double rho = std::hypot(lx, lz);

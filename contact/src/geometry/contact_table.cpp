@@ -19,8 +19,27 @@ namespace ferro::contact {
 namespace {
 
 enum Col {
-  kDeltaR, kRoll, kVertical, kRollCoef, kRadiusL, kRadiusR, kAngleL, kAngleR, kAL, kAR, kBL, kBR,
-  kWheelYL, kWheelYR, kRailYL, kRailYR, kLatL, kLatR, kLongL, kLongR, kNumPoints
+  kDeltaR,
+  kRoll,
+  kVertical,
+  kRollCoef,
+  kRadiusL,
+  kRadiusR,
+  kAngleL,
+  kAngleR,
+  kAL,
+  kAR,
+  kBL,
+  kBR,
+  kWheelYL,
+  kWheelYR,
+  kRailYL,
+  kRailYR,
+  kLatL,
+  kLatR,
+  kLongL,
+  kLongR,
+  kNumPoints
 };
 
 double interp(const std::vector<double>& x, const std::vector<double>& v, double xq) {
@@ -35,12 +54,27 @@ double interp(const std::vector<double>& x, const std::vector<double>& v, double
 }  // namespace
 
 const std::array<const char*, ContactTable::kColumns>& ContactTable::column_names() {
-  static const std::array<const char*, kColumns> names{
-      "delta_r", "roll", "vertical", "roll_coefficient", "rolling_radius_left",
-      "rolling_radius_right", "contact_angle_left", "contact_angle_right", "curvature_a_left",
-      "curvature_a_right", "curvature_b_left", "curvature_b_right", "wheel_y_left",
-      "wheel_y_right", "rail_y_left", "rail_y_right", "lateral_left", "lateral_right",
-      "longitudinal_left", "longitudinal_right", "points_in_contact"};
+  static const std::array<const char*, kColumns> names{"delta_r",
+                                                       "roll",
+                                                       "vertical",
+                                                       "roll_coefficient",
+                                                       "rolling_radius_left",
+                                                       "rolling_radius_right",
+                                                       "contact_angle_left",
+                                                       "contact_angle_right",
+                                                       "curvature_a_left",
+                                                       "curvature_a_right",
+                                                       "curvature_b_left",
+                                                       "curvature_b_right",
+                                                       "wheel_y_left",
+                                                       "wheel_y_right",
+                                                       "rail_y_left",
+                                                       "rail_y_right",
+                                                       "lateral_left",
+                                                       "lateral_right",
+                                                       "longitudinal_left",
+                                                       "longitudinal_right",
+                                                       "points_in_contact"};
   return names;
 }
 
@@ -66,8 +100,8 @@ void ContactTable::finish_grid() {
 ContactTable ContactTable::build(const WheelRailPair& pair, const ContactTableParams& params) {
   params.validate();
   ContactTable t;
-  const auto n = static_cast<std::size_t>(
-                     std::llround((params.lateral_max - params.lateral_min) / params.lateral_step)) +
+  const auto n = static_cast<std::size_t>(std::llround((params.lateral_max - params.lateral_min) /
+                                                       params.lateral_step)) +
                  1;
   for (std::size_t i = 0; i < n; ++i) {
     t.lateral_.push_back(params.lateral_min + params.lateral_step * static_cast<double>(i));
@@ -129,7 +163,8 @@ ContactTableEntry ContactTable::lookup(double lateral, double yaw) const {
       j = yaw_.size() - 2;
       w = 1.0;
     } else {
-      j = static_cast<std::size_t>(std::upper_bound(yaw_.begin(), yaw_.end(), yaw) - yaw_.begin()) - 1;
+      j = static_cast<std::size_t>(std::upper_bound(yaw_.begin(), yaw_.end(), yaw) - yaw_.begin()) -
+          1;
       w = (yaw - yaw_[j]) / (yaw_[j + 1] - yaw_[j]);
     }
   }
@@ -171,13 +206,14 @@ double ContactTable::delta_r(double lateral, double yaw) const {
 void ContactTable::save_hdf5(const std::string& path) const {
   const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
-  auto write = [&](const char* name, const std::vector<double>& v, int rank, hsize_t d0,
-                   hsize_t d1, const char* units) {
+  auto write = [&](const char* name, const std::vector<double>& v, int rank, hsize_t d0, hsize_t d1,
+                   const char* units) {
     hsize_t dims[2] = {d0, d1};
     const hid_t space = H5Screate_simple(rank, dims, nullptr);
-    const hid_t ds = H5Dcreate2(file, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                                H5P_DEFAULT);
-    herr_t st = ds < 0 ? -1 : H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    const hid_t ds =
+        H5Dcreate2(file, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    herr_t st =
+        ds < 0 ? -1 : H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
     if (ds >= 0 && st >= 0) {
       const hid_t atype = H5Tcopy(H5T_C_S1);
       H5Tset_size(atype, std::char_traits<char>::length(units) + 1);
@@ -198,8 +234,8 @@ void ContactTable::save_hdf5(const std::string& path) const {
   write("lateral", lateral_, 1, lateral_.size(), 1, "m");
   write("yaw", yaw_, 1, yaw_.size(), 1, "rad");
   static const std::array<const char*, kColumns> units{
-      "m", "rad", "m", "1", "m", "m", "rad", "rad", "1/m", "1/m", "1/m", "1/m",
-      "m", "m", "m", "m", "m", "m", "m", "m", "1"};
+      "m",   "rad", "m", "1", "m", "m", "rad", "rad", "1/m", "1/m", "1/m",
+      "1/m", "m",   "m", "m", "m", "m", "m",   "m",   "m",   "1"};
   for (int c = 0; c < kColumns; ++c) {
     const std::string name = std::string("/") + column_names()[static_cast<std::size_t>(c)];
     write(name.c_str(), data_[static_cast<std::size_t>(c)], 2, yaw_.size(), lateral_.size(),
@@ -210,7 +246,8 @@ void ContactTable::save_hdf5(const std::string& path) const {
 
 ContactTable ContactTable::load_hdf5(const std::string& path) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw std::invalid_argument(fmt::format("{}: cannot open HDF5 contact table", path));
+  if (file < 0)
+    throw std::invalid_argument(fmt::format("{}: cannot open HDF5 contact table", path));
   auto read = [&](const char* name, std::size_t expected) {
     const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
     if (ds < 0) {
@@ -223,8 +260,8 @@ ContactTable ContactTable::load_hdf5(const std::string& path) {
     if (expected != 0 && count != expected) {
       H5Dclose(ds);
       H5Fclose(file);
-      throw std::invalid_argument(fmt::format("{}: dataset '{}' has {} values, expected {}", path,
-                                              name, count, expected));
+      throw std::invalid_argument(
+          fmt::format("{}: dataset '{}' has {} values, expected {}", path, name, count, expected));
     }
     std::vector<double> v(count);
     H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());

@@ -48,7 +48,8 @@ class CubicSpline1 {
     const double h = t_[i + 1] - t_[i];
     const double a = (t_[i + 1] - t) / h;
     const double b = (t - t_[i]) / h;
-    f = a * v_[i] + b * v_[i + 1] + ((a * a * a - a) * m_[i] + (b * b * b - b) * m_[i + 1]) * h * h / 6.0;
+    f = a * v_[i] + b * v_[i + 1] +
+        ((a * a * a - a) * m_[i] + (b * b * b - b) * m_[i + 1]) * h * h / 6.0;
     df = (v_[i + 1] - v_[i]) / h - (3.0 * a * a - 1.0) / 6.0 * h * m_[i] +
          (3.0 * b * b - 1.0) / 6.0 * h * m_[i + 1];
     ddf = a * m_[i] + b * m_[i + 1];

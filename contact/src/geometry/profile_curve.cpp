@@ -41,7 +41,10 @@ ProfileCurve::ProfileCurve(const Profile& p, double step) {
       sp.y.eval(seg, s, y, dy, ddy);
       const double f = y - yk;
       if (std::abs(f) < 1e-13) break;
-      if (f > 0) hi = s; else lo = s;
+      if (f > 0)
+        hi = s;
+      else
+        lo = s;
       double sn = dy > 0 ? s - f / dy : 0.5 * (lo + hi);
       if (!(sn > lo && sn < hi)) sn = 0.5 * (lo + hi);
       s = sn;

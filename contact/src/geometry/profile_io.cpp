@@ -42,8 +42,8 @@ double parse_number(const std::string& text, const std::string& path, int line,
       fmt::format("{}:{}: cannot read {} from '{}' (expected a number)", path, line, what, text));
 }
 
-bool segments_intersect(double ay, double az, double by, double bz, double cy, double cz,
-                        double dy, double dz) {
+bool segments_intersect(double ay, double az, double by, double bz, double cy, double cz, double dy,
+                        double dz) {
   auto orient = [](double py, double pz, double qy, double qz, double ry, double rz) {
     return (qy - py) * (rz - pz) - (qz - pz) * (ry - py);
   };
@@ -119,9 +119,8 @@ Profile read_simpack_profile(const std::string& path) {
       std::istringstream cols(s);
       std::string a, b;
       if (!(cols >> a >> b)) {
-        throw std::invalid_argument(
-            fmt::format("{}:{}: expected 'y z [weight]' in the point block, got '{}'", path,
-                        line_no, s));
+        throw std::invalid_argument(fmt::format(
+            "{}:{}: expected 'y z [weight]' in the point block, got '{}'", path, line_no, s));
       }
       ys.push_back(parse_number(a, path, line_no, "y"));
       zs.push_back(parse_number(b, path, line_no, "z"));
@@ -165,19 +164,19 @@ Profile read_simpack_profile(const std::string& path) {
   const bool inversion = num("inversion", 0.0) != 0.0;
   const double c = std::cos(rot), sn = std::sin(rot);
   for (std::size_t i = 0; i < ys.size(); ++i) {
-    double y = ys[i] + shift_y, z = zs[i] + shift_z;                  // 2: shift
-    const double yr = c * y - sn * z, zr = sn * y + c * z;            // 3: rotate about x
+    double y = ys[i] + shift_y, z = zs[i] + shift_z;        // 2: shift
+    const double yr = c * y - sn * z, zr = sn * y + c * z;  // 3: rotate about x
     y = yr;
     z = zr;
-    if (bymin < bymax && (y < bymin || y > bymax)) continue;          // 4: bounds
+    if (bymin < bymax && (y < bymin || y > bymax)) continue;  // 4: bounds
     if (bzmin < bzmax && (z < bzmin || z > bzmax)) continue;
-    if (mirror_y) y = -y;                                             // 5: mirror
+    if (mirror_y) y = -y;  // 5: mirror
     if (mirror_z) z = -z;
-    p.y.push_back(y / unit);                                          // 7: units
+    p.y.push_back(y / unit);  // 7: units
     p.z.push_back(z / unit);
     p.line.push_back(lines[i]);
   }
-  if (inversion) {                                                    // 6: order inversion
+  if (inversion) {  // 6: order inversion
     std::reverse(p.y.begin(), p.y.end());
     std::reverse(p.z.begin(), p.z.end());
     std::reverse(p.line.begin(), p.line.end());
@@ -198,13 +197,13 @@ Profile read_two_column_profile(const std::string& path, ProfileKind kind) {
     ++line_no;
     std::string s = trim(raw);
     if (s.empty() || s[0] == '#' || s[0] == '!' || s[0] == '%') continue;
-    std::replace_if(s.begin(), s.end(), [](char ch) { return ch == ',' || ch == ';' || ch == '\t'; },
-                    ' ');
+    std::replace_if(
+        s.begin(), s.end(), [](char ch) { return ch == ',' || ch == ';' || ch == '\t'; }, ' ');
     std::istringstream cols(s);
     std::string a, b;
     if (!(cols >> a >> b)) {
-      throw std::invalid_argument(fmt::format(
-          "{}:{}: expected two columns 'y z' in mm, got '{}'", path, line_no, trim(raw)));
+      throw std::invalid_argument(fmt::format("{}:{}: expected two columns 'y z' in mm, got '{}'",
+                                              path, line_no, trim(raw)));
     }
     p.y.push_back(parse_number(a, path, line_no, "y [mm]") * 1e-3);
     p.z.push_back(parse_number(b, path, line_no, "z [mm]") * 1e-3);

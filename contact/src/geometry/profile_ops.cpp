@@ -71,7 +71,8 @@ RailReference rail_reference(const Profile& rail, double gauge_depth) {
 Profile resample_profile(const Profile& p, double ds) {
   if (!(ds > 0.0)) throw std::invalid_argument("resample_profile: ds must be > 0 [m]");
   const detail::ParamSpline sp(p.y, p.z);
-  const std::size_t n = std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(sp.length() / ds)) + 1);
+  const std::size_t n =
+      std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(sp.length() / ds)) + 1);
   Profile out;
   out.kind = p.kind;
   out.source = fmt::format("{} resampled every {:.4g} mm", p.source, ds * 1e3);
@@ -152,9 +153,9 @@ Profile splice_conical_tread(const Profile& wheel, double conicity, double y_joi
     }
   }
   if (!std::isfinite(z_join)) {
-    throw std::invalid_argument(fmt::format(
-        "splice_conical_tread: y_join = {:.3f} mm is outside the profile {}", y_join * 1e3,
-        wheel.source));
+    throw std::invalid_argument(
+        fmt::format("splice_conical_tread: y_join = {:.3f} mm is outside the profile {}",
+                    y_join * 1e3, wheel.source));
   }
   for (std::size_t i = 0; i < wheel.size() && wheel.y[i] < y_join; ++i) {
     out.y.push_back(wheel.y[i]);

@@ -5,10 +5,10 @@
 // Units on the command line and in the outputs: mm, rad, N (as in the Manchester benchmark
 // files); every option and field says its unit in its name.
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -114,17 +114,20 @@ double lead_of(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
 }
 
 constexpr const char* kCsvPointHeader =
-    "side,wheel_y_mm,rail_y_mm,track_x_mm,track_y_mm,track_z_mm,lead_mm,contact_angle_deg,rolling_radius_mm,"
+    "side,wheel_y_mm,rail_y_mm,track_x_mm,track_y_mm,track_z_mm,lead_mm,contact_angle_deg,rolling_"
+    "radius_mm,"
     "curvature_a_per_m,curvature_b_per_m,penetration_mm,vertical_gap_mm,normal_force_n,flange";
 
 std::string point_csv(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
                       const fc::ContactPoint& p) {
-  return fmt::format("{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6g},{:.6g},{:.6e},{:.6e},{:.3f},{}",
-                     p.side == fc::Side::left ? "left" : "right", p.wheel_y * 1e3, p.rail_y * 1e3,
-                     p.x * 1e3, p.y * 1e3, p.z * 1e3, lead_of(pair, pose, p) * 1e3,
-                     p.contact_angle * 180.0 / std::numbers::pi, p.rolling_radius * 1e3,
-                     p.curvature_a, p.curvature_b, p.penetration * 1e3, p.vertical_gap * 1e3,
-                     p.normal_force, p.on_flange() ? 1 : 0);
+  return fmt::format(
+      "{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6g},{:.6g},{:.6e},{:.6e},{:."
+      "3f},{}",
+      p.side == fc::Side::left ? "left" : "right", p.wheel_y * 1e3, p.rail_y * 1e3, p.x * 1e3,
+      p.y * 1e3, p.z * 1e3, lead_of(pair, pose, p) * 1e3,
+      p.contact_angle * 180.0 / std::numbers::pi, p.rolling_radius * 1e3, p.curvature_a,
+      p.curvature_b, p.penetration * 1e3, p.vertical_gap * 1e3, p.normal_force,
+      p.on_flange() ? 1 : 0);
 }
 
 std::string result_json(const fc::WheelRailPair& pair, const PoseResult& r) {
@@ -178,10 +181,10 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
     if (!line.empty() && line[0] != '#') header = split_csv(line);
   }
   const std::map<std::string, double PoseInput::*> known{{"y_mm", &PoseInput::y_mm},
-                                                          {"roll_rad", &PoseInput::roll_rad},
-                                                          {"yaw_rad", &PoseInput::yaw_rad},
-                                                          {"height_mm", &PoseInput::height_mm},
-                                                          {"load_n", &PoseInput::load_n}};
+                                                         {"roll_rad", &PoseInput::roll_rad},
+                                                         {"yaw_rad", &PoseInput::yaw_rad},
+                                                         {"height_mm", &PoseInput::height_mm},
+                                                         {"load_n", &PoseInput::load_n}};
   std::vector<double PoseInput::*> cols;
   bool has_y = false;
   for (const auto& h : header) {
@@ -218,8 +221,8 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
       try {
         pin.*cols[c] = std::stod(cells[c]);
       } catch (const std::exception&) {
-        throw std::invalid_argument(fmt::format("{}:{}: column '{}': '{}' is not a number",
-                                                in_path, line_no, header[c], cells[c]));
+        throw std::invalid_argument(fmt::format("{}:{}: column '{}': '{}' is not a number", in_path,
+                                                line_no, header[c], cells[c]));
       }
     }
     const PoseResult r = solve_pose(pair, pin, estar);
@@ -285,11 +288,12 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
     const fc::ContactTableEntry e = table.lookup(y);
     ys.push_back(y);
     dr.push_back(e.delta_r);
-    diag << fmt::format("{:.4f},{:.6f},{:.9g},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n",
-                        y * 1e3, e.delta_r * 1e3, e.roll, e.wheel_y[0] * 1e3, e.rail_y[0] * 1e3,
-                        e.contact_angle[0] * 180.0 / std::numbers::pi, e.wheel_y[1] * 1e3,
-                        e.rail_y[1] * 1e3, e.contact_angle[1] * 180.0 / std::numbers::pi,
-                        e.rolling_radius[1] * 1e3, e.rolling_radius[0] * 1e3);
+    diag << fmt::format(
+        "{:.4f},{:.6f},{:.9g},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n", y * 1e3,
+        e.delta_r * 1e3, e.roll, e.wheel_y[0] * 1e3, e.rail_y[0] * 1e3,
+        e.contact_angle[0] * 180.0 / std::numbers::pi, e.wheel_y[1] * 1e3, e.rail_y[1] * 1e3,
+        e.contact_angle[1] * 180.0 / std::numbers::pi, e.rolling_radius[1] * 1e3,
+        e.rolling_radius[0] * 1e3);
   }
   std::ofstream con(dir / "conicity.csv");
   con << "amplitude_mm,equivalent_conicity\n";
@@ -330,9 +334,10 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
 }  // namespace
 
 void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
-  CLI::App* geo = app.add_subcommand(
-      "geometry", "Wheel-rail contact geometry: 'geometry PAIR.yaml' (tables, diagram, "
-                  "conicity, plots) or 'geometry search'");
+  CLI::App* geo =
+      app.add_subcommand("geometry",
+                         "Wheel-rail contact geometry: 'geometry PAIR.yaml' (tables, diagram, "
+                         "conicity, plots) or 'geometry search'");
   geo->require_subcommand(0, 1);
   auto pair_yaml = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>("geometry_out");
@@ -357,8 +362,9 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   search->add_option("--gauge-mm", po->gauge_mm, "track gauge")->capture_default_str();
   search->add_option("--gauge-depth-mm", po->gauge_depth_mm, "gauge measured below top of rail")
       ->capture_default_str();
-  search->add_option("--inclination", po->inclination,
-                     "rail inclination applied to the rail file: 1:40, 1:20, 0 or an angle in rad")
+  search
+      ->add_option("--inclination", po->inclination,
+                   "rail inclination applied to the rail file: 1:40, 1:20, 0 or an angle in rad")
       ->capture_default_str();
   search->add_option("--flange-back-mm", po->flange_back_mm, "flange-back distance")
       ->capture_default_str();
@@ -369,11 +375,12 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   search->add_option("--section-step-mm", po->section_step_mm, "wheel section spacing")
       ->capture_default_str();
   search->add_option("--y-mm", pin->y_mm, "lateral shift, + to the right")->capture_default_str();
-  search->add_option("--roll-rad", pin->roll_rad, "roll, + lowers the right wheel (0 with "
+  search->add_option("--roll-rad", pin->roll_rad,
+                     "roll, + lowers the right wheel (0 with "
                      "neither --height-mm nor --load-n: solved for rigid contact)");
   search->add_option("--yaw-rad", pin->yaw_rad, "yaw, + turns the front to the right");
-  auto* h = search->add_option("--height-mm", pin->height_mm,
-                               "axle-centre drop below nominal (+ down)");
+  auto* h =
+      search->add_option("--height-mm", pin->height_mm, "axle-centre drop below nominal (+ down)");
   search->add_option("--load-n", pin->load_n, "total vertical load: solve the height (Hertz)")
       ->excludes(h);
   search->add_option("--shear-modulus-mpa", *shear_mpa, "for --load-n")->capture_default_str();

@@ -27,10 +27,10 @@ enum class ProfileKind { wheel, rail };
 /// A profile as an ordered polyline, y strictly increasing after `check_profile`. SI units.
 struct Profile {
   ProfileKind kind = ProfileKind::rail;
-  std::vector<double> y;       ///< lateral coordinate [m], increasing
-  std::vector<double> z;       ///< vertical coordinate [m], positive downwards
-  std::vector<int> line;       ///< source-file line of each point (0 when generated)
-  std::string source;          ///< file name or generator description, for messages
+  std::vector<double> y;  ///< lateral coordinate [m], increasing
+  std::vector<double> z;  ///< vertical coordinate [m], positive downwards
+  std::vector<int> line;  ///< source-file line of each point (0 when generated)
+  std::string source;     ///< file name or generator description, for messages
 
   [[nodiscard]] std::size_t size() const { return y.size(); }
 };

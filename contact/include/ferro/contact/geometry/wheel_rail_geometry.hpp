@@ -39,7 +39,7 @@ namespace ferro::contact {
 
 /// Track / wheelset data of a wheel-rail pair. SI units.
 struct WheelRailPairParams {
-  double track_gauge = std::numeric_limits<double>::quiet_NaN();           ///< [m]
+  double track_gauge = std::numeric_limits<double>::quiet_NaN();  ///< [m]
   double gauge_depth = 0.014;  ///< depth of the gauge measurement below top of rail [m]
   double flange_back_distance = std::numeric_limits<double>::quiet_NaN();  ///< [m]
   /// Lateral position of the flange back in wheel-profile coordinates [m]; NaN: the profile's
@@ -97,21 +97,22 @@ enum class Side { left = 0, right = 1 };
 struct ContactPoint {
   Side side = Side::right;
   double x = 0.0, y = 0.0, z = 0.0;  ///< point on the rail surface, track frame [m]
-  double wheel_y = 0.0;   ///< lateral coordinate on the wheel profile [m]
-  double rail_y = 0.0;    ///< lateral coordinate on the rail profile [m]
+  double wheel_y = 0.0;              ///< lateral coordinate on the wheel profile [m]
+  double rail_y = 0.0;               ///< lateral coordinate on the rail profile [m]
   double wheel_angle = 0.0;  ///< angle of the point on the wheel circle from straight down [rad]
   /// Contact angle [rad]: inclination of the rail surface at the point, positive when the
   /// contact normal leans towards the track centre (flange contact ~ +70 deg). The Manchester
   /// benchmark's results use the opposite sign on the gauge face.
   double contact_angle = 0.0;
-  double rolling_radius = 0.0;   ///< wheel radius at the point [m]
-  double curvature_a = 0.0;      ///< A, longitudinal: gap ~ A x^2 + B s^2 [1/m]
-  double curvature_b = 0.0;      ///< B, lateral (in the contact plane) [1/m]; <= 0: conformal
-  double vertical_gap = 0.0;     ///< vertical separation, negative = interpenetration [m]
-  double penetration = 0.0;      ///< normal interpenetration max(0, -gap cos(gamma)) [m]
+  double rolling_radius = 0.0;  ///< wheel radius at the point [m]
+  double curvature_a = 0.0;     ///< A, longitudinal: gap ~ A x^2 + B s^2 [1/m]
+  double curvature_b = 0.0;     ///< B, lateral (in the contact plane) [1/m]; <= 0: conformal
+  double vertical_gap = 0.0;    ///< vertical separation, negative = interpenetration [m]
+  double penetration = 0.0;     ///< normal interpenetration max(0, -gap cos(gamma)) [m]
   double barrier = std::numeric_limits<double>::infinity();  ///< largest section gap between
-                                 ///< this and the previous candidate on the same wheel [m]
-  double normal_force = 0.0;     ///< set by solve_vertical_load [N]
+                                                             ///< this and the previous candidate on
+                                                             ///< the same wheel [m]
+  double normal_force = 0.0;                                 ///< set by solve_vertical_load [N]
   [[nodiscard]] bool on_flange() const { return contact_angle > kFlangeAngle; }
   static constexpr double kFlangeAngle = 0.5236;  ///< 30 deg: above it the point is "flange"
 };
@@ -145,8 +146,8 @@ struct ContactPoint {
 
 /// Result of a vertical-load solve.
 struct LoadedWheelset {
-  WheelsetPose pose;                 ///< with the solved vertical position
-  std::vector<ContactPoint> points;  ///< with normal_force set
+  WheelsetPose pose;                              ///< with the solved vertical position
+  std::vector<ContactPoint> points;               ///< with normal_force set
   std::array<double, 2> vertical_load{0.0, 0.0};  ///< carried by left/right wheel [N]
 };
 
@@ -162,8 +163,8 @@ struct LoadedWheelset {
 /// each side), for the given lateral shift and yaw. The points are the touching ones.
 struct RigidContact {
   WheelsetPose pose;
-  std::vector<ContactPoint> points;   ///< the deepest (touching) candidate on each wheel
-  std::array<ContactPoint, 2> main;   ///< left, right touching point
+  std::vector<ContactPoint> points;  ///< the deepest (touching) candidate on each wheel
+  std::array<ContactPoint, 2> main;  ///< left, right touching point
 };
 [[nodiscard]] RigidContact solve_rigid_contact(const WheelRailPair& pair, double lateral,
                                                double yaw = 0.0);
@@ -183,7 +184,9 @@ struct GapGrid {
   double dx = 0.0, ds = 0.0;              ///< [m]
   double x_centre = 0.0, s_centre = 0.0;  ///< grid centre relative to the point [m]
   std::vector<double> gap;                ///< [m]
-  [[nodiscard]] double at(int ix, int iy) const { return gap[static_cast<std::size_t>(iy * nx + ix)]; }
+  [[nodiscard]] double at(int ix, int iy) const {
+    return gap[static_cast<std::size_t>(iy * nx + ix)];
+  }
   [[nodiscard]] double x(int ix) const { return x_centre + (ix - 0.5 * (nx - 1)) * dx; }
   [[nodiscard]] double s(int iy) const { return s_centre + (iy - 0.5 * (ny - 1)) * ds; }
 };
