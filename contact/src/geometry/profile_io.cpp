@@ -98,13 +98,17 @@ Profile read_simpack_profile(const std::string& path) {
   std::map<std::string, std::pair<std::string, int>> keys;
   std::vector<double> ys, zs;
   std::vector<int> lines;
-  bool in_points = false, saw_points = false, saw_end = false;
+  bool in_points = false, saw_points = false, saw_end = false, in_header = false;
   std::string raw;
   int line_no = 0;
   while (std::getline(in, raw)) {
     ++line_no;
     const std::string s = trim(strip_comment(raw));
     if (s.empty()) continue;
+    if (s == "header.begin" || s == "header.end") {
+      in_header = s == "header.begin";
+      continue;
+    }
     if (s == "point.begin") {
       in_points = true;
       saw_points = true;
@@ -131,7 +135,8 @@ Profile read_simpack_profile(const std::string& path) {
     if (eq != std::string::npos) {
       std::string val = trim(s.substr(eq + 1));
       if (val.size() >= 2 && val.front() == '\'') val = val.substr(1, val.size() - 2);
-      keys[trim(s.substr(0, eq))] = {val, line_no};
+      // Header keys are prefixed: the spline block has its own "type" (data file type).
+      keys[(in_header ? "header." : "") + trim(s.substr(0, eq))] = {val, line_no};
     }
   }
   if (!saw_points || !saw_end) {
@@ -145,12 +150,15 @@ Profile read_simpack_profile(const std::string& path) {
   };
   Profile p;
   p.source = path;
-  const double type = num("type", -1.0);  // the header's type comes last in the map only if
-  // repeated; the spline block also has "type" (data file type), so infer from extension too.
-  (void)type;
+  // Kind from the header (0 = rail, 1 = wheel), else from the extension (.prw = wheel).
+  const double type = num("header.type", -1.0);
   const auto dot = path.find_last_of('.');
   const std::string ext = dot == std::string::npos ? "" : path.substr(dot);
-  p.kind = (ext == ".prw" || ext == ".PRW") ? ProfileKind::wheel : ProfileKind::rail;
+  if (type == 0.0 || type == 1.0) {
+    p.kind = type == 1.0 ? ProfileKind::wheel : ProfileKind::rail;
+  } else {
+    p.kind = (ext == ".prw" || ext == ".PRW") ? ProfileKind::wheel : ProfileKind::rail;
+  }
   const double unit = num("units.len.f", 1000.0);  // l[user] / l[m]
   if (!(unit > 0.0)) {
     throw std::invalid_argument(

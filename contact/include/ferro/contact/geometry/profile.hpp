@@ -90,10 +90,6 @@ struct RailReference {
 /// continuous in z at y_join (the flange and its root are kept). The thesis' 1/10 variant.
 [[nodiscard]] Profile splice_conical_tread(const Profile& wheel, double conicity, double y_join);
 
-}  // namespace ferro::contact
-
-namespace ferro::contact {
-
 /// S1002 wheel profile from the piecewise EN 13715 definition (sections A-H: a line, two
 /// polynomials of degree 8 and 7, a line and four circular arcs), in the profile frame above
 /// (flange back at y = -70 mm, taping line at y = 0, z = radius increase), sampled every
