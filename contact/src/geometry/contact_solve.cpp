@@ -20,19 +20,12 @@
 namespace ferro::contact {
 namespace {
 
-// Load per approach^(3/2) of a Hertz contact [N/m^1.5].
-double hertz_stiffness(double ca, double cb, double estar) {
-  cb = std::max(cb, 1e-3 * ca);
-  const double a1 = std::min(ca, cb), b1 = std::max(ca, cb);
-  const double q = b1 / a1;
-  if (q < 1.0 + 1e-9) {
-    const double radius = 1.0 / (2.0 * a1);
-    return 4.0 / 3.0 * estar * std::sqrt(radius);
-  }
-  // Eccentricity e from B/A = ((a/b)^2 E - K) / (K - E), monotone in e (bisection on e).
+// Eccentricity e of the Hertz ellipse for curvature ratio q = B/A >= 1, from
+// B/A = ((a/b)^2 E - K) / (K - E) (monotone in e; bisection). Returns K(e), E(e) too.
+double hertz_eccentricity(double q, double& kk, double& ee) {
   auto ratio = [](double e) {
-    const double k = std::comp_ellint_1(e), ee = std::comp_ellint_2(e);
-    return (ee / (1.0 - e * e) - k) / (k - ee);
+    const double k = std::comp_ellint_1(e), el = std::comp_ellint_2(e);
+    return (el / (1.0 - e * e) - k) / (k - el);
   };
   double lo = 1e-6, hi = 1.0 - 1e-15;
   for (int it = 0; it < 60 && hi - lo > 1e-14; ++it) {
@@ -43,7 +36,22 @@ double hertz_stiffness(double ca, double cb, double estar) {
       hi = mid;
   }
   const double e = 0.5 * (lo + hi);
-  const double k = std::comp_ellint_1(e), ee = std::comp_ellint_2(e);
+  kk = std::comp_ellint_1(e);
+  ee = std::comp_ellint_2(e);
+  return e;
+}
+
+// Load per approach^(3/2) of a Hertz contact [N/m^1.5].
+double hertz_stiffness(double ca, double cb, double estar) {
+  cb = std::max(cb, 1e-3 * ca);
+  const double a1 = std::min(ca, cb), b1 = std::max(ca, cb);
+  const double q = b1 / a1;
+  if (q < 1.0 + 1e-9) {
+    const double radius = 1.0 / (2.0 * a1);
+    return 4.0 / 3.0 * estar * std::sqrt(radius);
+  }
+  double k, ee;
+  const double e = hertz_eccentricity(q, k, ee);
   // a = alpha P^(1/3), delta = 3 K P^(2/3) / (2 pi E* alpha)  =>  P = c delta^(3/2).
   const double alpha = std::cbrt(3.0 * (k - ee) / (2.0 * std::numbers::pi * estar * a1 * e * e));
   return std::pow(2.0 * std::numbers::pi * estar * alpha / (3.0 * k), 1.5);
@@ -58,6 +66,33 @@ double hertz_load_from_approach(double ca, double cb, double estar, double appro
   }
   if (!(approach > 0.0)) return 0.0;
   return hertz_stiffness(ca, cb, estar) * std::pow(approach, 1.5);
+}
+
+HertzEllipse hertz_ellipse(double ca, double cb, double estar, double load) {
+  if (!(ca > 0.0) || !(cb > 0.0) || !(estar > 0.0) || !(load > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "hertz_ellipse: need A, B, E*, load > 0, got {}, {}, {}, {}", ca, cb, estar, load));
+  }
+  const double a1 = std::min(ca, cb), q = std::max(ca, cb) / a1;
+  HertzEllipse h;
+  double major, minor;
+  if (q < 1.0 + 1e-9) {
+    const double radius = 1.0 / (2.0 * a1);
+    major = minor = std::cbrt(3.0 * load * radius / (4.0 * estar));
+    h.approach = major * major / radius;
+  } else {
+    double k, ee;
+    const double e = hertz_eccentricity(q, k, ee);
+    // Johnson (4.39): A' = 3P (K - E) / (2 pi E* a^3 e^2), delta = 3 P K / (2 pi E* a).
+    major = std::cbrt(3.0 * load * (k - ee) / (2.0 * std::numbers::pi * estar * a1 * e * e));
+    minor = major * std::sqrt(1.0 - e * e);
+    h.approach = 3.0 * load * k / (2.0 * std::numbers::pi * estar * major);
+  }
+  // The major axis lies along the direction of the smaller curvature.
+  h.semi_axis_x = ca <= cb ? major : minor;
+  h.semi_axis_y = ca <= cb ? minor : major;
+  h.max_pressure = 3.0 * load / (2.0 * std::numbers::pi * major * minor);
+  return h;
 }
 
 LoadedWheelset solve_vertical_load(const WheelRailPair& pair, const WheelsetPose& pose,

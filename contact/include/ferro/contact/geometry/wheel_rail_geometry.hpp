@@ -144,6 +144,18 @@ struct ContactPoint {
 [[nodiscard]] double hertz_load_from_approach(double curvature_a, double curvature_b,
                                               double contact_modulus, double approach);
 
+/// Hertz contact ellipse for relative curvatures A (x, rolling) and B (y, lateral) [1/m],
+/// contact modulus E* [Pa] and normal load [N] (Johnson eq. 4.39, exact). Used to size patches
+/// from the geometry; the normal-contact models live elsewhere.
+struct HertzEllipse {
+  double semi_axis_x = 0.0;   ///< a, along the rolling direction [m]
+  double semi_axis_y = 0.0;   ///< b, lateral [m]
+  double approach = 0.0;      ///< delta [m]
+  double max_pressure = 0.0;  ///< p0 = 3 F / (2 pi a b) [Pa]
+};
+[[nodiscard]] HertzEllipse hertz_ellipse(double curvature_a, double curvature_b,
+                                         double contact_modulus, double load);
+
 /// Result of a vertical-load solve.
 struct LoadedWheelset {
   WheelsetPose pose;                              ///< with the solved vertical position
