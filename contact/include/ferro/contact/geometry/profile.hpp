@@ -96,4 +96,14 @@ struct RailReference {
 /// `step` [m] over [-70, 60] mm, plus the section boundaries.
 [[nodiscard]] Profile make_s1002_wheel(double step = 0.1e-3);
 
+/// 60E1 (UIC60) rail head from its arcs: R300 crown, R80, R13 gauge/field corners, 1:20 head
+/// flanks, symmetric, each arc tangent to the next; rail frame with the origin at the crown top
+/// on the rail axis, not inclined (use incline_rail). The radii and the flank slope are those of
+/// EN 13674-1; the lateral ends of the R300 and R80 arcs (`y_r300_end`, `y_r80_end` [m]) are
+/// parameters: their defaults (10.50 mm, 25.99 mm) are reconstructed from the Manchester
+/// benchmark rail file, which is this exact construction (residual 0.03 um), not taken from the
+/// EN drawing. Sampled every `step` [m] down to `depth` [m] below the crown.
+[[nodiscard]] Profile make_60e1_rail(double y_r300_end = 10.50e-3, double y_r80_end = 25.99e-3,
+                                     double depth = 0.035, double step = 0.1e-3);
+
 }  // namespace ferro::contact
