@@ -16,6 +16,7 @@ int run_main(int argc, char** argv) {
   VerbHandler handler;
   add_scene_commands(app, handler);
   add_contact_commands(app, handler);
+  add_geometry_commands(app, handler);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

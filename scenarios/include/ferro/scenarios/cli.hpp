@@ -29,5 +29,6 @@ int run_main(int argc, char** argv);
 // `handler` to the work to do once parsing has finished.
 void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, plot, validate
 void add_contact_commands(CLI::App& app, VerbHandler& handler);  // contact eval, curve, patch
+void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry search, PAIR.yaml
 
 }  // namespace ferro::cli

@@ -1,0 +1,121 @@
+// Wheel-rail geometry kernels: contact-table look-up and the full 3D contact search of one
+// wheelset (both wheels), S1002 / UIC60 1:40 (Manchester data).
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/geometry/contact_table.hpp"
+#include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+
+namespace fc = ferro::contact;
+
+namespace {
+
+fc::WheelRailPair make_a22_pair(double section_step) {
+  const std::string d = std::string(FERRO_SHARED_DATA_DIR) + "/profiles/";
+  fc::WheelRailPairParams p;
+  p.track_gauge = 1.435;
+  p.flange_back_distance = 1.360;
+  p.flange_back_y = -0.070;
+  p.nominal_radius = 0.460;
+  p.section_step = section_step;
+  return fc::WheelRailPair(fc::read_simpack_profile(d + "MBench_S1002_v3.prw"),
+                           fc::read_simpack_profile(d + "MBench_UIC60_v3.prr"), p);
+}
+
+const fc::WheelRailPair& a22_pair(bool coarse = false) {
+  static const fc::WheelRailPair pair = make_a22_pair(0.5e-3);
+  static const fc::WheelRailPair pair_coarse = make_a22_pair(1.0e-3);
+  return coarse ? pair_coarse : pair;
+}
+
+const fc::ContactTable& a22_table(bool with_yaw) {
+  static const fc::ContactTable t0 = [] {
+    fc::ContactTableParams tp;
+    return fc::ContactTable::build(a22_pair(), tp);
+  }();
+  static const fc::ContactTable t1 = [] {
+    fc::ContactTableParams tp;
+    tp.lateral_step = 0.2e-3;
+    tp.yaw = {-0.02, -0.01, 0.0, 0.01, 0.02};
+    return fc::ContactTable::build(a22_pair(), tp);
+  }();
+  return with_yaw ? t1 : t0;
+}
+
+std::vector<double> random_shifts(std::size_t n) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-0.011, 0.011);
+  std::vector<double> v(n);
+  for (auto& x : v) x = u(rng);
+  return v;
+}
+
+void BM_GeometryTableLookupAll(benchmark::State& state) {
+  const fc::ContactTable& t = a22_table(false);
+  const auto ys = random_shifts(1024);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(t.lookup(ys[i++ & 1023]));
+  }
+}
+BENCHMARK(BM_GeometryTableLookupAll);
+
+void BM_GeometryTableLookupYaw(benchmark::State& state) {
+  const fc::ContactTable& t = a22_table(true);
+  const auto ys = random_shifts(1024);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const double y = ys[i++ & 1023];
+    benchmark::DoNotOptimize(t.lookup(y, 0.5 * y));
+  }
+}
+BENCHMARK(BM_GeometryTableLookupYaw);
+
+void BM_GeometryTableDeltaR(benchmark::State& state) {
+  const fc::ContactTable& t = a22_table(false);
+  const auto ys = random_shifts(1024);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(t.delta_r(ys[i++ & 1023]));
+  }
+}
+BENCHMARK(BM_GeometryTableDeltaR);
+
+// Full 3D search, both wheels, every contact point: cases 1 (centred), 11 (two-point)
+// and 17 (yawed flange contact), with a penetration so that points exist.
+// Arg 0: case; arg 1: 1 for 1 mm wheel sections instead of the default 0.5 mm.
+void BM_GeometrySearch3D(benchmark::State& state) {
+  const fc::WheelRailPair& pair = a22_pair(state.range(1) != 0);
+  static const double cases[3][3] = {
+      {0.0, 0.0, 0.0}, {5.0e-3, -0.00035540, 0.0120}, {8.0e-3, -0.00860600, 0.0192}};
+  const auto* c = cases[state.range(0)];
+  fc::WheelsetPose pose{c[0], 0.0, c[1], c[2]};
+  pose = fc::touching_pose(pair, pose);
+  pose.vertical += 20e-6;
+  std::size_t n = 0;
+  for (auto _ : state) {
+    const auto pts = fc::search_contacts(pair, pose);
+    n += pts.size();
+    benchmark::DoNotOptimize(pts.data());
+  }
+  state.counters["points"] = static_cast<double>(n) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_GeometrySearch3D)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+void BM_GeometryVerticalLoadSolve(benchmark::State& state) {
+  const fc::WheelRailPair& pair = a22_pair();
+  const fc::WheelsetPose pose{8.0e-3, 0.0, -0.00860600, 0.0192};
+  const double estar = 2.0 * 82e9 * 1.28 / (2.0 * (1.0 - 0.28 * 0.28));
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fc::solve_vertical_load(pair, pose, 20000.0, estar));
+  }
+}
+BENCHMARK(BM_GeometryVerticalLoadSolve)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

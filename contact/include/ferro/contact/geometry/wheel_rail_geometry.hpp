@@ -1,0 +1,212 @@
+#pragma once
+// Wheelset-on-track contact geometry: the read-only wheel/rail pair model, the wheelset pose,
+// the 3D contact search (every contact point on both wheels, tread and flange), the vertical
+// load solve with a Hertzian stiffness, the rigid (both wheels touching) solve, and the
+// undeformed gap sampled around a contact point for semi-Hertzian and MIM solvers.
+//
+// Frames. Track frame: x forward, y lateral to the RIGHT, z DOWN (SIMPACK / Manchester benchmark
+// convention). The right rail and right wheel use their profiles as read; the left ones are
+// mirrored (y -> -y). Wheelset frame: same axes at the axle centre, rotated by roll about x then
+// yaw about z: R = Rz(yaw) Rx(roll). The axle centre sits at y = lateral, z = -r0 + vertical
+// (r0 the nominal radius), so at zero pose the taping-line circles touch the rail-top level.
+//
+// Search method: each wheel is cut into lateral sections (circles of radius r(y_w)); on each
+// circle the point of smallest vertical distance to the (prismatic) rail is found by Newton's
+// method on the circle angle, which places the contact ahead of or behind the axle under yaw
+// (the flange contact leads). Local minima of this section gap over y_w are the candidate
+// points; every connected run of penetrating sections gives one contact point at its deepest
+// section (refined by parabolic interpolation), so tread + flange contact give two points.
+//
+// References: Shabana, Zaazaa & Sugiyama, "Railroad Vehicle Dynamics" (2008) ch. 4 (wheel and
+// rail surface geometry, contact angle, rolling radius); Toumi (2016) eqs. (1), (5)-(16)
+// (gap, Hertz, curvatures A = cos(gamma)/(2 r) and B from the transverse radii); Johnson,
+// "Contact Mechanics" (1985) eq. (4.39) (Hertz approach with complete elliptic integrals);
+// Shackleton & Iwnicki, VSD 46 (2008) (Manchester benchmark conventions).
+// Known deviations: penetration is measured vertically per section and converted to the normal
+// by cos(gamma) (the usual "vertical interpenetration" approximation, good while the penetration
+// is small against the profile radii); the wheel's longitudinal curvature ignores yaw (A uses
+// cos(gamma)/r); rails are prismatic (no rail roll or lateral bending).
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/geometry/profile.hpp"
+#include "ferro/contact/geometry/profile_curve.hpp"
+
+namespace ferro::contact {
+
+/// Track / wheelset data of a wheel-rail pair. SI units.
+struct WheelRailPairParams {
+  double track_gauge = std::numeric_limits<double>::quiet_NaN();  ///< [m]
+  double gauge_depth = 0.014;  ///< depth of the gauge measurement below top of rail [m]
+  double flange_back_distance = std::numeric_limits<double>::quiet_NaN();  ///< [m]
+  /// Lateral position of the flange back in wheel-profile coordinates [m]; NaN: the profile's
+  /// smallest y. EN 13715 profiles: -0.070.
+  double flange_back_y = std::numeric_limits<double>::quiet_NaN();
+  double nominal_radius = std::numeric_limits<double>::quiet_NaN();  ///< r0 at y_w = 0 [m]
+  double rail_inclination = 0.0;  ///< applied to the rail profile as read [rad] (0: as read)
+  double grid_step = 0.05e-3;     ///< resampling step of the profile tables [m]
+  double section_step = 0.5e-3;   ///< lateral spacing of wheel sections in the search [m]
+  /// Throws std::invalid_argument naming the offending field.
+  void validate() const;
+};
+
+/// Read-only model of one wheel profile on one rail profile, used on both sides (mirrored).
+class WheelRailPair {
+ public:
+  WheelRailPair(const Profile& wheel, const Profile& rail, const WheelRailPairParams& params);
+
+  [[nodiscard]] const WheelRailPairParams& params() const { return params_; }
+  [[nodiscard]] const Profile& wheel_profile() const { return wheel_profile_; }
+  [[nodiscard]] const Profile& rail_profile() const { return rail_profile_; }  ///< inclined
+  [[nodiscard]] const ProfileCurve& wheel() const { return wheel_; }
+  [[nodiscard]] const ProfileCurve& rail() const { return rail_; }
+  [[nodiscard]] const RailReference& rail_reference() const { return rail_ref_; }
+  /// Wheelset-frame lateral position of the right wheel's profile origin [m].
+  [[nodiscard]] double wheel_offset() const { return wheel_offset_; }
+  /// Track-frame lateral position of the right rail's profile origin [m].
+  [[nodiscard]] double rail_offset() const { return rail_offset_; }
+  /// Wheel radius at wheel-profile coordinate y_w [m].
+  [[nodiscard]] double wheel_radius(double y_w) const {
+    return params_.nominal_radius + wheel_.z(y_w) - wheel_z0_;
+  }
+  /// Rail surface height (track z, down) at rail-profile coordinate y_r: top of rail at 0 [m].
+  [[nodiscard]] double rail_height(double y_r) const { return rail_.z(y_r) - rail_ref_.top_z; }
+
+ private:
+  WheelRailPairParams params_;
+  Profile wheel_profile_, rail_profile_;
+  ProfileCurve wheel_, rail_;
+  RailReference rail_ref_;
+  double wheel_offset_ = 0.0, rail_offset_ = 0.0, wheel_z0_ = 0.0;
+};
+
+/// Wheelset position relative to the track (see the frame description above).
+struct WheelsetPose {
+  double lateral = 0.0;   ///< axle-centre lateral shift, + to the right [m]
+  double vertical = 0.0;  ///< axle-centre drop below the nominal height, + down [m]
+  double roll = 0.0;      ///< about track x [rad]; + lowers the right wheel
+  double yaw = 0.0;       ///< about track z (down) [rad]; + turns the front to the right
+};
+
+enum class Side { left = 0, right = 1 };
+
+/// One contact point (or candidate point when its vertical_gap is positive).
+struct ContactPoint {
+  Side side = Side::right;
+  double x = 0.0, y = 0.0, z = 0.0;  ///< point on the rail surface, track frame [m]
+  double wheel_y = 0.0;              ///< lateral coordinate on the wheel profile [m]
+  double rail_y = 0.0;               ///< lateral coordinate on the rail profile [m]
+  double wheel_angle = 0.0;  ///< angle of the point on the wheel circle from straight down [rad]
+  /// Contact angle [rad]: inclination of the rail surface at the point, positive when the
+  /// contact normal leans towards the track centre (flange contact ~ +70 deg). The Manchester
+  /// benchmark's results use the opposite sign on the gauge face.
+  double contact_angle = 0.0;
+  double rolling_radius = 0.0;  ///< wheel radius at the point [m]
+  double curvature_a = 0.0;     ///< A, longitudinal: gap ~ A x^2 + B s^2 [1/m]
+  double curvature_b = 0.0;     ///< B, lateral (in the contact plane) [1/m]; <= 0: conformal
+  double vertical_gap = 0.0;    ///< vertical separation, negative = interpenetration [m]
+  double penetration = 0.0;     ///< normal interpenetration max(0, -gap cos(gamma)) [m]
+  double barrier = std::numeric_limits<double>::infinity();  ///< largest section gap between
+                                                             ///< this and the previous candidate on
+                                                             ///< the same wheel [m]
+  double normal_force = 0.0;                                 ///< set by solve_vertical_load [N]
+  [[nodiscard]] bool on_flange() const { return contact_angle > kFlangeAngle; }
+  static constexpr double kFlangeAngle = 0.5236;  ///< 30 deg: above it the point is "flange"
+};
+
+/// All candidate points (local minima of the section gap) of one wheel, in increasing wheel_y;
+/// minima whose gap exceeds `max_gap` [m] are skipped (not refined). A skipped candidate's
+/// barrier is folded into the next one's.
+[[nodiscard]] std::vector<ContactPoint> candidate_points(
+    const WheelRailPair& pair, const WheelsetPose& pose, Side side,
+    double max_gap = std::numeric_limits<double>::infinity());
+
+/// Contact points at `pose`: one per connected run of interpenetration on each wheel, both
+/// wheels (left first, then right, each in increasing wheel_y).
+[[nodiscard]] std::vector<ContactPoint> search_contacts(const WheelRailPair& pair,
+                                                        const WheelsetPose& pose);
+
+/// Same from precomputed candidates of both wheels at `pose` shifted down by `extra_drop` [m]
+/// (vertical gaps are exactly affine in the vertical position).
+[[nodiscard]] std::vector<ContactPoint> contacts_from_candidates(
+    const std::vector<ContactPoint>& candidates, double extra_drop);
+
+/// Smallest vertical gap of one wheel at `pose` [m] (negative: interpenetration).
+[[nodiscard]] double min_vertical_gap(const WheelRailPair& pair, const WheelsetPose& pose,
+                                      Side side);
+
+/// Hertz: normal load carried at normal approach `approach` [m] by an elliptic contact with
+/// relative curvatures A, B [1/m] and contact modulus E* [Pa] (Johnson eq. 4.39, exact with
+/// complete elliptic integrals). B <= 0 (conformal) is floored at 1e-3 A.
+[[nodiscard]] double hertz_load_from_approach(double curvature_a, double curvature_b,
+                                              double contact_modulus, double approach);
+
+/// Hertz contact ellipse for relative curvatures A (x, rolling) and B (y, lateral) [1/m],
+/// contact modulus E* [Pa] and normal load [N] (Johnson eq. 4.39, exact). Used to size patches
+/// from the geometry; the normal-contact models live elsewhere.
+struct HertzEllipse {
+  double semi_axis_x = 0.0;   ///< a, along the rolling direction [m]
+  double semi_axis_y = 0.0;   ///< b, lateral [m]
+  double approach = 0.0;      ///< delta [m]
+  double max_pressure = 0.0;  ///< p0 = 3 F / (2 pi a b) [Pa]
+};
+[[nodiscard]] HertzEllipse hertz_ellipse(double curvature_a, double curvature_b,
+                                         double contact_modulus, double load);
+
+/// Result of a vertical-load solve.
+struct LoadedWheelset {
+  WheelsetPose pose;                              ///< with the solved vertical position
+  std::vector<ContactPoint> points;               ///< with normal_force set
+  std::array<double, 2> vertical_load{0.0, 0.0};  ///< carried by left/right wheel [N]
+};
+
+/// Finds the vertical position at which the contact points (Hertzian springs) carry
+/// `total_vertical_load` [N] (sum of the vertical components of the normal forces, both
+/// wheels), with lateral, roll and yaw from `pose`. Throws std::runtime_error if no contact.
+[[nodiscard]] LoadedWheelset solve_vertical_load(const WheelRailPair& pair,
+                                                 const WheelsetPose& pose,
+                                                 double total_vertical_load,
+                                                 double contact_modulus);
+
+/// Rigid contact: roll and vertical position so that both wheels touch (smallest gap zero on
+/// each side), for the given lateral shift and yaw. The points are the touching ones.
+struct RigidContact {
+  WheelsetPose pose;
+  std::vector<ContactPoint> points;  ///< the deepest (touching) candidate on each wheel
+  std::array<ContactPoint, 2> main;  ///< left, right touching point
+};
+[[nodiscard]] RigidContact solve_rigid_contact(const WheelRailPair& pair, double lateral,
+                                               double yaw = 0.0);
+
+/// Undeformed separation between wheel and rail along the contact normal, sampled on a grid in
+/// the contact plane of `point`: x along the track, s across (towards the field side of that
+/// wheel), the grid centred at (x_centre, s_centre) relative to the point:
+/// gap[iy * nx + ix] at x = x_centre + (ix - (nx-1)/2) dx, s = s_centre + (iy - (ny-1)/2) ds
+/// [m]; negative inside the interpenetration, NaN where a profile ends. For semi-Hertz / MIM
+/// use gap - min(gap) as the undeformed distance z(x, y) of Toumi eq. (1).
+/// Example (Toumi ch. 2 non-Hertzian case, S1002 / UIC60 1:40 centred): pose =
+/// touching_pose(pair, {}); point = deepest of candidate_points(pair, pose, Side::right);
+/// sample_gap(pair, pose, point, 46, 100, 0.223e-3, 0.223e-3, 0.0, -3.233e-3) covers the
+/// thesis' s in [-14.374, 7.908] mm (both lobes).
+struct GapGrid {
+  int nx = 0, ny = 0;
+  double dx = 0.0, ds = 0.0;              ///< [m]
+  double x_centre = 0.0, s_centre = 0.0;  ///< grid centre relative to the point [m]
+  std::vector<double> gap;                ///< [m]
+  [[nodiscard]] double at(int ix, int iy) const {
+    return gap[static_cast<std::size_t>(iy * nx + ix)];
+  }
+  [[nodiscard]] double x(int ix) const { return x_centre + (ix - 0.5 * (nx - 1)) * dx; }
+  [[nodiscard]] double s(int iy) const { return s_centre + (iy - 0.5 * (ny - 1)) * ds; }
+};
+[[nodiscard]] GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose,
+                                 const ContactPoint& point, int nx, int ny, double dx, double ds,
+                                 double x_centre = 0.0, double s_centre = 0.0);
+
+/// `pose` moved vertically so that its deepest point just touches (smallest gap zero).
+[[nodiscard]] WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose);
+
+}  // namespace ferro::contact

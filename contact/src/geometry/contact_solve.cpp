@@ -1,0 +1,321 @@
+// Vertical-load solve with Hertzian springs, rigid two-wheel touching solve, and the undeformed
+// gap sampled in the contact plane.
+//
+// References: Johnson, "Contact Mechanics" (1985) eq. (4.39): A = (p0/E*)(b/(e^2 a^2))(K - E),
+// B = (p0/E*)(b/(e^2 a^2))((a/b)^2 E - K), delta = (p0/E*) b K, p0 = 3P/(2 pi a b);
+// Toumi (2016) eqs. (1), (5)-(13) (gap z = z1 - z2, Hertz); EN 15302 (rigid wheelset for the
+// rolling-radius difference: both wheels touching, roll free).
+// Known deviations: the vertical equilibrium ignores tangential forces (sum N cos(gamma) = load);
+// conformal points (B <= 0) get B floored at 1e-3 A for the stiffness only.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+
+namespace ferro::contact {
+namespace {
+
+// Eccentricity e of the Hertz ellipse for curvature ratio q = B/A >= 1, from
+// B/A = ((a/b)^2 E - K) / (K - E) (monotone in e; bisection). Returns K(e), E(e) too.
+double hertz_eccentricity(double q, double& kk, double& ee) {
+  auto ratio = [](double e) {
+    const double k = std::comp_ellint_1(e), el = std::comp_ellint_2(e);
+    return (el / (1.0 - e * e) - k) / (k - el);
+  };
+  double lo = 1e-6, hi = 1.0 - 1e-15;
+  for (int it = 0; it < 60 && hi - lo > 1e-14; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (ratio(mid) < q)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  const double e = 0.5 * (lo + hi);
+  kk = std::comp_ellint_1(e);
+  ee = std::comp_ellint_2(e);
+  return e;
+}
+
+// Load per approach^(3/2) of a Hertz contact [N/m^1.5].
+double hertz_stiffness(double ca, double cb, double estar) {
+  cb = std::max(cb, 1e-3 * ca);
+  const double a1 = std::min(ca, cb), b1 = std::max(ca, cb);
+  const double q = b1 / a1;
+  if (q < 1.0 + 1e-9) {
+    const double radius = 1.0 / (2.0 * a1);
+    return 4.0 / 3.0 * estar * std::sqrt(radius);
+  }
+  double k, ee;
+  const double e = hertz_eccentricity(q, k, ee);
+  // a = alpha P^(1/3), delta = 3 K P^(2/3) / (2 pi E* alpha)  =>  P = c delta^(3/2).
+  const double alpha = std::cbrt(3.0 * (k - ee) / (2.0 * std::numbers::pi * estar * a1 * e * e));
+  return std::pow(2.0 * std::numbers::pi * estar * alpha / (3.0 * k), 1.5);
+}
+
+}  // namespace
+
+double hertz_load_from_approach(double ca, double cb, double estar, double approach) {
+  if (!(ca > 0.0) || !(estar > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "hertz_load_from_approach: need A > 0 and E* > 0, got A = {}, E* = {}", ca, estar));
+  }
+  if (!(approach > 0.0)) return 0.0;
+  return hertz_stiffness(ca, cb, estar) * std::pow(approach, 1.5);
+}
+
+HertzEllipse hertz_ellipse(double ca, double cb, double estar, double load) {
+  if (!(ca > 0.0) || !(cb > 0.0) || !(estar > 0.0) || !(load > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "hertz_ellipse: need A, B, E*, load > 0, got {}, {}, {}, {}", ca, cb, estar, load));
+  }
+  const double a1 = std::min(ca, cb), q = std::max(ca, cb) / a1;
+  HertzEllipse h;
+  double major, minor;
+  if (q < 1.0 + 1e-9) {
+    const double radius = 1.0 / (2.0 * a1);
+    major = minor = std::cbrt(3.0 * load * radius / (4.0 * estar));
+    h.approach = major * major / radius;
+  } else {
+    double k, ee;
+    const double e = hertz_eccentricity(q, k, ee);
+    // Johnson (4.39): A' = 3P (K - E) / (2 pi E* a^3 e^2), delta = 3 P K / (2 pi E* a).
+    major = std::cbrt(3.0 * load * (k - ee) / (2.0 * std::numbers::pi * estar * a1 * e * e));
+    minor = major * std::sqrt(1.0 - e * e);
+    h.approach = 3.0 * load * k / (2.0 * std::numbers::pi * estar * major);
+  }
+  // The major axis lies along the direction of the smaller curvature.
+  h.semi_axis_x = ca <= cb ? major : minor;
+  h.semi_axis_y = ca <= cb ? minor : major;
+  h.max_pressure = 3.0 * load / (2.0 * std::numbers::pi * major * minor);
+  return h;
+}
+
+LoadedWheelset solve_vertical_load(const WheelRailPair& pair, const WheelsetPose& pose,
+                                   double total_load, double estar) {
+  if (!(total_load > 0.0) || !(estar > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("solve_vertical_load: load and contact modulus must be > 0, got {} N, {} Pa",
+                    total_load, estar));
+  }
+  WheelsetPose base = pose;
+  base.vertical = 0.0;
+  std::vector<ContactPoint> cands = candidate_points(pair, base, Side::left);
+  const std::vector<ContactPoint> right = candidate_points(pair, base, Side::right);
+  cands.insert(cands.end(), right.begin(), right.end());
+  if (cands.empty()) throw std::runtime_error("solve_vertical_load: no candidate contact point");
+  std::vector<double> stiff(cands.size());
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    stiff[i] = hertz_stiffness(cands[i].curvature_a, cands[i].curvature_b, estar);
+  }
+  // Vertical load carried at drop v: each penetrating run loads at its deepest candidate.
+  auto load_at = [&](double v, std::vector<ContactPoint>* pts) {
+    std::vector<ContactPoint> c = contacts_from_candidates(cands, v);
+    double total = 0.0;
+    for (ContactPoint& p : c) {
+      std::size_t idx = 0;
+      for (std::size_t i = 0; i < cands.size(); ++i) {
+        if (cands[i].side == p.side && cands[i].wheel_y == p.wheel_y) idx = i;
+      }
+      p.normal_force = stiff[idx] * std::pow(p.penetration, 1.5);
+      total += p.normal_force * std::cos(p.contact_angle);
+    }
+    if (pts) *pts = std::move(c);
+    return total;
+  };
+  double lo = 1.0;
+  for (const ContactPoint& p : cands) lo = std::min(lo, p.vertical_gap);
+  double hi = lo + 1e-5;
+  while (load_at(hi, nullptr) < total_load) {
+    hi = lo + 2.0 * (hi - lo);
+    if (hi - lo > 0.05) throw std::runtime_error("solve_vertical_load: load not reached");
+  }
+  for (int it = 0; it < 80 && hi - lo > 1e-13; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (load_at(mid, nullptr) < total_load)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  LoadedWheelset out;
+  out.pose = base;
+  out.pose.vertical = 0.5 * (lo + hi);
+  load_at(out.pose.vertical, &out.points);
+  for (const ContactPoint& p : out.points) {
+    out.vertical_load[static_cast<int>(p.side)] += p.normal_force * std::cos(p.contact_angle);
+  }
+  return out;
+}
+
+RigidContact solve_rigid_contact(const WheelRailPair& pair, double lateral, double yaw) {
+  WheelsetPose pose;
+  pose.lateral = lateral;
+  pose.yaw = yaw;
+  auto gaps = [&](double roll, std::vector<ContactPoint>* l, std::vector<ContactPoint>* r) {
+    pose.roll = roll;
+    std::vector<ContactPoint> cl = candidate_points(pair, pose, Side::left);
+    std::vector<ContactPoint> cr = candidate_points(pair, pose, Side::right);
+    double gl = 1.0, gr = 1.0;
+    for (const auto& p : cl) gl = std::min(gl, p.vertical_gap);
+    for (const auto& p : cr) gr = std::min(gr, p.vertical_gap);
+    if (l) *l = std::move(cl);
+    if (r) *r = std::move(cr);
+    return std::pair<double, double>{gl, gr};
+  };
+  // f(roll) = gap_right - gap_left decreases with roll (+roll lowers the right wheel).
+  auto f = [&](double roll) {
+    const auto [gl, gr] = gaps(roll, nullptr, nullptr);
+    return gr - gl;
+  };
+  double a = -0.01, b = 0.01;
+  double fa = f(a), fb = f(b);
+  for (int it = 0; it < 10 && fa * fb > 0.0; ++it) {
+    a *= 2.0;
+    b *= 2.0;
+    fa = f(a);
+    fb = f(b);
+  }
+  if (fa * fb > 0.0) throw std::runtime_error("solve_rigid_contact: roll not bracketed");
+  // Illinois regula falsi.
+  double x = 0.0;
+  int side = 0;
+  for (int it = 0; it < 100; ++it) {
+    x = (a * fb - b * fa) / (fb - fa);
+    const double fx = f(x);
+    if (std::abs(fx) < 1e-12 || std::abs(b - a) < 1e-13) break;
+    if (fx * fb > 0.0) {
+      b = x;
+      fb = fx;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = x;
+      fa = fx;
+      if (side == +1) fb *= 0.5;
+      side = +1;
+    }
+  }
+  std::vector<ContactPoint> cl, cr;
+  const auto [gl, gr] = gaps(x, &cl, &cr);
+  const double drop = std::min(gl, gr);
+  RigidContact out;
+  out.pose = pose;
+  out.pose.roll = x;
+  out.pose.vertical = drop;
+  auto pick = [&](std::vector<ContactPoint>& c, int idx) {
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      c[i].vertical_gap -= drop;
+      if (c[i].vertical_gap < c[best].vertical_gap) best = i;
+    }
+    out.main[static_cast<std::size_t>(idx)] = c[best];
+    // Report every candidate within 1 um of touching: two-point contact on one wheel.
+    for (const auto& p : c) {
+      if (p.vertical_gap < 1e-6) out.points.push_back(p);
+    }
+  };
+  if (cl.empty() || cr.empty()) throw std::runtime_error("solve_rigid_contact: no contact");
+  pick(cl, 0);
+  pick(cr, 1);
+  for (auto& p : out.points) p.penetration = 0.0;
+  return out;
+}
+
+WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose) {
+  WheelsetPose p = pose;
+  const double g =
+      std::min(min_vertical_gap(pair, pose, Side::left), min_vertical_gap(pair, pose, Side::right));
+  p.vertical += g;
+  return p;
+}
+
+GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const ContactPoint& pt,
+                   int nx, int ny, double dx, double ds, double x_centre, double s_centre) {
+  if (nx < 1 || ny < 1 || !(dx > 0.0) || !(ds > 0.0)) {
+    throw std::invalid_argument("sample_gap: need nx, ny >= 1 and dx, ds > 0 [m]");
+  }
+  const double sgn = pt.side == Side::right ? 1.0 : -1.0;
+  const ProfileCurve& rail = pair.rail();
+  const ProfileCurve& wheel = pair.wheel();
+  const double top = pair.rail_reference().top_z;
+  const double ro = pair.rail_offset(), wo = pair.wheel_offset();
+  double zr, dzr;
+  rail.eval(pt.rail_y, zr, dzr);
+  const double f1 = sgn * dzr;  // track-frame rail slope dz/dy at the point
+  const double nn = std::sqrt(1.0 + f1 * f1);
+  const double ny_ = f1 / nn, nz_ = -1.0 / nn;     // normal, out of the rail
+  const double ty = sgn / nn, tz = sgn * f1 / nn;  // lateral tangent, to the field
+  // Wheelset rotation R = Rz(yaw) Rx(roll); we need R^T.
+  const double cp = std::cos(pose.yaw), sp = std::sin(pose.yaw);
+  const double cr = std::cos(pose.roll), sr = std::sin(pose.roll);
+  const double yc = pose.lateral, zc = -pair.params().nominal_radius + pose.vertical;
+  auto to_local = [&](double x, double y, double z, double& lx, double& ly, double& lz) {
+    // Rz^T then Rx^T.
+    const double x1 = cp * x + sp * y, y1 = -sp * x + cp * y, z1 = z;
+    lx = x1;
+    ly = cr * y1 + sr * z1;
+    lz = -sr * y1 + cr * z1;
+  };
+  double mx, my, mz;
+  to_local(0.0, ny_, nz_, mx, my, mz);  // normal in the wheelset frame
+  GapGrid grid;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.dx = dx;
+  grid.ds = ds;
+  grid.x_centre = x_centre;
+  grid.s_centre = s_centre;
+  grid.gap.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny),
+                  std::numeric_limits<double>::quiet_NaN());
+  for (int iy = 0; iy < ny; ++iy) {
+    const double s = grid.s(iy);
+    for (int ix = 0; ix < nx; ++ix) {
+      const double x = pt.x + grid.x(ix);
+      const double qy = pt.y + s * ty, qz = pt.z + s * tz;
+      // Rail along the normal line: f(qy + t ny) = qz + t nz.
+      double t_r = 0.0;
+      bool ok = true;
+      for (int it = 0; it < 30; ++it) {
+        const double yr = sgn * (qy + t_r * ny_) - ro;
+        if (!rail.contains(yr)) {
+          ok = false;
+          break;
+        }
+        double z, dz;
+        rail.eval(yr, z, dz);
+        const double h = (z - top) - (qz + t_r * nz_);
+        const double dh = sgn * dz * ny_ - nz_;
+        const double step = h / dh;
+        t_r -= step;
+        if (std::abs(step) < 1e-12) break;
+      }
+      // Wheel along the same line: rho(P) = r(y_w).
+      double t_w = t_r;
+      for (int it = 0; it < 30 && ok; ++it) {
+        double lx, ly, lz;
+        to_local(x, qy + t_w * ny_ - yc, qz + t_w * nz_ - zc, lx, ly, lz);
+        const double yw = sgn * ly - wo;
+        if (!wheel.contains(yw)) {
+          ok = false;
+          break;
+        }
+        double zw, dzw;
+        wheel.eval(yw, zw, dzw);
+        const double rho = std::hypot(lx, lz);
+        const double g = rho - pair.wheel_radius(yw);
+        const double dg = (lx * mx + lz * mz) / rho - dzw * sgn * my;
+        const double step = g / dg;
+        t_w -= step;
+        if (std::abs(step) < 1e-12) break;
+      }
+      if (ok) grid.gap[static_cast<std::size_t>(iy * nx + ix)] = t_w - t_r;
+    }
+  }
+  return grid;
+}
+
+}  // namespace ferro::contact

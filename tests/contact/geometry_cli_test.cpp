@@ -1,0 +1,111 @@
+// `ferrodyn geometry search`: JSON for one position, CSV batch, exit code 2 on bad input.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out;
+};
+
+CliRun run(const std::string& args) {
+  const std::string cmd = std::string(FERRODYN_EXE) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (p && fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = p ? pclose(p) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+const std::string kProfiles = std::string(FERRO_SHARED_DATA_DIR) + "/profiles/";
+const std::string kPair = "--wheel " + kProfiles + "MBench_S1002_v3.prw --rail " + kProfiles +
+                          "MBench_UIC60_v3.prr --gauge-mm 1435 --flange-back-mm 1360 "
+                          "--flange-back-y-mm -70 --radius-mm 460";
+
+}  // namespace
+
+TEST(geometry_cli, search_prints_every_contact_point_as_json) {
+  // Manchester case 14 (y = 6.5 mm), 2 x 10 kN: tread on the left, flange on the right.
+  const CliRun r = run("geometry search " + kPair +
+                       " --y-mm 6.5 --roll-rad -0.004376 --yaw-rad 0.0156 --load-n 20000");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const std::regex side("\"side\": \"(left|right)\"");
+  const auto n =
+      std::distance(std::sregex_iterator(r.out.begin(), r.out.end(), side), std::sregex_iterator());
+  EXPECT_EQ(n, 2);
+  EXPECT_NE(r.out.find("\"flange\": true"), std::string::npos);
+  std::smatch m;
+  double total = 0.0;
+  std::string s = r.out;
+  const std::regex force("\"contact_angle_deg\": ([-0-9.e]+).*?\"normal_force_n\": ([-0-9.e]+)");
+  for (std::sregex_iterator it(s.begin(), s.end(), force), end; it != end; ++it) {
+    total += std::stod((*it)[2]) * std::cos(std::stod((*it)[1]) * 3.14159265358979 / 180.0);
+  }
+  EXPECT_NEAR(total, 20000.0, 1e-2);  // vertical equilibrium printed to 1e-3 N per point
+}
+
+TEST(geometry_cli, batch_csv_in_csv_out) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string in = (dir / "ferro_geometry_batch_in.csv").string();
+  const std::string out = (dir / "ferro_geometry_batch_out.csv").string();
+  std::ofstream(in)
+      << "case,y_mm,roll_rad,yaw_rad,load_n\n1,0,0,0,20000\n11,5.0,-0.0003554,0.012,20000\n";
+  const CliRun r = run("geometry search " + kPair + " --batch " + in + " --out " + out);
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream f(out);
+  std::string line;
+  int rows = 0, case11_right = 0;
+  std::getline(f, line);
+  EXPECT_NE(line.find("contact_angle_deg"), std::string::npos);
+  while (std::getline(f, line)) {
+    ++rows;
+    if (line.rfind("11,", 0) == 0 && line.find(",right,") != std::string::npos) ++case11_right;
+  }
+  EXPECT_EQ(rows, 2 + 3);      // centred: one point per wheel; y = 5 mm: 1 left + 2 right
+  EXPECT_EQ(case11_right, 2);  // two-point contact on the right wheel
+}
+
+TEST(geometry_cli, bad_input_exits_with_code_2_and_names_it) {
+  const CliRun r1 =
+      run("geometry search --wheel /nonexistent.prw --rail " + kProfiles + "MBench_UIC60_v3.prr");
+  EXPECT_EQ(r1.code, 2);
+  EXPECT_NE(r1.out.find("/nonexistent.prw"), std::string::npos);
+  const CliRun r2 = run("geometry search " + kPair + " --inclination 1:x");
+  EXPECT_EQ(r2.code, 2);
+  EXPECT_NE(r2.out.find("--inclination"), std::string::npos);
+  const CliRun r3 = run("geometry search --wheel " + kProfiles + "MBench_S1002_v3.prw --rail " +
+                        kProfiles + "MBench_UIC60_v3.prr --gauge-mm 14350");
+  EXPECT_EQ(r3.code, 2);
+  EXPECT_NE(r3.out.find("track_gauge"), std::string::npos);
+}
+
+TEST(geometry_cli, pair_yaml_writes_table_diagram_and_conicity) {
+  // The Manchester benchmark file is a valid PAIR.yaml (track + wheelset keys, paths relative).
+  const auto dir = std::filesystem::temp_directory_path() / "ferro_geometry_pair";
+  std::filesystem::remove_all(dir);
+  const CliRun r =
+      run("geometry " + std::string(FERRO_SHARED_DATA_DIR) +
+          "/manchester_contact_benchmark_a22.yaml --no-plot --out-dir " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* f : {"contact_table.h5", "contact_points.csv", "conicity.csv", "profiles.csv"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  }
+  std::ifstream con(dir / "conicity.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(con, line)) ++rows;
+  EXPECT_EQ(rows, 21);  // header + amplitudes 0.5 .. 10 mm
+  const CliRun bad = run("geometry /nonexistent/pair.yaml --no-plot");
+  EXPECT_EQ(bad.code, 2);
+}
