@@ -25,6 +25,7 @@
 #include "ferro/contact/geometry/contact_table.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 #include "ferro/scenarios/cli.hpp"
+#include "ferro/scenarios/plotting.hpp"
 
 namespace ferro::cli {
 namespace {
@@ -319,13 +320,10 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
              out_dir);
   std::fflush(stdout);
   if (plot) {
-    const std::string script = std::string(FERRO_SOURCE_DIR) + "/tools/geometry_plot.py";
-    const std::string cmd = fmt::format("python3 '{}' '{}'", script, out_dir);
-    if (std::system(cmd.c_str()) != 0) {
+    if (scenarios::run_python_tool("geometry_plot.py", {out_dir}) != 0) {
       throw std::runtime_error(fmt::format(
-          "plotting failed ({}); the CSV files are written, plot them with that script once "
-          "python3 and matplotlib are available",
-          cmd));
+          "plotting failed ({} tools/geometry_plot.py {}); the CSV files are written",
+          scenarios::python_program(), out_dir));
     }
   }
   return kExitOk;

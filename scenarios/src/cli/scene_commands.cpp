@@ -8,6 +8,7 @@
 
 #include "ferro/scenarios/cli.hpp"
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "terminal.hpp"
@@ -45,13 +46,12 @@ std::string default_plot_dir(const std::string& h5) {
 int make_plots(const std::string& mode, const std::string& h5,
                const std::vector<std::string>& signals, const std::string& out_dir,
                const std::string& format) {
-  std::vector<std::string> argv = {python_program(), plot_script_path(), mode,  h5, "--out",
-                                   out_dir,          "--format",         format};
+  std::vector<std::string> args = {mode, h5, "--out", out_dir, "--format", format};
   if (!signals.empty()) {
-    argv.emplace_back("--signals");
-    argv.insert(argv.end(), signals.begin(), signals.end());
+    args.emplace_back("--signals");
+    args.insert(args.end(), signals.begin(), signals.end());
   }
-  return run_program(argv);
+  return scenarios::run_python_tool("ferroplot.py", args);
 }
 
 int do_run(const RunArgs& a) {

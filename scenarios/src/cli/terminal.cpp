@@ -1,14 +1,10 @@
 #include "terminal.hpp"
 
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
-
-extern char** environ;
 
 namespace ferro::cli {
 namespace {
@@ -77,39 +73,6 @@ InterruptGuard::~InterruptGuard() {
 
 int InterruptGuard::signal_received() {
   return g_signal;
-}
-
-int run_program(const std::vector<std::string>& argv) {
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0) return -1;
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0) return -1;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string python_program() {
-  if (const char* env = std::getenv("FERRO_PYTHON"); env != nullptr && *env != '\0') return env;
-  if (std::filesystem::exists("/usr/bin/python3")) return "/usr/bin/python3";
-  return "python3";
-}
-
-std::string plot_script_path() {
-  namespace fs = std::filesystem;
-  if (const char* env = std::getenv("FERRO_PLOT_SCRIPT"); env != nullptr && fs::exists(env))
-    return env;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path installed =
-        exe.parent_path().parent_path() / "share" / "ferrodyn" / "ferroplot.py";
-    if (fs::exists(installed)) return installed.string();
-  }
-  const fs::path source = fs::path(FERRO_SOURCE_DIR) / "tools" / "ferroplot.py";
-  if (fs::exists(source)) return source.string();
-  return std::string(FERRO_INSTALL_DATADIR) + "/ferroplot.py";
 }
 
 }  // namespace ferro::cli

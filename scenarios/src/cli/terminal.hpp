@@ -40,16 +40,4 @@ class InterruptGuard {
   struct sigaction old_term_ {};
 };
 
-/// Runs a program with arguments (no shell); returns its exit status, or -1 when it could not
-/// be started.
-int run_program(const std::vector<std::string>& argv);
-
-/// Path of the plotting script: $FERRO_PLOT_SCRIPT, next to the installed program, or the
-/// source tree's tools/ferroplot.py.
-[[nodiscard]] std::string plot_script_path();
-
-/// Python interpreter for the plots: $FERRO_PYTHON, else Debian's /usr/bin/python3 (where
-/// python3-matplotlib and python3-h5py install), else python3 from PATH.
-[[nodiscard]] std::string python_program();
-
 }  // namespace ferro::cli

@@ -1,5 +1,6 @@
 // Creep curves and patch pictures for `ferrodyn contact curve|patch`.
 #include "ferro/scenarios/contact_analysis.hpp"
+#include "ferro/scenarios/plotting.hpp"
 
 #include <fmt/format.h>
 #include <fmt/os.h>
@@ -35,28 +36,6 @@ contact::TangentialSolution solve_all_patches(const contact::TangentialModel& mo
     sum.moment_z += s.moment_z;
   }
   return sum;
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string out = "'";
-  for (char ch : s) {
-    if (ch == '\'')
-      out += "'\\''";
-    else
-      out += ch;
-  }
-  return out + "'";
-}
-
-std::string plot_script_path() {
-  const std::filesystem::path source =
-      std::filesystem::path(FERRO_SOURCE_DIR) / "tools" / "plot_contact.py";
-  if (std::filesystem::exists(source)) return source.string();
-  const std::filesystem::path installed =
-      std::filesystem::path(FERRO_INSTALL_DATADIR) / "plot_contact.py";
-  if (std::filesystem::exists(installed)) return installed.string();
-  throw std::runtime_error(
-      fmt::format("plot_contact.py not found in {} or {}", source.string(), installed.string()));
 }
 
 }  // namespace
@@ -225,21 +204,12 @@ void write_patch_csv(const std::string& path, const PatchPicture& picture) {
 
 void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
                      const std::string& title) {
-  const std::string script = plot_script_path();
-  std::vector<std::string> interpreters;
-  if (const char* env = std::getenv("FERRO_PYTHON")) interpreters.emplace_back(env);
-  interpreters.emplace_back("python3");
-  interpreters.emplace_back("/usr/bin/python3");
-  for (const std::string& py : interpreters) {
-    const std::string cmd =
-        fmt::format("{} {} {} {} {} {} 2>/dev/null", shell_quote(py), shell_quote(script), mode,
-                    shell_quote(csv), shell_quote(png), shell_quote(title));
-    if (std::system(cmd.c_str()) == 0) return;
+  if (run_python_tool("plot_contact.py", {mode, csv, png, title}) != 0) {
+    throw std::runtime_error(fmt::format(
+        "could not draw {} ({} with matplotlib needed; set FERRO_PYTHON to choose another); the "
+        "CSV {} is written",
+        png, python_program(), csv));
   }
-  throw std::runtime_error(
-      fmt::format("could not draw {}: no Python with matplotlib (tried $FERRO_PYTHON, python3, "
-                  "/usr/bin/python3); the CSV {} is written",
-                  png, csv));
 }
 
 }  // namespace ferro::scenarios

@@ -1,0 +1,57 @@
+#include "ferro/scenarios/plotting.hpp"
+
+#include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+extern char** environ;
+
+namespace ferro::scenarios {
+
+std::string python_program() {
+  if (const char* env = std::getenv("FERRO_PYTHON"); env != nullptr && *env != '\0') return env;
+  if (std::filesystem::exists("/usr/bin/python3")) return "/usr/bin/python3";
+  return "python3";
+}
+
+std::string tool_script(const std::string& name) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> places;
+  if (const char* env = std::getenv("FERRO_TOOLS_DIR"); env != nullptr && *env != '\0') {
+    places.emplace_back(fs::path(env) / name);
+  }
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) places.push_back(exe.parent_path().parent_path() / "share" / "ferrodyn" / name);
+  places.push_back(fs::path(FERRO_SOURCE_DIR) / "tools" / name);
+  places.push_back(fs::path(FERRO_INSTALL_DATADIR) / name);
+  std::string looked;
+  for (const auto& p : places) {
+    if (fs::exists(p)) return p.string();
+    looked += (looked.empty() ? "" : ", ") + p.string();
+  }
+  throw std::runtime_error(fmt::format("plotting script {} not found (looked in {})", name, looked));
+}
+
+int run_program(const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+int run_python_tool(const std::string& script, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {python_program(), tool_script(script)};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_program(argv);
+}
+
+}  // namespace ferro::scenarios
