@@ -16,45 +16,16 @@
 #include <stdexcept>
 
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+#include "ferro/contact/hertz.hpp"
 
 namespace ferro::contact {
 namespace {
 
-// Eccentricity e of the Hertz ellipse for curvature ratio q = B/A >= 1, from
-// B/A = ((a/b)^2 E - K) / (K - E) (monotone in e; bisection). Returns K(e), E(e) too.
-double hertz_eccentricity(double q, double& kk, double& ee) {
-  auto ratio = [](double e) {
-    const double k = std::comp_ellint_1(e), el = std::comp_ellint_2(e);
-    return (el / (1.0 - e * e) - k) / (k - el);
-  };
-  double lo = 1e-6, hi = 1.0 - 1e-15;
-  for (int it = 0; it < 60 && hi - lo > 1e-14; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    if (ratio(mid) < q)
-      lo = mid;
-    else
-      hi = mid;
-  }
-  const double e = 0.5 * (lo + hi);
-  kk = std::comp_ellint_1(e);
-  ee = std::comp_ellint_2(e);
-  return e;
-}
-
-// Load per approach^(3/2) of a Hertz contact [N/m^1.5].
+// Hertz stiffness c of F = c delta^(3/2) [N/m^1.5], from the exact solution under a unit load.
+// B <= 0 (conformal) is floored at 1e-3 A.
 double hertz_stiffness(double ca, double cb, double estar) {
-  cb = std::max(cb, 1e-3 * ca);
-  const double a1 = std::min(ca, cb), b1 = std::max(ca, cb);
-  const double q = b1 / a1;
-  if (q < 1.0 + 1e-9) {
-    const double radius = 1.0 / (2.0 * a1);
-    return 4.0 / 3.0 * estar * std::sqrt(radius);
-  }
-  double k, ee;
-  const double e = hertz_eccentricity(q, k, ee);
-  // a = alpha P^(1/3), delta = 3 K P^(2/3) / (2 pi E* alpha)  =>  P = c delta^(3/2).
-  const double alpha = std::cbrt(3.0 * (k - ee) / (2.0 * std::numbers::pi * estar * a1 * e * e));
-  return std::pow(2.0 * std::numbers::pi * estar * alpha / (3.0 * k), 1.5);
+  const double delta1 = hertz_solve(ca, std::max(cb, 1e-3 * ca), 1.0, estar).approach;
+  return std::pow(delta1, -1.5);
 }
 
 }  // namespace
@@ -73,25 +44,12 @@ HertzEllipse hertz_ellipse(double ca, double cb, double estar, double load) {
     throw std::invalid_argument(fmt::format(
         "hertz_ellipse: need A, B, E*, load > 0, got {}, {}, {}, {}", ca, cb, estar, load));
   }
-  const double a1 = std::min(ca, cb), q = std::max(ca, cb) / a1;
+  const HertzSolution hs = hertz_solve(ca, cb, load, estar);
   HertzEllipse h;
-  double major, minor;
-  if (q < 1.0 + 1e-9) {
-    const double radius = 1.0 / (2.0 * a1);
-    major = minor = std::cbrt(3.0 * load * radius / (4.0 * estar));
-    h.approach = major * major / radius;
-  } else {
-    double k, ee;
-    const double e = hertz_eccentricity(q, k, ee);
-    // Johnson (4.39): A' = 3P (K - E) / (2 pi E* a^3 e^2), delta = 3 P K / (2 pi E* a).
-    major = std::cbrt(3.0 * load * (k - ee) / (2.0 * std::numbers::pi * estar * a1 * e * e));
-    minor = major * std::sqrt(1.0 - e * e);
-    h.approach = 3.0 * load * k / (2.0 * std::numbers::pi * estar * major);
-  }
-  // The major axis lies along the direction of the smaller curvature.
-  h.semi_axis_x = ca <= cb ? major : minor;
-  h.semi_axis_y = ca <= cb ? minor : major;
-  h.max_pressure = 3.0 * load / (2.0 * std::numbers::pi * major * minor);
+  h.semi_axis_x = hs.semi_axis_x;
+  h.semi_axis_y = hs.semi_axis_y;
+  h.approach = hs.approach;
+  h.max_pressure = hs.peak_pressure;
   return h;
 }
 
