@@ -21,9 +21,15 @@
 namespace ferro::contact {
 namespace {
 
+// Curvatures of sampled profiles can be unbounded at a kink; a radius below 10 um is treated as
+// 10 um, so a corner contact stays a (very stiff) point contact instead of failing.
+constexpr double kMaxCurvature = 1e5;  // [1/m]
+
 // Hertz stiffness c of F = c delta^(3/2) [N/m^1.5], from the exact solution under a unit load.
 // B <= 0 (conformal) is floored at 1e-3 A.
 double hertz_stiffness(double ca, double cb, double estar) {
+  ca = std::min(ca, kMaxCurvature);
+  cb = std::min(cb, kMaxCurvature);
   const double delta1 = hertz_solve(ca, std::max(cb, 1e-3 * ca), 1.0, estar).approach;
   return std::pow(delta1, -1.5);
 }
@@ -44,7 +50,8 @@ HertzEllipse hertz_ellipse(double ca, double cb, double estar, double load) {
     throw std::invalid_argument(fmt::format(
         "hertz_ellipse: need A, B, E*, load > 0, got {}, {}, {}, {}", ca, cb, estar, load));
   }
-  const HertzSolution hs = hertz_solve(ca, cb, load, estar);
+  const HertzSolution hs =
+      hertz_solve(std::min(ca, kMaxCurvature), std::min(cb, kMaxCurvature), load, estar);
   HertzEllipse h;
   h.semi_axis_x = hs.semi_axis_x;
   h.semi_axis_y = hs.semi_axis_y;
