@@ -88,7 +88,7 @@ struct InfluenceOperator::Impl {
   fftw_plan forward = nullptr;   // real_a -> spec_a
   fftw_plan backward = nullptr;  // spec_c -> real_a
   Spectrum kzz, kxx, kxy, kyy, dxx, dxy, dyx, dyy;
-  double self_zz = 0.0, self_xx = 0.0, self_yy = 0.0;
+  double self_zz = 0.0, self_xx = 0.0, self_yy = 0.0, roll_self = 0.0;
 
   Impl(const Grid& g, const CombinedMaterial& m, bool measure)
       : grid(g),
@@ -156,6 +156,7 @@ struct InfluenceOperator::Impl {
     self_zz = at(0, 0).zz;
     self_xx = at(0, 0).xx;
     self_yy = at(0, 0).yy;
+    roll_self = (at(0, 0).xx - at(1, 0).xx) / dx;
     kzz = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).zz; });
     kxx = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).xx; });
     kxy = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).xy; });
@@ -263,5 +264,6 @@ void InfluenceOperator::rolling_difference(const double* traction_x, const doubl
 double InfluenceOperator::normal_self() const { return impl_->self_zz; }
 double InfluenceOperator::tangential_self_x() const { return impl_->self_xx; }
 double InfluenceOperator::tangential_self_y() const { return impl_->self_yy; }
+double InfluenceOperator::rolling_self() const { return impl_->roll_self; }
 
 }  // namespace ferro::contact::mim

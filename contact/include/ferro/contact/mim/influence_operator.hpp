@@ -44,6 +44,8 @@ class InfluenceOperator {
   /// Diagonal entries A^xx_ii, A^yy_ii [m/Pa].
   [[nodiscard]] double tangential_self_x() const;
   [[nodiscard]] double tangential_self_y() const;
+  /// Diagonal of -(B^xx - A^xx)/h, i.e. (A^xx(0) - A^xx(h))/h [1/Pa].
+  [[nodiscard]] double rolling_self() const;
 
  private:
   struct Impl;
