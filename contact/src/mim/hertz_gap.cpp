@@ -46,16 +46,17 @@ HertzGap hertz_gap_for_ellipse(double a, double b, double normal_force, double c
   return g;
 }
 
-Grid grid_for_ellipse(double a, double b, int elements_along_x, double margin) {
-  if (!(a > 0.0) || !(b > 0.0) || elements_along_x < 2 || !(margin >= 0.0)) {
+Grid grid_for_ellipse(double a, double b, int elements_minor, double margin) {
+  if (!(a > 0.0) || !(b > 0.0) || elements_minor < 2 || !(margin >= 0.0)) {
     throw std::invalid_argument(fmt::format(
-        "grid_for_ellipse: need semi axes > 0 m, elements_along_x >= 2 and margin >= 0, got "
-        "a = {}, b = {}, elements_along_x = {}, margin = {}",
-        a, b, elements_along_x, margin));
+        "grid_for_ellipse: need semi axes > 0 m, elements_minor >= 2 and margin >= 0, got "
+        "a = {}, b = {}, elements_minor = {}, margin = {}",
+        a, b, elements_minor, margin));
   }
-  const double h = 2.0 * a * (1.0 + margin) / elements_along_x;
+  const double h = 2.0 * std::min(a, b) * (1.0 + margin) / elements_minor;
+  const int nx = std::max(2, static_cast<int>(std::ceil(2.0 * a * (1.0 + margin) / h)));
   const int ny = std::max(1, static_cast<int>(std::ceil(2.0 * b * (1.0 + margin) / h)));
-  return Grid::centred(elements_along_x, ny, h, h);
+  return Grid::centred(nx, ny, h, h);
 }
 
 Field quadratic_gap(const Grid& grid, double cx, double cy) {

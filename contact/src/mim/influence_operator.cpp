@@ -89,8 +89,10 @@ struct InfluenceOperator::Impl {
   fftw_plan backward = nullptr;  // spec_c -> real_a
   Spectrum kzz, kxx, kxy, kyy, dxx, dxy, dyx, dyy;
   double self_zz = 0.0, self_xx = 0.0, self_yy = 0.0, roll_self = 0.0;
+  std::unique_ptr<InfluenceOperator> coarse;
+  bool measure = false;
 
-  Impl(const Grid& g, const CombinedMaterial& m, bool measure)
+  Impl(const Grid& g, const CombinedMaterial& m, bool measure_plans)
       : grid(g),
         material(m),
         px(fft_size(2 * g.nx)),
@@ -102,12 +104,13 @@ struct InfluenceOperator::Impl {
         spec_a(ncomplex),
         spec_b(ncomplex),
         spec_c(ncomplex) {
-    const unsigned flags = (measure ? FFTW_MEASURE : FFTW_ESTIMATE) | FFTW_DESTROY_INPUT;
+    const unsigned flags = (measure_plans ? FFTW_MEASURE : FFTW_ESTIMATE) | FFTW_DESTROY_INPUT;
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
       forward = fftw_plan_dft_r2c_2d(py, px, real_a.data, spec_a.data, flags);
       backward = fftw_plan_dft_c2r_2d(py, px, spec_c.data, real_a.data, flags);
     }
+    measure = measure_plans;
     build_kernels();
   }
 
@@ -259,6 +262,21 @@ void InfluenceOperator::rolling_difference(const double* traction_x, const doubl
                                            double* out_x, double* out_y) {
   impl_->apply_block(impl_->dxx, impl_->dxy, impl_->dyx, impl_->dyy, traction_x, traction_y,
                      out_x, out_y);
+}
+
+InfluenceOperator& InfluenceOperator::coarse() {
+  if (!impl_->coarse) {
+    const Grid& f = impl_->grid;
+    Grid c;
+    c.nx = std::max(2, (f.nx + 1) / 2);
+    c.ny = std::max(1, (f.ny + 1) / 2);
+    c.dx = 2.0 * f.dx;
+    c.dy = f.ny > 1 ? 2.0 * f.dy : f.dy;
+    c.x0 = f.x0 + 0.5 * f.dx;
+    c.y0 = f.ny > 1 ? f.y0 + 0.5 * f.dy : f.y0;
+    impl_->coarse = std::make_unique<InfluenceOperator>(c, impl_->material, impl_->measure);
+  }
+  return *impl_->coarse;
 }
 
 double InfluenceOperator::normal_self() const { return impl_->self_zz; }

@@ -27,9 +27,10 @@ struct HertzGap {
 [[nodiscard]] HertzGap hertz_gap_for_ellipse(double semi_axis_x, double semi_axis_y,
                                              double normal_force, double contact_modulus);
 
-/// Grid of square elements (dx = dy) covering the ellipse a x b with a relative margin
-/// (e.g. 0.05 = 5 % beyond each semi-axis), with `elements_along_x` elements across 2 a (1 + margin).
-[[nodiscard]] Grid grid_for_ellipse(double semi_axis_x, double semi_axis_y, int elements_along_x,
+/// Grid of square elements (dx = dy) centred on the origin, covering the ellipse a x b with a
+/// relative margin (0.05 = 5 % beyond each semi-axis), with `elements_minor` elements across
+/// the shorter axis 2 min(a, b) (1 + margin).
+[[nodiscard]] Grid grid_for_ellipse(double semi_axis_x, double semi_axis_y, int elements_minor,
                                     double margin = 0.05);
 
 /// Samples z = A x^2 + B y^2 on the grid.

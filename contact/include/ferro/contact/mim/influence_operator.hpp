@@ -39,6 +39,10 @@ class InfluenceOperator {
   void rolling_difference(const double* traction_x, const double* traction_y, double* out_x,
                           double* out_y);
 
+  /// Operator on the grid coarsened by two in each direction (element (I, J) covers fine
+  /// elements 2I..2I+1, 2J..2J+1), created on first use and kept. Used for nested iteration.
+  [[nodiscard]] InfluenceOperator& coarse();
+
   /// Self-influence A^zz of an element on itself [m/Pa] (diagonal of A^zz).
   [[nodiscard]] double normal_self() const;
   /// Diagonal entries A^xx_ii, A^yy_ii [m/Pa].

@@ -50,10 +50,15 @@ struct RollingInput {
 struct TangentialSolverOptions {
   /// Stick-velocity residual (relative to the largest rigid slip) and slip-direction residual
   /// (radians) at convergence [-].
-  double tolerance = 1.0e-6;
+  double tolerance = 1.0e-5;
   int max_outer_iterations = 200;
   int max_matvecs = 20000;   ///< cap on FFT products in total
   int gmres_restart = 80;
+  /// Start from the solution on the grid coarsened by two (recursively while both sides have
+  /// >= 24 elements): same equations and tolerance on the final grid, fewer iterations.
+  bool nested = true;
+  /// RMS linear residual of a Newton step, relative to tolerance x max rigid slip [-].
+  double linear_factor = 0.3;
   void validate(const std::string& where = "TangentialSolverOptions") const;
 };
 
