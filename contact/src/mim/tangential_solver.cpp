@@ -40,6 +40,11 @@ void TangentialSolverOptions::validate(const std::string& where) const {
   if (max_outer_iterations < 1 || max_matvecs < 1 || gmres_restart < 2) {
     throw std::invalid_argument(where + ": max_outer_iterations, max_matvecs >= 1 and gmres_restart >= 2 required");
   }
+  if (!(newton_forcing > 0.0 && newton_forcing < 1.0) || !(linear_factor > 0.0 && linear_factor <= 1.0)) {
+    throw std::invalid_argument(fmt::format(
+        "{}.newton_forcing must lie in (0, 1) and linear_factor in (0, 1], got {} and {}", where,
+        newton_forcing, linear_factor));
+  }
 }
 
 namespace {
@@ -358,7 +363,8 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
     // sets have settled; while sets still change, an inexact Newton step (1e-3 relative) suffices.
     const double final_target =
         inner_factor * options.tolerance * vscale * std::sqrt(static_cast<double>(m));
-    const double target = last_changes > 0 ? std::max(final_target, 1.0e-3 * norm(b)) : final_target;
+    const double target =
+        last_changes > 0 ? std::max(final_target, options.newton_forcing * norm(b)) : final_target;
     gmres(matvec, precond, b, x, target, options.gmres_restart, budget);
 
     // New tractions: stick values; slip tractions rotated to the solved direction, norm mu p.
@@ -390,11 +396,13 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
 
     // Residuals and set updates: stick elements above mu p_n become slip along their traction
     // (eq. 107); slip elements whose velocity has turned along their traction return to stick.
-    double stick_res = 0.0, dir_res = 0.0;
+    double stick_res = 0.0, dir_res = 0.0;  // sums of squares, then RMS
+    std::size_t n_stick = 0, n_slip = 0;
     int changes = 0;
     for (std::size_t i : active) {
       if (out.state[i] == ElementState::stick) {
-        stick_res = std::max(stick_res, std::hypot(vx[i], vy[i]) / vscale);
+        stick_res += (vx[i] * vx[i] + vy[i] * vy[i]) / (vscale * vscale);
+        ++n_stick;
         const double t = std::hypot(tx[i], ty[i]);
         if (t > bound[i] * (1.0 + hysteresis)) {
           out.state[i] = ElementState::slip;
@@ -412,11 +420,15 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
           ++changes;
         } else {
           // Direction misfit: velocity component across the traction, in rigid-slip units.
-          dir_res = std::max(dir_res, std::abs(vx[i] * ey[i] - vy[i] * ex[i]) / vscale);
+          const double across = (vx[i] * ey[i] - vy[i] * ex[i]) / vscale;
+          dir_res += across * across;
+          ++n_slip;
           vnorm[i] = std::hypot(vx[i], vy[i]);
         }
       }
     }
+    stick_res = n_stick > 0 ? std::sqrt(stick_res / static_cast<double>(n_stick)) : 0.0;
+    dir_res = n_slip > 0 ? std::sqrt(dir_res / static_cast<double>(n_slip)) : 0.0;
     out.stick_residual = stick_res;
     out.direction_residual = dir_res;
     last_changes = changes;

@@ -48,15 +48,19 @@ struct RollingInput {
 };
 
 struct TangentialSolverOptions {
-  /// Stick-velocity residual (relative to the largest rigid slip) and slip-direction residual
-  /// (radians) at convergence [-].
+  /// Convergence: RMS over the stick elements of the slip velocity w (rolling) or slip s
+  /// (sliding), and RMS over the slip elements of its component across the traction direction,
+  /// both relative to the largest rigid slip |c|, below this value, with unchanged sets [-].
   double tolerance = 1.0e-5;
+  /// Relative linear residual of the Newton steps taken while the stick/slip sets still change
+  /// (inexact Newton); the last step is solved to the tolerance [-].
+  double newton_forcing = 1.0e-2;
   int max_outer_iterations = 200;
   int max_matvecs = 20000;   ///< cap on FFT products in total
   int gmres_restart = 80;
   /// Start from the solution on the grid coarsened by two (recursively while both sides have
   /// >= 24 elements): same equations and tolerance on the final grid, fewer iterations.
-  bool nested = true;
+  bool nested = false;
   /// RMS linear residual of a Newton step, relative to tolerance x max rigid slip [-].
   double linear_factor = 0.3;
   void validate(const std::string& where = "TangentialSolverOptions") const;
@@ -78,9 +82,9 @@ struct TangentialSolution {
   int slip_elements = 0;
   int outer_iterations = 0;
   int matvecs = 0;  ///< FFT influence products used
-  /// max |v| over stick elements / max |rigid slip| [-] (v = s or w/V)
+  /// RMS of |v| over stick elements / max |rigid slip| [-] (v = s or w/V)
   double stick_residual = kNaN;
-  /// max over slip elements of the slip-velocity component across the traction direction,
+  /// RMS over slip elements of the slip-velocity component across the traction direction,
   /// / max |rigid slip| (direction misfit of eqs. 99, 116) [-]
   double direction_residual = kNaN;
   /// max (|tau| - mu p) / (mu max p) over the patch; <= 0 when Coulomb holds [-]
