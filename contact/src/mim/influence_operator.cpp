@@ -192,11 +192,11 @@ struct InfluenceOperator::Impl {
   void apply_scalar(const Spectrum& k, const double* in, double* out) {
     load(in, real_a.data);
     fftw_execute_dft_r2c(forward, real_a.data, spec_a.data);
-    for (std::size_t i = 0; i < ncomplex; ++i) {
-      const std::complex<double> a{spec_a.data[i][0], spec_a.data[i][1]};
-      const std::complex<double> r = k[i] * a;
-      spec_c.data[i][0] = r.real();
-      spec_c.data[i][1] = r.imag();
+    for (std::size_t i = 0; i < ncomplex; ++i) {  // explicit complex product (no NaN handling)
+      const double kr = k[i].real(), ki = k[i].imag();
+      const double ar = spec_a.data[i][0], ai = spec_a.data[i][1];
+      spec_c.data[i][0] = kr * ar - ki * ai;
+      spec_c.data[i][1] = kr * ai + ki * ar;
     }
     fftw_execute_dft_c2r(backward, spec_c.data, real_a.data);
     store(real_a.data, out);
@@ -209,25 +209,22 @@ struct InfluenceOperator::Impl {
     fftw_execute_dft_r2c(forward, real_a.data, spec_a.data);
     load(ty, real_b.data);
     fftw_execute_dft_r2c(forward, real_b.data, spec_b.data);
-    // x component
+    // Both output spectra in one pass: c = Kxx a + Kxy b into spec_c, Kyx a + Kyy b into spec_b.
     for (std::size_t i = 0; i < ncomplex; ++i) {
-      const std::complex<double> a{spec_a.data[i][0], spec_a.data[i][1]};
-      const std::complex<double> b{spec_b.data[i][0], spec_b.data[i][1]};
-      const std::complex<double> r = kxx_[i] * a + kxy_[i] * b;
-      spec_c.data[i][0] = r.real();
-      spec_c.data[i][1] = r.imag();
+      const double ar = spec_a.data[i][0], ai = spec_a.data[i][1];
+      const double br = spec_b.data[i][0], bi = spec_b.data[i][1];
+      const double k1r = kxx_[i].real(), k1i = kxx_[i].imag();
+      const double k2r = kxy_[i].real(), k2i = kxy_[i].imag();
+      const double k3r = kyx_[i].real(), k3i = kyx_[i].imag();
+      const double k4r = kyy_[i].real(), k4i = kyy_[i].imag();
+      spec_c.data[i][0] = k1r * ar - k1i * ai + k2r * br - k2i * bi;
+      spec_c.data[i][1] = k1r * ai + k1i * ar + k2r * bi + k2i * br;
+      spec_b.data[i][0] = k3r * ar - k3i * ai + k4r * br - k4i * bi;
+      spec_b.data[i][1] = k3r * ai + k3i * ar + k4r * bi + k4i * br;
     }
     fftw_execute_dft_c2r(backward, spec_c.data, real_a.data);
     store(real_a.data, ox);
-    // y component (spec_a was not overwritten by the c2r into real_a)
-    for (std::size_t i = 0; i < ncomplex; ++i) {
-      const std::complex<double> a{spec_a.data[i][0], spec_a.data[i][1]};
-      const std::complex<double> b{spec_b.data[i][0], spec_b.data[i][1]};
-      const std::complex<double> r = kyx_[i] * a + kyy_[i] * b;
-      spec_c.data[i][0] = r.real();
-      spec_c.data[i][1] = r.imag();
-    }
-    fftw_execute_dft_c2r(backward, spec_c.data, real_b.data);
+    fftw_execute_dft_c2r(backward, spec_b.data, real_b.data);
     store(real_b.data, oy);
   }
 };

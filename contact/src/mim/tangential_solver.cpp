@@ -88,18 +88,41 @@ class Problem {
   Vec wx_, wy_;
 };
 
-// Restarted right-preconditioned GMRES (Saad & Schultz 1986) for K x = b, matrix-free.
-// Stops when ||b - K x||_2 <= target or when the product budget is spent. Returns the final
-// residual norm.
+// Work vectors of GMRES, kept across the Newton steps of one solve (no page faults per call).
+struct GmresWorkspace {
+  Vec r, w, z;
+  std::vector<Vec> v;
+  std::vector<double> h, cs, sn, g, y;
+  void resize(std::size_t n, int restart) {
+    r.resize(n);
+    w.resize(n);
+    z.resize(n);
+    v.resize(static_cast<std::size_t>(restart) + 1);
+    for (Vec& vi : v) vi.resize(n);
+    h.assign(static_cast<std::size_t>((restart + 1) * restart), 0.0);
+    cs.assign(restart, 0.0);
+    sn.assign(restart, 0.0);
+    g.assign(restart + 1, 0.0);
+    y.assign(restart, 0.0);
+  }
+};
+
+// Restarted right-preconditioned GMRES (Saad & Schultz 1986) for K x = b, matrix-free, with
+// modified Gram-Schmidt. Stops when ||b - K x||_2 <= target or when the product budget is
+// spent. Returns the final residual norm.
 template <class MatVec, class Precond>
 double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double target, int restart,
-             int& budget) {
+             int& budget, GmresWorkspace& ws) {
   const std::size_t n = b.size();
-  Vec r(n), w(n), z(n);
-  std::vector<Vec> v(static_cast<std::size_t>(restart) + 1, Vec(n));
-  std::vector<double> h(static_cast<std::size_t>((restart + 1) * restart), 0.0);
-  std::vector<double> cs(restart), sn(restart), g(restart + 1);
-  auto H = [&](int i, int j) -> double& { return h[static_cast<std::size_t>(i) * restart + j]; };
+  ws.resize(n, restart);
+  Vec& r = ws.r;
+  Vec& w = ws.w;
+  Vec& z = ws.z;
+  std::vector<Vec>& v = ws.v;
+  auto H = [&](int i, int j) -> double& { return ws.h[static_cast<std::size_t>(i) * restart + j]; };
+  std::vector<double>& cs = ws.cs;
+  std::vector<double>& sn = ws.sn;
+  std::vector<double>& g = ws.g;
   double res = 0.0;
   while (true) {
     matvec(x, r);
@@ -116,12 +139,15 @@ double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double ta
       matvec(z, w);
       --budget;
       for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
-        H(i, k) = dot(w, v[i]);
-        for (std::size_t j = 0; j < n; ++j) w[j] -= H(i, k) * v[i][j];
+        const double hik = dot(w, v[i]);
+        H(i, k) = hik;
+        const double* vi = v[i].data();
+        for (std::size_t j = 0; j < n; ++j) w[j] -= hik * vi[j];
       }
       H(k + 1, k) = norm(w);
       if (H(k + 1, k) > 0.0) {
-        for (std::size_t j = 0; j < n; ++j) v[k + 1][j] = w[j] / H(k + 1, k);
+        const double inv = 1.0 / H(k + 1, k);
+        for (std::size_t j = 0; j < n; ++j) v[k + 1][j] = w[j] * inv;
       }
       for (int i = 0; i < k; ++i) {  // previous Givens rotations
         const double t = cs[i] * H(i, k) + sn[i] * H(i + 1, k);
@@ -141,15 +167,17 @@ double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double ta
       }
     }
     // Back substitution and update x += P (V y).
-    std::vector<double> y(k);
+    std::vector<double>& y = ws.y;
     for (int i = k - 1; i >= 0; --i) {
       double s = g[i];
       for (int j = i + 1; j < k; ++j) s -= H(i, j) * y[j];
       y[i] = H(i, i) != 0.0 ? s / H(i, i) : 0.0;
     }
     std::fill(w.begin(), w.end(), 0.0);
-    for (int i = 0; i < k; ++i)
-      for (std::size_t j = 0; j < n; ++j) w[j] += y[i] * v[i][j];
+    for (int i = 0; i < k; ++i) {
+      const double* vi = v[i].data();
+      for (std::size_t j = 0; j < n; ++j) w[j] += y[i] * vi[j];
+    }
     precond(w, z);
     for (std::size_t j = 0; j < n; ++j) x[j] += z[j];
     if (k == 0) return res;
@@ -258,6 +286,7 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
   }
   std::vector<std::size_t> active;
   std::vector<std::size_t> offset(n, 0);
+  GmresWorkspace workspace;
   double inner_factor = options.linear_factor;
   int last_changes = 1;
   // Set changes need a violation above a tenth of the tolerance: elements exactly on the
@@ -266,6 +295,8 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
   int budget = options.max_matvecs;
   const double h = grid.dx;
   const double pre_scale = rolling ? h / op.tangential_self_x() : 1.0 / op.tangential_self_x();
+  // Diagonal of M: A^xx_ii (sliding) or (A^xx(0) - A^xx(h)) / h (rolling).
+  const double m_diag = rolling ? op.rolling_self() : op.tangential_self_x();
 
   for (int outer = 0; outer < options.max_outer_iterations && budget > 0; ++outer) {
     out.outer_iterations = outer + 1;
@@ -321,10 +352,25 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
     // +x), so that M P is close to the symmetric positive definite A^tt / A_ii.
     auto precond = [&](const Vec& in, Vec& res) {
       if (!rolling) {
-        for (std::size_t k = 0; k < m; ++k) res[k] = pre_scale * in[k];
+        for (std::size_t i : active) {
+          const std::size_t k = offset[i];
+          if (out.state[i] == ElementState::stick) {
+            res[k] = pre_scale * in[k];
+            res[k + 1] = pre_scale * in[k + 1];
+          } else {
+            res[k] = in[k] / (m_diag + vnorm[i] / bound[i]);
+          }
+        }
         return;
       }
-      to_field(in, fx, fy);
+      std::fill(fx.begin(), fx.end(), 0.0);
+      std::fill(fy.begin(), fy.end(), 0.0);
+      for (std::size_t i : active) {
+        if (out.state[i] == ElementState::stick) {
+          fx[i] = in[offset[i]];
+          fy[i] = in[offset[i] + 1];
+        }
+      }
       for (int iy = 0; iy < grid.ny; ++iy) {
         double sx = 0.0, sy = 0.0;
         for (int ix = grid.nx - 1; ix >= 0; --ix) {
@@ -335,7 +381,15 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
           fy[i] = pre_scale * sy;
         }
       }
-      from_field(fx, fy, res);
+      for (std::size_t i : active) {
+        const std::size_t k = offset[i];
+        if (out.state[i] == ElementState::stick) {
+          res[k] = fx[i];
+          res[k + 1] = fy[i];
+        } else {  // slip rows: inverse of their diagonal (M_ii + |v_i| / mu p_i)
+          res[k] = in[k] / (m_diag + vnorm[i] / bound[i]);
+        }
+      }
     };
 
     // Right-hand side from the fixed part mu p e of the slip tractions.
@@ -365,7 +419,7 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
         inner_factor * options.tolerance * vscale * std::sqrt(static_cast<double>(m));
     const double target =
         last_changes > 0 ? std::max(final_target, options.newton_forcing * norm(b)) : final_target;
-    gmres(matvec, precond, b, x, target, options.gmres_restart, budget);
+    gmres(matvec, precond, b, x, target, options.gmres_restart, budget, workspace);
 
     // New tractions: stick values; slip tractions rotated to the solved direction, norm mu p.
     double dir_change = 0.0;
