@@ -15,6 +15,7 @@ int run_main(int argc, char** argv) {
   app.require_subcommand(1);
   VerbHandler handler;
   add_scene_commands(app, handler);
+  add_mim_commands(app, handler);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -28,5 +28,6 @@ int run_main(int argc, char** argv);
 // Verb groups. Each adds its subcommands to `app` and, from the subcommand's callback, sets
 // `handler` to the work to do once parsing has finished.
 void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, plot, validate
+void add_mim_commands(CLI::App& app, VerbHandler& handler);      // mim
 
 }  // namespace ferro::cli
