@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 using namespace ferro::contact;
@@ -64,6 +65,10 @@ TEST(MimRolling, kalker_linear_theory_circle) {
   const KalkerCoefficients coarse = mim_creep_coefficients(r, r, 40);
   const KalkerCoefficients fine = mim_creep_coefficients(r, r, 80);
   const KalkerCoefficients ref = kalker_coefficients_table(r, r, 0.28);
+  std::printf("kalker circle (40/80 elements, Richardson): C11 %.4f vs %.4f, C22 %.4f vs %.4f, C23 "
+              "%.4f vs %.4f\n",
+              2.0 * fine.c11 - coarse.c11, ref.c11, 2.0 * fine.c22 - coarse.c22, ref.c22,
+              2.0 * fine.c23 - coarse.c23, ref.c23);
   EXPECT_NEAR((2.0 * fine.c11 - coarse.c11) / ref.c11, 1.0, kTol);
   EXPECT_NEAR((2.0 * fine.c22 - coarse.c22) / ref.c22, 1.0, kTol);
   EXPECT_NEAR((2.0 * fine.c23 - coarse.c23) / ref.c23, 1.0, kTol);
@@ -115,6 +120,10 @@ TEST(MimRolling, thesis_sphere_cases) {
       EXPECT_LT(t.force_y, 0.0);   // sign of -G (ab)^1.5 C23 phi, eq. (39)
       EXPECT_LT(t.moment_z, 0.0);  // sign of -G (ab)^2 C33 phi, eq. (40)
     }
+    std::printf("thesis case xi_x %g xi_y %g phi %g /m: Fx/muFn %.5f Fy/muFn %.5f Mz %.5g N m; "
+                "stick %d slip %d; linear |F|/muFn %.4f\n",
+                in.creepage_x, in.creepage_y, in.spin, t.force_x / (mu * fn), t.force_y / (mu * fn),
+                t.moment_z, t.stick_elements, t.slip_elements, lin / (mu * fn));
     if (in.spin == 0.0) {
       const double xi = lin / (mu * fn);
       const double cubic = 1.0 - std::pow(1.0 - xi / 3.0, 3);
@@ -137,6 +146,9 @@ TEST(MimRolling, thesis_creep_curve_25_points) {
     ASSERT_TRUE(t.converged) << xi;
     EXPECT_LE(std::abs(t.force_x), mu * fn * (1.0 + 1.0e-9));
     fx.push_back(t.force_x);
+  }
+  for (int k = 0; k < 25; ++k) {
+    std::printf("creep curve xi_x %+.4f per mille: Fx/muFn %+.5f\n", (-20.0 + k * 40.0 / 24.0), fx[k] / (mu * fn));
   }
   for (int k = 0; k < 25; ++k) EXPECT_NEAR(fx[k], -fx[24 - k], 1.0e-6 * mu * fn);
   for (int k = 1; k < 25; ++k) EXPECT_LE(fx[k], fx[k - 1] + 1.0e-6 * mu * fn);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 using namespace ferro::contact;
@@ -43,6 +44,9 @@ TEST(MimSliding, cattaneo_mindlin) {
     const double c = a * std::sqrt(base);
     const double c_num = std::sqrt(t.stick_elements * dx * dx / std::numbers::pi);
     EXPECT_NEAR(c_num, c, dx) << "delta_x = " << shift;
+    std::printf("cattaneo_mindlin delta_x %.3f mm: F_t %.6g N vs eq. 110 %.6g N (%+.4f %%); stick "
+                "radius %.4f mm vs %.4f mm\n",
+                shift * 1e3, t.force_x, ft, 100.0 * (t.force_x / ft - 1.0), c_num * 1e3, c * 1e3);
   }
 }
 
