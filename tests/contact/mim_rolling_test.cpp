@@ -178,3 +178,48 @@ TEST(MimRolling, saturation_combined) {
   EXPECT_GT(std::hypot(ts.force_x, ts.force_y), 0.5 * mu * fn);
   EXPECT_LE(ts.coulomb_residual, 1.0e-5);
 }
+
+// Robustness over the envelope a tangential-model benchmark spans: ellipse ratios 0.2..5,
+// creepage levels from micro-slip (0.1 mu F_n of linear force) to full slip (3x), pure
+// longitudinal, lateral, spin and a combination. Every case must converge, obey Coulomb
+// (|tau| <= mu p_n to 1e-9 mu max p_n) and give |F| <= mu F_n; reversing all creepages must
+// reverse the forces (tau -> -tau symmetry of eqs. 116-120), to 1e-5 mu F_n (solver tolerance).
+TEST(MimRolling, robustness_envelope) {
+  const Material steel = Material::from_young(210.0e9, 0.28);
+  const CombinedMaterial m = combine(steel, steel);
+  const double fn = 80.0e3, mu = 0.3;
+  int cases = 0;
+  for (double ratio : {0.2, 0.5, 1.0, 2.0, 5.0}) {
+    const double b = ratio <= 1.0 ? 5.0e-3 : 5.0e-3 / ratio;
+    const double a = ratio <= 1.0 ? 5.0e-3 * ratio : 5.0e-3;
+    const KalkerCoefficients kc = kalker_coefficients_table(a, b, 0.28);
+    const double g = m.shear_modulus, c = a * b;
+    const HertzGap hg = hertz_gap_for_ellipse(a, b, fn, m.contact_modulus);
+    const Grid grid = grid_for_ellipse(a, b, 24);
+    InfluenceOperator op(grid, m);
+    const NormalSolution s = solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
+    ASSERT_TRUE(s.converged);
+    for (double level : {0.1, 0.5, 1.0, 3.0}) {
+      const double xs = level * mu * fn / (g * c * kc.c11);
+      const double ys = level * mu * fn / (g * c * kc.c22);
+      const double ps = level * mu * fn / (g * std::pow(c, 1.5) * kc.c23);
+      for (const RollingInput in : {RollingInput{xs, 0.0, 0.0, mu}, RollingInput{0.0, ys, 0.0, mu},
+                                    RollingInput{0.0, 0.0, ps, mu},
+                                    RollingInput{0.6 * xs, -0.6 * ys, 0.5 * ps, mu}}) {
+        const TangentialSolution t = solve_steady_rolling(op, s.pressure, in);
+        ++cases;
+        ASSERT_TRUE(t.converged) << "a/b " << ratio << " level " << level;
+        EXPECT_LE(t.coulomb_residual, 1.0e-9);
+        EXPECT_LE(std::hypot(t.force_x, t.force_y), mu * fn * (1.0 + 1.0e-9));
+        if (level == 0.5) {
+          const TangentialSolution r = solve_steady_rolling(
+              op, s.pressure, RollingInput{-in.creepage_x, -in.creepage_y, -in.spin, mu});
+          ASSERT_TRUE(r.converged);
+          EXPECT_NEAR(r.force_x, -t.force_x, 1.0e-5 * mu * fn);
+          EXPECT_NEAR(r.force_y, -t.force_y, 1.0e-5 * mu * fn);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(cases, 80);
+}

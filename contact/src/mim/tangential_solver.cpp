@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -295,6 +296,7 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
   // Set changes need a violation above a tenth of the tolerance: elements exactly on the
   // stick/slip boundary (|tau| = mu p and w = 0 both hold to round-off) must not cycle.
   const double hysteresis = 0.1 * options.tolerance;
+  double previous_dir_res = std::numeric_limits<double>::infinity();
   int budget = options.max_matvecs;
   const double h = grid.dx;
   const double pre_scale = rolling ? h / op.tangential_self_x() : 1.0 / op.tangential_self_x();
@@ -494,8 +496,14 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
       out.converged = true;
       break;
     }
-    // A tight step whose stick residual still misses the tolerance: tighten the linear solve.
-    if (changes == 0 && tight && stick_res > options.tolerance) inner_factor *= 0.1;
+    // A tight step that misses the tolerance on the stick residual, or stalls on the direction
+    // residual (which the Newton update otherwise reduces quadratically): the linear solve is the
+    // limit, tighten it.
+    if (changes == 0 && tight &&
+        (stick_res > options.tolerance || dir_res > 0.5 * previous_dir_res)) {
+      inner_factor *= 0.1;
+    }
+    previous_dir_res = dir_res;
   }
 
   // Output slip and Coulomb residual.
