@@ -84,3 +84,41 @@ TEST(MimApi, hdf5_round_trip) {
   for (std::size_t i = 0; i < tx.size(); ++i) EXPECT_EQ(tx[i], r.traction_x[i]);
   EXPECT_THROW(write_hdf5(r, "/nonexistent_dir/x.h5"), std::runtime_error);
 }
+
+// The cached, unit-scaled solver must give the same physics as a direct SI solve on the same grid
+// (homogeneity of the half-space kernels; to 1e-6 relative: solver tolerances), and reuse its
+// operator for a patch with the same element counts.
+TEST(MimApi, hertz_solver_scaling_and_cache) {
+  HertzRollingInput in;
+  in.semi_axis_x = 6.0e-3;
+  in.semi_axis_y = 4.0e-3;
+  in.normal_force = 60.0e3;
+  in.rolling = RollingInput{1.5e-3, -1.0e-3, 0.8, 0.3};
+  in.body1 = Material::from_young(210.0e9, 0.28);
+  in.body2 = Material::from_young(190.0e9, 0.30);
+  in.elements_minor = 24;
+
+  const CombinedMaterial m = combine(in.body1, in.body2);
+  const HertzGap hg = hertz_gap_for_ellipse(in.semi_axis_x, in.semi_axis_y, in.normal_force, m.contact_modulus);
+  const Grid grid = grid_for_ellipse(in.semi_axis_x, in.semi_axis_y, in.elements_minor);
+  InfluenceOperator op(grid, m);
+  NormalLoad load;
+  load.normal_force = in.normal_force;
+  const MimResult direct = solve_rolling_contact(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), load, in.rolling);
+
+  HertzMimSolver solver;
+  const MimResult scaled = solver.solve(in);
+  ASSERT_TRUE(direct.converged && scaled.converged);
+  const double f = 0.3 * in.normal_force;
+  EXPECT_NEAR(scaled.normal_force, direct.normal_force, 1.0e-9 * in.normal_force);
+  EXPECT_NEAR(scaled.force_x, direct.force_x, 1.0e-6 * f);
+  EXPECT_NEAR(scaled.force_y, direct.force_y, 1.0e-6 * f);
+  EXPECT_NEAR(scaled.moment_z, direct.moment_z, 1.0e-6 * f * in.semi_axis_x);
+  EXPECT_NEAR(scaled.approach, direct.approach, 1.0e-6 * direct.approach);
+
+  HertzRollingInput bigger = in;  // same shape, 1.5 x larger: same element counts
+  bigger.semi_axis_x *= 1.5;
+  bigger.semi_axis_y *= 1.5;
+  (void)solver.solve(bigger);
+  EXPECT_EQ(solver.operators_built(), 1);
+}

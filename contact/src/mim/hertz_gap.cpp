@@ -54,8 +54,12 @@ Grid grid_for_ellipse(double a, double b, int elements_minor, double margin) {
         a, b, elements_minor, margin));
   }
   const double h = 2.0 * std::min(a, b) * (1.0 + margin) / elements_minor;
-  const int nx = std::max(2, static_cast<int>(std::ceil(2.0 * a * (1.0 + margin) / h)));
-  const int ny = std::max(1, static_cast<int>(std::ceil(2.0 * b * (1.0 + margin) / h)));
+  // Counts depend only on the shape (a/b, margin): round-off must not add an element.
+  auto count = [&](double length) {
+    return static_cast<int>(std::ceil(length * (1.0 + margin) / h * (1.0 - 1.0e-12)));
+  };
+  const int nx = std::max(2, count(2.0 * a));
+  const int ny = std::max(1, count(2.0 * b));
   return Grid::centred(nx, ny, h, h);
 }
 

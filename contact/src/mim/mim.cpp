@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -79,17 +80,72 @@ MimResult solve_rolling_contact(InfluenceOperator& op, const Field& gap, const N
   return r;
 }
 
-MimResult solve_hertz_rolling(const HertzRollingInput& input, const MimOptions& options) {
+struct HertzMimSolver::Entry {
+  int nx = 0;
+  int ny = 0;
+  double poisson = 0.0;
+  std::unique_ptr<InfluenceOperator> op;
+};
+
+HertzMimSolver::HertzMimSolver(MimOptions options, std::size_t max_cached_grids)
+    : options_(options), max_cached_(std::max<std::size_t>(1, max_cached_grids)) {}
+
+HertzMimSolver::~HertzMimSolver() = default;
+
+MimResult HertzMimSolver::solve(const HertzRollingInput& input) {
   input.validate();
   const CombinedMaterial m = combine(input.body1, input.body2);
-  const HertzGap hg = hertz_gap_for_ellipse(input.semi_axis_x, input.semi_axis_y,
-                                            input.normal_force, m.contact_modulus);
-  const Grid grid = grid_for_ellipse(input.semi_axis_x, input.semi_axis_y, input.elements_minor);
-  InfluenceOperator op(grid, m);
+  const double a = input.semi_axis_x, b = input.semi_axis_y;
+  const HertzGap hg = hertz_gap_for_ellipse(a, b, input.normal_force, m.contact_modulus);
+  const Grid grid = grid_for_ellipse(a, b, input.elements_minor);
+  const double h = grid.dx;  // square elements
+
+  // Unit grid and material: lengths in h, stresses in G.
+  Entry* entry = nullptr;
+  for (auto& e : cache_) {
+    if (e->nx == grid.nx && e->ny == grid.ny && e->poisson == m.poisson) entry = e.get();
+  }
+  if (entry == nullptr) {
+    if (cache_.size() >= max_cached_) cache_.erase(cache_.begin());  // oldest first
+    auto e = std::make_unique<Entry>();
+    e->nx = grid.nx;
+    e->ny = grid.ny;
+    e->poisson = m.poisson;
+    CombinedMaterial unit;
+    unit.shear_modulus = 1.0;
+    unit.poisson = m.poisson;
+    unit.contact_modulus = 1.0 / (1.0 - m.poisson);  // E*/G for the pair; not used by the operator
+    e->op = std::make_unique<InfluenceOperator>(Grid::centred(grid.nx, grid.ny, 1.0, 1.0), unit);
+    ++operators_built_;
+    entry = e.get();
+    cache_.push_back(std::move(e));
+  }
+  InfluenceOperator& op = *entry->op;
+  const double cx = hg.curvature_x * h, cy = hg.curvature_y * h;  // z / h in units of h
+  const Field gap = quadratic_gap(op.grid(), cx, cy);
   NormalLoad load;
-  load.normal_force = input.normal_force;
-  return solve_rolling_contact(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), load,
-                               input.rolling, options);
+  load.normal_force = input.normal_force / (m.shear_modulus * h * h);
+  RollingInput rolling = input.rolling;
+  rolling.spin *= h;
+  MimResult r = solve_rolling_contact(op, gap, load, rolling, options_);
+
+  // Back to SI.
+  const double g = m.shear_modulus;
+  r.grid = grid;
+  r.normal_force *= g * h * h;
+  r.force_x *= g * h * h;
+  r.force_y *= g * h * h;
+  r.moment_z *= g * h * h * h;
+  r.approach *= h;
+  for (Field* f : {&r.pressure, &r.traction_x, &r.traction_y}) {
+    for (double& v : *f) v *= g;
+  }
+  return r;
+}
+
+MimResult solve_hertz_rolling(const HertzRollingInput& input, const MimOptions& options) {
+  HertzMimSolver solver(options, 1);
+  return solver.solve(input);
 }
 
 }  // namespace ferro::contact::mim

@@ -13,6 +13,7 @@
 #include "ferro/contact/mim/tangential_solver.hpp"
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -75,11 +76,35 @@ struct HertzRollingInput {
 };
 
 /// Builds the gap that reproduces the ellipse a x b under F_n (hertz_gap.hpp), a grid with
-/// `elements_minor` elements across the shorter axis, solves. Builds a new InfluenceOperator per
-/// call; callers evaluating many cases on one grid should keep an operator and call
-/// solve_rolling_contact.
+/// `elements_minor` elements across the shorter axis, solves. One-shot: builds its influence
+/// operator; repeated calls should use HertzMimSolver, which keeps them.
 [[nodiscard]] MimResult solve_hertz_rolling(const HertzRollingInput& input,
                                             const MimOptions& options = {});
+
+/// Repeated Hertzian MIM solves (the body of a tangential-model adapter or a table builder).
+/// The half-space influence coefficients are homogeneous (degree 1 in the element size, -1 in
+/// G), so every patch is solved in units of the element size h and of G on a unit grid whose
+/// influence operator (kernels + FFTW plans) depends only on (nx, ny, nu) and is cached; results
+/// are scaled back (forces G h^2, moment G h^3, stresses G, approach h). Not thread-safe: use
+/// one solver per thread.
+class HertzMimSolver {
+ public:
+  explicit HertzMimSolver(MimOptions options = {}, std::size_t max_cached_grids = 16);
+  ~HertzMimSolver();
+  HertzMimSolver(const HertzMimSolver&) = delete;
+  HertzMimSolver& operator=(const HertzMimSolver&) = delete;
+
+  [[nodiscard]] MimResult solve(const HertzRollingInput& input);
+  /// Unit-grid operators built so far (cache misses).
+  [[nodiscard]] int operators_built() const { return operators_built_; }
+
+ private:
+  struct Entry;
+  MimOptions options_;
+  std::size_t max_cached_;
+  std::vector<std::unique_ptr<Entry>> cache_;
+  int operators_built_ = 0;
+};
 
 /// Writes grid, forces, convergence record and the fields (2-D datasets [ny][nx]: pressure_Pa,
 /// traction_x_Pa, traction_y_Pa, slip_x, slip_y, state) into an HDF5 file (HDF5 C API). Throws
