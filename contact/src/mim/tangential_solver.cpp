@@ -69,10 +69,7 @@ double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
 // The problem v = M tau + q with M = A^tt (sliding) or -(B^tt - A^tt)/h (rolling).
 class Problem {
  public:
-  Problem(InfluenceOperator& op, bool rolling) : op_(op), rolling_(rolling), n_(op.grid().size()) {
-    wx_.resize(n_);
-    wy_.resize(n_);
-  }
+  Problem(InfluenceOperator& op, bool rolling) : op_(op), rolling_(rolling), n_(op.grid().size()) {}
   // Full-grid product (vx, vy) = M (tx, ty).
   void apply(const double* tx, const double* ty, double* vx, double* vy) {
     ++matvecs;
@@ -93,7 +90,6 @@ class Problem {
   InfluenceOperator& op_;
   bool rolling_;
   std::size_t n_;
-  Vec wx_, wy_;
 };
 
 // Work vectors of GMRES, kept across the Newton steps of one solve (no page faults per call).
