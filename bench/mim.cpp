@@ -5,12 +5,12 @@
 // as in a table or dynamics run; BM_MimSetup times that construction separately.
 //
 // Run: ./build/bench/ferro_bench_mim --benchmark_counters_tabular=true
-#include "ferro/contact/mim/normal_solver.hpp"
-#include "ferro/contact/mim/tangential_solver.hpp"
-
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+
+#include "ferro/contact/mim/normal_solver.hpp"
+#include "ferro/contact/mim/tangential_solver.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -35,7 +35,8 @@ void BM_MimNormalRolling(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const Grid grid = sphere_grid(n);
   InfluenceOperator op(grid, steel_pair(), /*measure_plans=*/true);
-  const Field gap = sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kRrel); });
+  const Field gap =
+      sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kRrel); });
   TangentialSolverOptions topt;
   topt.tolerance = 1.0e-5;
   NormalSolverOptions nopt;
@@ -60,7 +61,13 @@ void BM_MimNormalRolling(benchmark::State& state) {
   state.counters["normal_iter"] = normal_it;
 }
 BENCHMARK(BM_MimNormalRolling)
-    ->Arg(20)->Arg(35)->Arg(50)->Arg(70)->Arg(100)->Arg(140)->Arg(200)
+    ->Arg(20)
+    ->Arg(35)
+    ->Arg(50)
+    ->Arg(70)
+    ->Arg(100)
+    ->Arg(140)
+    ->Arg(200)
     ->Unit(benchmark::kMillisecond)
     ->MeasureProcessCPUTime()
     ->UseRealTime();

@@ -1,8 +1,4 @@
 // One-call MIM API (Hertz input as a tangential-model adapter gives it) and HDF5 output.
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "ferro/contact/mim/hertz_gap.hpp"
-#include "ferro/contact/mim/mim.hpp"
-
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -12,6 +8,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/contact/mim/mim.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -99,12 +99,14 @@ TEST(MimApi, hertz_solver_scaling_and_cache) {
   in.elements_minor = 24;
 
   const CombinedMaterial m = combine(in.body1, in.body2);
-  const HertzGap hg = hertz_gap_for_ellipse(in.semi_axis_x, in.semi_axis_y, in.normal_force, m.contact_modulus);
+  const HertzGap hg =
+      hertz_gap_for_ellipse(in.semi_axis_x, in.semi_axis_y, in.normal_force, m.contact_modulus);
   const Grid grid = grid_for_ellipse(in.semi_axis_x, in.semi_axis_y, in.elements_minor);
   InfluenceOperator op(grid, m);
   NormalLoad load;
   load.normal_force = in.normal_force;
-  const MimResult direct = solve_rolling_contact(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), load, in.rolling);
+  const MimResult direct = solve_rolling_contact(
+      op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), load, in.rolling);
 
   HertzMimSolver solver;
   const MimResult scaled = solver.solve(in);

@@ -1,13 +1,13 @@
 // Influence coefficients (annex B.3) and the FFT influence products against independent methods.
-#include "ferro/contact/mim/influence.hpp"
-#include "ferro/contact/mim/influence_operator.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <vector>
+
+#include "ferro/contact/mim/influence.hpp"
+#include "ferro/contact/mim/influence_operator.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -108,7 +108,8 @@ TEST(MimInfluence, FftProductsMatchDirectSums) {
           const std::size_t j = grid.index(jx, jy);
           const double X = (ix - jx) * grid.dx, Y = (iy - jy) * grid.dy;
           const InfluenceCoefficients a = influence_coefficients(X, Y, grid.dx, grid.dy, m);
-          const InfluenceCoefficients b = influence_coefficients(X + grid.dx, Y, grid.dx, grid.dy, m);
+          const InfluenceCoefficients b =
+              influence_coefficients(X + grid.dx, Y, grid.dx, grid.dy, m);
           ez[i] += a.zz * p[j];
           ex[i] += a.xx * tx[j] + a.xy * ty[j];
           ey[i] += a.xy * tx[j] + a.yy * ty[j];

@@ -1,12 +1,12 @@
 // MIM normal problem against Hertz (spheres) and Love (rigid cone), Toumi (2016) section 2.2.2.4.
-#include "ferro/contact/mim/normal_solver.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+
+#include "ferro/contact/mim/normal_solver.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -56,7 +56,8 @@ TEST(MimNormal, hertz_spheres_profile_and_force) {
     const double r = std::abs(grid.x(ix));
     const double p_hertz = r < a ? p0 * std::sqrt(1.0 - r * r / (a * a)) : 0.0;
     const double p = s.pressure[grid.index(ix, iy)];
-    (r <= 0.9 * a ? err_bulk : err_edge) = std::max(r <= 0.9 * a ? err_bulk : err_edge, std::abs(p - p_hertz) / p0);
+    (r <= 0.9 * a ? err_bulk : err_edge) =
+        std::max(r <= 0.9 * a ? err_bulk : err_edge, std::abs(p - p_hertz) / p0);
     if (r <= 0.9 * a) {
       EXPECT_NEAR(p / p0, p_hertz / p0, kProfileTol) << "x = " << grid.x(ix);
     } else {
@@ -64,10 +65,11 @@ TEST(MimNormal, hertz_spheres_profile_and_force) {
     }
   }
 
-  std::printf("hertz_spheres dx 0.5 mm, delta 0.4 mm: F %.6g N vs Hertz %.6g N (%+.4f %%); profile "
-              "max |p - p_H| / p0 %.4f %% (r <= 0.9 a), %.4f %% (edge); %d iterations\n",
-              s.normal_force, f_hertz, 100.0 * (s.normal_force / f_hertz - 1.0), 100.0 * err_bulk,
-              100.0 * err_edge, s.iterations);
+  std::printf(
+      "hertz_spheres dx 0.5 mm, delta 0.4 mm: F %.6g N vs Hertz %.6g N (%+.4f %%); profile "
+      "max |p - p_H| / p0 %.4f %% (r <= 0.9 a), %.4f %% (edge); %d iterations\n",
+      s.normal_force, f_hertz, 100.0 * (s.normal_force / f_hertz - 1.0), 100.0 * err_bulk,
+      100.0 * err_edge, s.iterations);
 
   // F(delta) law over the thesis's range (figure 2.6), load control: the approach is an output.
   for (double d : {0.1e-3, 0.25e-3, 0.55e-3}) {
@@ -76,8 +78,9 @@ TEST(MimNormal, hertz_spheres_profile_and_force) {
     ASSERT_TRUE(sf.converged);
     EXPECT_NEAR(sf.normal_force, f, 1.0e-9 * f);
     EXPECT_NEAR(sf.approach / d, 1.0, kForceTol) << "delta = " << d;
-    std::printf("hertz_spheres load control F = %.6g N: approach %.6f mm vs Hertz %.6f mm (%+.4f %%)\n",
-                f, sf.approach * 1e3, d * 1e3, 100.0 * (sf.approach / d - 1.0));
+    std::printf(
+        "hertz_spheres load control F = %.6g N: approach %.6f mm vs Hertz %.6f mm (%+.4f %%)\n", f,
+        sf.approach * 1e3, d * 1e3, 100.0 * (sf.approach / d - 1.0));
   }
 }
 
@@ -120,9 +123,10 @@ TEST(MimNormal, love_rigid_cone) {
     ++checked;
   }
   EXPECT_GE(checked, 8);
-  std::printf("love_rigid_cone dx 0.15 mm: F %.6g N vs Love %.6g N (%+.4f %%); max |p - p_Love| / "
-              "p_mean %.4f %% over 0.3 a..0.85 a\n",
-              s.normal_force, f_love, 100.0 * (s.normal_force / f_love - 1.0), 100.0 * worst);
+  std::printf(
+      "love_rigid_cone dx 0.15 mm: F %.6g N vs Love %.6g N (%+.4f %%); max |p - p_Love| / "
+      "p_mean %.4f %% over 0.3 a..0.85 a\n",
+      s.normal_force, f_love, 100.0 * (s.normal_force / f_love - 1.0), 100.0 * worst);
 }
 
 // Complementarity on a non-Hertzian gap (two-lobe, seeded random roughness): pressures >= 0,
@@ -132,7 +136,10 @@ TEST(MimNormal, complementarity_on_arbitrary_gap) {
   const Grid grid = Grid::centred(48, 40, 0.25e-3, 0.25e-3);
   InfluenceOperator op(grid, m);
   unsigned state = 12345u;
-  auto rnd = [&] { state = state * 1664525u + 1013904223u; return (state >> 8) * (1.0 / 16777216.0); };
+  auto rnd = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) * (1.0 / 16777216.0);
+  };
   Field gap = sample(grid, [](double x, double y) {
     const double y1 = y - 1.5e-3, y2 = y + 2.0e-3;
     return std::min(x * x / 0.9 + y1 * y1 / 0.3, x * x / 0.9 + y2 * y2 / 0.2 + 2.0e-6);
@@ -146,8 +153,10 @@ TEST(MimNormal, complementarity_on_arbitrary_gap) {
   for (double e : s.deformed_gap) umax = std::max(umax, std::abs(e));
   for (std::size_t i = 0; i < grid.size(); ++i) {
     EXPECT_GE(s.pressure[i], 0.0);
-    if (s.pressure[i] > 0.0) EXPECT_LE(std::abs(s.deformed_gap[i]), 1.0e-8 * s.approach * 10);
-    else EXPECT_GE(s.deformed_gap[i], -1.0e-8 * s.approach * 10);
+    if (s.pressure[i] > 0.0)
+      EXPECT_LE(std::abs(s.deformed_gap[i]), 1.0e-8 * s.approach * 10);
+    else
+      EXPECT_GE(s.deformed_gap[i], -1.0e-8 * s.approach * 10);
   }
   EXPECT_GT(s.contact_elements, 20);
 }

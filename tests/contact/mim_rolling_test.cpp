@@ -1,15 +1,15 @@
 // MIM steady rolling: Kalker's linear theory, saturation, the thesis's sphere cases and creep
 // curve (Toumi 2016 section 2.2.4.4).
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "ferro/contact/mim/hertz_gap.hpp"
-#include "ferro/contact/mim/normal_solver.hpp"
-#include "ferro/contact/mim/tangential_solver.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/contact/mim/normal_solver.hpp"
+#include "ferro/contact/mim/tangential_solver.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -27,7 +27,8 @@ struct SphereCase {
   NormalSolution normal;
   double a = 0.0;
   SphereCase() {
-    const Field gap = sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kRrel); });
+    const Field gap =
+        sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kRrel); });
     normal = solve_normal_approach(op, gap, 0.4e-3);
     a = std::cbrt(3.0 * normal.normal_force * kRrel / (4.0 * m.contact_modulus));
   }
@@ -45,8 +46,10 @@ KalkerCoefficients mim_creep_coefficients(double a, double b, int elements) {
       solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
   const double g = m.shear_modulus, c = a * b, tiny = 1.0e-6, mu = 1.0e6;
   KalkerCoefficients k;
-  k.c11 = -solve_steady_rolling(op, s.pressure, RollingInput{tiny, 0.0, 0.0, mu}).force_x / (g * c * tiny);
-  k.c22 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, tiny, 0.0, mu}).force_y / (g * c * tiny);
+  k.c11 = -solve_steady_rolling(op, s.pressure, RollingInput{tiny, 0.0, 0.0, mu}).force_x /
+          (g * c * tiny);
+  k.c22 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, tiny, 0.0, mu}).force_y /
+          (g * c * tiny);
   const double spin = tiny / std::sqrt(c);
   k.c23 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, 0.0, spin, mu}).force_y /
           (g * std::pow(c, 1.5) * spin);
@@ -65,10 +68,11 @@ TEST(MimRolling, kalker_linear_theory_circle) {
   const KalkerCoefficients coarse = mim_creep_coefficients(r, r, 40);
   const KalkerCoefficients fine = mim_creep_coefficients(r, r, 80);
   const KalkerCoefficients ref = kalker_coefficients_table(r, r, 0.28);
-  std::printf("kalker circle (40/80 elements, Richardson): C11 %.4f vs %.4f, C22 %.4f vs %.4f, C23 "
-              "%.4f vs %.4f\n",
-              2.0 * fine.c11 - coarse.c11, ref.c11, 2.0 * fine.c22 - coarse.c22, ref.c22,
-              2.0 * fine.c23 - coarse.c23, ref.c23);
+  std::printf(
+      "kalker circle (40/80 elements, Richardson): C11 %.4f vs %.4f, C22 %.4f vs %.4f, C23 "
+      "%.4f vs %.4f\n",
+      2.0 * fine.c11 - coarse.c11, ref.c11, 2.0 * fine.c22 - coarse.c22, ref.c22,
+      2.0 * fine.c23 - coarse.c23, ref.c23);
   EXPECT_NEAR((2.0 * fine.c11 - coarse.c11) / ref.c11, 1.0, kTol);
   EXPECT_NEAR((2.0 * fine.c22 - coarse.c22) / ref.c22, 1.0, kTol);
   EXPECT_NEAR((2.0 * fine.c23 - coarse.c23) / ref.c23, 1.0, kTol);
@@ -89,8 +93,9 @@ TEST(MimRolling, thesis_sphere_cases) {
   const double mu = 0.2, fn = sc.normal.normal_force, g = sc.m.shear_modulus, a = sc.a;
   const KalkerCoefficients kc = kalker_coefficients_table(a, a, sc.m.poisson);
   const Grid& grid = sc.grid;
-  for (const RollingInput in : {RollingInput{3.0e-3, 0.0, 0.0, mu}, RollingInput{0.0, 3.0e-3, 0.0, mu},
-                                RollingInput{0.0, 0.0, 0.6, mu}}) {
+  for (const RollingInput in :
+       {RollingInput{3.0e-3, 0.0, 0.0, mu}, RollingInput{0.0, 3.0e-3, 0.0, mu},
+        RollingInput{0.0, 0.0, 0.6, mu}}) {
     const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in);
     ASSERT_TRUE(t.converged);
     EXPECT_LE(t.coulomb_residual, 1.0e-5);
@@ -120,10 +125,11 @@ TEST(MimRolling, thesis_sphere_cases) {
       EXPECT_LT(t.force_y, 0.0);   // sign of -G (ab)^1.5 C23 phi, eq. (39)
       EXPECT_LT(t.moment_z, 0.0);  // sign of -G (ab)^2 C33 phi, eq. (40)
     }
-    std::printf("thesis case xi_x %g xi_y %g phi %g /m: Fx/muFn %.5f Fy/muFn %.5f Mz %.5g N m; "
-                "stick %d slip %d; linear |F|/muFn %.4f\n",
-                in.creepage_x, in.creepage_y, in.spin, t.force_x / (mu * fn), t.force_y / (mu * fn),
-                t.moment_z, t.stick_elements, t.slip_elements, lin / (mu * fn));
+    std::printf(
+        "thesis case xi_x %g xi_y %g phi %g /m: Fx/muFn %.5f Fy/muFn %.5f Mz %.5g N m; "
+        "stick %d slip %d; linear |F|/muFn %.4f\n",
+        in.creepage_x, in.creepage_y, in.spin, t.force_x / (mu * fn), t.force_y / (mu * fn),
+        t.moment_z, t.stick_elements, t.slip_elements, lin / (mu * fn));
     if (in.spin == 0.0) {
       const double xi = lin / (mu * fn);
       const double cubic = 1.0 - std::pow(1.0 - xi / 3.0, 3);
@@ -142,20 +148,23 @@ TEST(MimRolling, thesis_creep_curve_25_points) {
   std::vector<double> fx;
   for (int k = 0; k < 25; ++k) {
     const double xi = -20.0e-3 + k * (40.0e-3 / 24.0);
-    const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{xi, 0.0, 0.0, mu});
+    const TangentialSolution t =
+        solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{xi, 0.0, 0.0, mu});
     ASSERT_TRUE(t.converged) << xi;
     EXPECT_LE(std::abs(t.force_x), mu * fn * (1.0 + 1.0e-9));
     fx.push_back(t.force_x);
   }
   for (int k = 0; k < 25; ++k) {
-    std::printf("creep curve xi_x %+.4f per mille: Fx/muFn %+.5f\n", (-20.0 + k * 40.0 / 24.0), fx[k] / (mu * fn));
+    std::printf("creep curve xi_x %+.4f per mille: Fx/muFn %+.5f\n", (-20.0 + k * 40.0 / 24.0),
+                fx[k] / (mu * fn));
   }
   for (int k = 0; k < 25; ++k) EXPECT_NEAR(fx[k], -fx[24 - k], 1.0e-6 * mu * fn);
   for (int k = 1; k < 25; ++k) EXPECT_LE(fx[k], fx[k - 1] + 1.0e-6 * mu * fn);
   EXPECT_NEAR(fx[0], mu * fn, 1.0e-3 * mu * fn);
   EXPECT_NEAR(fx[24], -mu * fn, 1.0e-3 * mu * fn);
   const double tiny = 1.0e-7;
-  const TangentialSolution lin = solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{tiny, 0.0, 0.0, mu});
+  const TangentialSolution lin =
+      solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{tiny, 0.0, 0.0, mu});
   const double c11 = -lin.force_x / (sc.m.shear_modulus * sc.a * sc.a * tiny);
   EXPECT_NEAR(c11 / kalker_coefficients_table(1.0, 1.0, 0.28).c11, 1.0, 0.05);
 }
@@ -167,12 +176,14 @@ TEST(MimRolling, thesis_creep_curve_25_points) {
 TEST(MimRolling, saturation_combined) {
   SphereCase sc;
   const double mu = 0.2, fn = sc.normal.normal_force;
-  const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{0.03, 0.04, 0.0, mu});
+  const TangentialSolution t =
+      solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{0.03, 0.04, 0.0, mu});
   ASSERT_TRUE(t.converged);
   EXPECT_EQ(t.stick_elements, 0);
   EXPECT_NEAR(std::hypot(t.force_x, t.force_y), mu * fn, 1.0e-3 * mu * fn);
   EXPECT_NEAR(std::atan2(-t.force_y, -t.force_x), std::atan2(0.04, 0.03), 0.5 * 3.14159265 / 180.0);
-  const TangentialSolution ts = solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{0.02, 0.01, 3.0, mu});
+  const TangentialSolution ts =
+      solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{0.02, 0.01, 3.0, mu});
   ASSERT_TRUE(ts.converged);
   EXPECT_LT(std::hypot(ts.force_x, ts.force_y), mu * fn);  // spin diverts part of the traction
   EXPECT_GT(std::hypot(ts.force_x, ts.force_y), 0.5 * mu * fn);
@@ -197,15 +208,16 @@ TEST(MimRolling, robustness_envelope) {
     const HertzGap hg = hertz_gap_for_ellipse(a, b, fn, m.contact_modulus);
     const Grid grid = grid_for_ellipse(a, b, 24);
     InfluenceOperator op(grid, m);
-    const NormalSolution s = solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
+    const NormalSolution s =
+        solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
     ASSERT_TRUE(s.converged);
     for (double level : {0.1, 0.5, 1.0, 3.0}) {
       const double xs = level * mu * fn / (g * c * kc.c11);
       const double ys = level * mu * fn / (g * c * kc.c22);
       const double ps = level * mu * fn / (g * std::pow(c, 1.5) * kc.c23);
-      for (const RollingInput in : {RollingInput{xs, 0.0, 0.0, mu}, RollingInput{0.0, ys, 0.0, mu},
-                                    RollingInput{0.0, 0.0, ps, mu},
-                                    RollingInput{0.6 * xs, -0.6 * ys, 0.5 * ps, mu}}) {
+      for (const RollingInput in :
+           {RollingInput{xs, 0.0, 0.0, mu}, RollingInput{0.0, ys, 0.0, mu},
+            RollingInput{0.0, 0.0, ps, mu}, RollingInput{0.6 * xs, -0.6 * ys, 0.5 * ps, mu}}) {
         const TangentialSolution t = solve_steady_rolling(op, s.pressure, in);
         ++cases;
         ASSERT_TRUE(t.converged) << "a/b " << ratio << " level " << level;

@@ -19,7 +19,10 @@ int run(const std::string& args) {
 TEST(MimCli, solves_and_writes_hdf5) {
   const std::string out = std::string(FERRO_BINARY_DIR) + "/mim_cli_test.h5";
   std::remove(out.c_str());
-  EXPECT_EQ(run("mim --a-mm 4 --b-mm 3 --fn 30000 --xi-x 0.002 --spin 0.5 --mu 0.3 --elements 16 --out " + out), 0);
+  EXPECT_EQ(
+      run("mim --a-mm 4 --b-mm 3 --fn 30000 --xi-x 0.002 --spin 0.5 --mu 0.3 --elements 16 --out " +
+          out),
+      0);
   std::ifstream f(out, std::ios::binary);
   char magic[8] = {};
   f.read(magic, 8);

@@ -15,10 +15,10 @@ namespace ferro::contact::mim {
 
 HertzGap hertz_gap_for_ellipse(double a, double b, double normal_force, double contact_modulus) {
   if (!(a > 0.0) || !(b > 0.0) || !(normal_force > 0.0) || !(contact_modulus > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "hertz_gap_for_ellipse: semi_axis_x {}, semi_axis_y {}, normal_force {} and "
-        "contact_modulus {} must all be > 0",
-        a, b, normal_force, contact_modulus));
+    throw std::invalid_argument(
+        fmt::format("hertz_gap_for_ellipse: semi_axis_x {}, semi_axis_y {}, normal_force {} and "
+                    "contact_modulus {} must all be > 0",
+                    a, b, normal_force, contact_modulus));
   }
   const double major = std::max(a, b);
   const double minor = std::min(a, b);

@@ -19,7 +19,9 @@ double log_u_plus_rho(double u, double v, double rho) {
 }
 
 // a * ln(b) with the convention 0 * ln(0) = 0 (a corner on an axis).
-double times_log(double a, double log_b) { return a == 0.0 ? 0.0 : a * log_b; }
+double times_log(double a, double log_b) {
+  return a == 0.0 ? 0.0 : a * log_b;
+}
 
 struct Primitives {
   double i1 = 0.0;  // v ln(u + rho) + u ln(v + rho)

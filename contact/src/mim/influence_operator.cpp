@@ -6,8 +6,6 @@
 
 #include "ferro/contact/mim/influence_operator.hpp"
 
-#include "ferro/contact/mim/influence.hpp"
-
 #include <fftw3.h>
 
 #include <algorithm>
@@ -16,6 +14,8 @@
 #include <mutex>
 #include <stdexcept>
 #include <vector>
+
+#include "ferro/contact/mim/influence.hpp"
 
 namespace ferro::contact::mim {
 namespace {
@@ -85,7 +85,7 @@ struct InfluenceOperator::Impl {
   ComplexBuffer spec_a;
   ComplexBuffer spec_b;
   ComplexBuffer spec_c;
-  fftw_plan forward = nullptr;   // real_a -> spec_a, full 2-D (kernel set-up only)
+  fftw_plan forward = nullptr;  // real_a -> spec_a, full 2-D (kernel set-up only)
   // Products: the inputs are zero beyond row ny - 1 and only rows < ny of the output are used,
   // so the 2-D transforms are split into 1-D passes that skip those rows (about a quarter less
   // work than full 2-D transforms, same result).
@@ -113,7 +113,8 @@ struct InfluenceOperator::Impl {
     const unsigned flags = (measure_plans ? FFTW_MEASURE : FFTW_ESTIMATE) | FFTW_DESTROY_INPUT;
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      forward = fftw_plan_dft_r2c_2d(py, px, real_a.data, spec_a.data, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+      forward = fftw_plan_dft_r2c_2d(py, px, real_a.data, spec_a.data,
+                                     FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
       const int nxc = px / 2 + 1;
       const int n_px[1] = {px};
       const int n_py[1] = {py};
@@ -186,10 +187,13 @@ struct InfluenceOperator::Impl {
     kyy = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).yy; });
     // Rolling: (A(X + h) - A(X)) / h with h = dx (eq. 117, 120).
     const double inv_h = 1.0 / dx;
-    dxx = kernel_spectrum([&](int ox, int oy) { return (at(ox + 1, oy).xx - at(ox, oy).xx) * inv_h; });
-    dxy = kernel_spectrum([&](int ox, int oy) { return (at(ox + 1, oy).xy - at(ox, oy).xy) * inv_h; });
+    dxx = kernel_spectrum(
+        [&](int ox, int oy) { return (at(ox + 1, oy).xx - at(ox, oy).xx) * inv_h; });
+    dxy = kernel_spectrum(
+        [&](int ox, int oy) { return (at(ox + 1, oy).xy - at(ox, oy).xy) * inv_h; });
     dyx = dxy;
-    dyy = kernel_spectrum([&](int ox, int oy) { return (at(ox + 1, oy).yy - at(ox, oy).yy) * inv_h; });
+    dyy = kernel_spectrum(
+        [&](int ox, int oy) { return (at(ox + 1, oy).yy - at(ox, oy).yy) * inv_h; });
   }
 
   // Spectrum of a grid field (zero-padded): r2c on the data rows, zero rows above, columns.
@@ -264,8 +268,12 @@ InfluenceOperator::InfluenceOperator(const Grid& grid, const CombinedMaterial& m
 
 InfluenceOperator::~InfluenceOperator() = default;
 
-const Grid& InfluenceOperator::grid() const { return impl_->grid; }
-const CombinedMaterial& InfluenceOperator::material() const { return impl_->material; }
+const Grid& InfluenceOperator::grid() const {
+  return impl_->grid;
+}
+const CombinedMaterial& InfluenceOperator::material() const {
+  return impl_->material;
+}
 
 void InfluenceOperator::normal(const double* pressure, double* displacement_z) {
   impl_->apply_scalar(impl_->kzz, pressure, displacement_z);
@@ -279,8 +287,8 @@ void InfluenceOperator::tangential(const double* traction_x, const double* tract
 
 void InfluenceOperator::rolling_difference(const double* traction_x, const double* traction_y,
                                            double* out_x, double* out_y) {
-  impl_->apply_block(impl_->dxx, impl_->dxy, impl_->dyx, impl_->dyy, traction_x, traction_y,
-                     out_x, out_y);
+  impl_->apply_block(impl_->dxx, impl_->dxy, impl_->dyx, impl_->dyy, traction_x, traction_y, out_x,
+                     out_y);
 }
 
 InfluenceOperator& InfluenceOperator::coarse() {
@@ -298,9 +306,17 @@ InfluenceOperator& InfluenceOperator::coarse() {
   return *impl_->coarse;
 }
 
-double InfluenceOperator::normal_self() const { return impl_->self_zz; }
-double InfluenceOperator::tangential_self_x() const { return impl_->self_xx; }
-double InfluenceOperator::tangential_self_y() const { return impl_->self_yy; }
-double InfluenceOperator::rolling_self() const { return impl_->roll_self; }
+double InfluenceOperator::normal_self() const {
+  return impl_->self_zz;
+}
+double InfluenceOperator::tangential_self_x() const {
+  return impl_->self_xx;
+}
+double InfluenceOperator::tangential_self_y() const {
+  return impl_->self_yy;
+}
+double InfluenceOperator::rolling_self() const {
+  return impl_->roll_self;
+}
 
 }  // namespace ferro::contact::mim

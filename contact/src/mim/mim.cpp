@@ -5,13 +5,13 @@
 
 #include "ferro/contact/mim/mim.hpp"
 
-#include "ferro/contact/mim/hertz_gap.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "ferro/contact/mim/hertz_gap.hpp"
 
 namespace ferro::contact::mim {
 
@@ -19,29 +19,33 @@ void NormalLoad::validate(const std::string& where) const {
   const bool has_force = !std::isnan(normal_force);
   const bool has_approach = !std::isnan(approach);
   if (has_force == has_approach) {
-    throw std::invalid_argument(fmt::format(
-        "{}: set exactly one of normal_force (N) and approach (m), got {} and {}", where,
-        normal_force, approach));
+    throw std::invalid_argument(
+        fmt::format("{}: set exactly one of normal_force (N) and approach (m), got {} and {}",
+                    where, normal_force, approach));
   }
   if (has_force && !(normal_force > 0.0 && std::isfinite(normal_force))) {
     throw std::invalid_argument(
         fmt::format("{}.normal_force: must be finite and > 0 N, got {}", where, normal_force));
   }
   if (has_approach && !std::isfinite(approach)) {
-    throw std::invalid_argument(fmt::format("{}.approach: must be finite (m), got {}", where, approach));
+    throw std::invalid_argument(
+        fmt::format("{}.approach: must be finite (m), got {}", where, approach));
   }
 }
 
 void HertzRollingInput::validate(const std::string& where) const {
   if (!(semi_axis_x > 0.0) || !(semi_axis_y > 0.0)) {
-    throw std::invalid_argument(fmt::format("{}.semi_axis_x/semi_axis_y: must be > 0 m, got {} and {}",
-                                            where, semi_axis_x, semi_axis_y));
+    throw std::invalid_argument(
+        fmt::format("{}.semi_axis_x/semi_axis_y: must be > 0 m, got {} and {}", where, semi_axis_x,
+                    semi_axis_y));
   }
   if (!(normal_force > 0.0) || !std::isfinite(normal_force)) {
-    throw std::invalid_argument(fmt::format("{}.normal_force: must be > 0 N, got {}", where, normal_force));
+    throw std::invalid_argument(
+        fmt::format("{}.normal_force: must be > 0 N, got {}", where, normal_force));
   }
   if (elements_minor < 4) {
-    throw std::invalid_argument(fmt::format("{}.elements_minor: must be >= 4, got {}", where, elements_minor));
+    throw std::invalid_argument(
+        fmt::format("{}.elements_minor: must be >= 4, got {}", where, elements_minor));
   }
   rolling.validate(where + ".rolling");
   body1.validate(where + ".body1");

@@ -2,14 +2,13 @@
 //
 // References: none (file format). Known deviations: none.
 
-#include "ferro/contact/mim/mim.hpp"
-
-#include <hdf5.h>
-
 #include <fmt/format.h>
+#include <hdf5.h>
 
 #include <stdexcept>
 #include <vector>
+
+#include "ferro/contact/mim/mim.hpp"
 
 namespace ferro::contact::mim {
 namespace {
@@ -48,7 +47,8 @@ void check(bool ok, const std::string& path, const std::string& what) {
 
 void attribute(hid_t file, const std::string& path, const char* name, double value) {
   H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  H5Handle attr(H5Acreate2(file, name, H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  H5Handle attr(H5Acreate2(file, name, H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT),
+                H5Aclose);
   check(attr.id >= 0 && H5Awrite(attr.id, H5T_NATIVE_DOUBLE, &value) >= 0, path, name);
 }
 
@@ -57,8 +57,10 @@ void dataset(hid_t file, const std::string& path, const char* name, const Grid& 
              hid_t type) {
   const hsize_t dims[2] = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
   H5Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
-  H5Handle set(H5Dcreate2(file, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
-  check(set.id >= 0 && H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0, path, name);
+  H5Handle set(H5Dcreate2(file, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose);
+  check(set.id >= 0 && H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0, path,
+        name);
 }
 
 }  // namespace
@@ -67,8 +69,8 @@ void write_hdf5(const MimResult& r, const std::string& path) {
   const std::size_t n = r.grid.size();
   if (r.pressure.size() != n || r.traction_x.size() != n || r.traction_y.size() != n ||
       r.slip_x.size() != n || r.slip_y.size() != n || r.state.size() != n) {
-    throw std::invalid_argument(fmt::format("write_hdf5 {}: result fields do not match the {} x {} grid",
-                                            path, r.grid.nx, r.grid.ny));
+    throw std::invalid_argument(fmt::format(
+        "write_hdf5 {}: result fields do not match the {} x {} grid", path, r.grid.nx, r.grid.ny));
   }
   const QuietHdf5 quiet;
   H5Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);

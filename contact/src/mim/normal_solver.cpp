@@ -92,8 +92,10 @@ NormalSolution solve(InfluenceOperator& op, const Field& gap, double target, boo
     // Complementarity residuals of the current iterate.
     double gap_res = 0.0, pen_res = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p[i] > 0.0) gap_res = std::max(gap_res, std::abs(g[i]));
-      else pen_res = std::max(pen_res, -g[i]);
+      if (p[i] > 0.0)
+        gap_res = std::max(gap_res, std::abs(g[i]));
+      else
+        pen_res = std::max(pen_res, -g[i]);
     }
     const double scale = umax > 0.0 ? umax : 1.0;
     out.gap_residual = gap_res / scale;
@@ -141,7 +143,8 @@ NormalSolution solve(InfluenceOperator& op, const Field& gap, double target, boo
     // Update, project on p >= 0, re-activate penetrating elements.
     bool overlap = false;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p[i] > 0.0) p[i] = std::max(p[i] - step * t[i], 0.0);
+      if (p[i] > 0.0)
+        p[i] = std::max(p[i] - step * t[i], 0.0);
       else if (g[i] < 0.0) {
         p[i] = -step * g[i];
         if (p[i] < 0.0) p[i] = 0.0;

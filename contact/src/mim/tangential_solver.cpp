@@ -10,11 +10,10 @@
 #include <fmt/format.h>
 
 #include <Eigen/Core>
-
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
-#include <cmath>
 #include <stdexcept>
 
 namespace ferro::contact::mim {
@@ -28,8 +27,10 @@ void SlidingInput::validate(const std::string& where) const {
 }
 
 void RollingInput::validate(const std::string& where) const {
-  if (!std::isfinite(creepage_x)) throw std::invalid_argument(where + ".creepage_x: must be finite");
-  if (!std::isfinite(creepage_y)) throw std::invalid_argument(where + ".creepage_y: must be finite");
+  if (!std::isfinite(creepage_x))
+    throw std::invalid_argument(where + ".creepage_x: must be finite");
+  if (!std::isfinite(creepage_y))
+    throw std::invalid_argument(where + ".creepage_y: must be finite");
   if (!std::isfinite(spin)) throw std::invalid_argument(where + ".spin: must be finite (1/m)");
   if (!(friction > 0.0) || !std::isfinite(friction)) {
     throw std::invalid_argument(fmt::format("{}.friction: must be > 0, got {}", where, friction));
@@ -38,12 +39,15 @@ void RollingInput::validate(const std::string& where) const {
 
 void TangentialSolverOptions::validate(const std::string& where) const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) {
-    throw std::invalid_argument(fmt::format("{}.tolerance: must lie in (0, 1), got {}", where, tolerance));
+    throw std::invalid_argument(
+        fmt::format("{}.tolerance: must lie in (0, 1), got {}", where, tolerance));
   }
   if (max_outer_iterations < 1 || max_matvecs < 1 || gmres_restart < 2) {
-    throw std::invalid_argument(where + ": max_outer_iterations, max_matvecs >= 1 and gmres_restart >= 2 required");
+    throw std::invalid_argument(
+        where + ": max_outer_iterations, max_matvecs >= 1 and gmres_restart >= 2 required");
   }
-  if (!(newton_forcing > 0.0 && newton_forcing < 1.0) || !(linear_factor > 0.0 && linear_factor <= 1.0)) {
+  if (!(newton_forcing > 0.0 && newton_forcing < 1.0) ||
+      !(linear_factor > 0.0 && linear_factor <= 1.0)) {
     throw std::invalid_argument(fmt::format(
         "{}.newton_forcing must lie in (0, 1) and linear_factor in (0, 1], got {} and {}", where,
         newton_forcing, linear_factor));
@@ -58,13 +62,17 @@ using Vec = std::vector<double>;
 using MapV = Eigen::Map<Eigen::VectorXd>;
 using MapCV = Eigen::Map<const Eigen::VectorXd>;
 double dot(const Vec& a, const Vec& b) {
-  return MapCV(a.data(), static_cast<Eigen::Index>(a.size())).dot(MapCV(b.data(), static_cast<Eigen::Index>(b.size())));
+  return MapCV(a.data(), static_cast<Eigen::Index>(a.size()))
+      .dot(MapCV(b.data(), static_cast<Eigen::Index>(b.size())));
 }
 // y += alpha x
 void axpy(double alpha, const Vec& x, Vec& y) {
-  MapV(y.data(), static_cast<Eigen::Index>(y.size())) += alpha * MapCV(x.data(), static_cast<Eigen::Index>(x.size()));
+  MapV(y.data(), static_cast<Eigen::Index>(y.size())) +=
+      alpha * MapCV(x.data(), static_cast<Eigen::Index>(x.size()));
 }
-double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
+double norm(const Vec& a) {
+  return std::sqrt(dot(a, a));
+}
 
 // The problem v = M tau + q with M = A^tt (sliding) or -(B^tt - A^tt)/h (rolling).
 class Problem {
@@ -196,7 +204,8 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
   const Grid& grid = op.grid();
   const std::size_t n = grid.size();
   if (pressure.size() != n) {
-    throw std::invalid_argument(fmt::format("pressure: has {} values, the grid has {}", pressure.size(), n));
+    throw std::invalid_argument(
+        fmt::format("pressure: has {} values, the grid has {}", pressure.size(), n));
   }
   Field qx(n), qy(n);
   rigid_slip(grid, qx, qy);
@@ -345,7 +354,8 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
       pb.apply(fx.data(), fy.data(), mx.data(), my.data());
       from_field(mx, my, res);
       for (std::size_t i : active) {
-        if (out.state[i] == ElementState::slip) res[offset[i]] += vnorm[i] / bound[i] * in[offset[i]];
+        if (out.state[i] == ElementState::slip)
+          res[offset[i]] += vnorm[i] / bound[i] * in[offset[i]];
       }
     };
     // Right preconditioner P ~ M^-1: sliding 1 / A_ii; rolling h (I - S)^-1 / A_ii with
@@ -420,7 +430,8 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
         inner_factor * options.tolerance * vscale * std::sqrt(static_cast<double>(m));
     // Few set changes left: solve this Newton step to the final tolerance.
     const bool tight = last_changes <= static_cast<int>(0.001 * static_cast<double>(m));
-    const double target = tight ? final_target : std::max(final_target, options.newton_forcing * norm(b));
+    const double target =
+        tight ? final_target : std::max(final_target, options.newton_forcing * norm(b));
     gmres(matvec, precond, b, x, target, options.gmres_restart, budget, workspace);
 
     // New tractions: stick values; slip tractions rotated to the solved direction, norm mu p.
@@ -520,7 +531,8 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
 }  // namespace
 
 TangentialSolution solve_sliding(InfluenceOperator& op, const Field& pressure,
-                                 const SlidingInput& input, const TangentialSolverOptions& options) {
+                                 const SlidingInput& input,
+                                 const TangentialSolverOptions& options) {
   input.validate();
   // s = A tau - delta (eq. 103): q = -delta.
   const RigidSlip q = [&](const Grid& g, Field& qx, Field& qy) {

@@ -1,7 +1,7 @@
 // `ferrodyn mim`: one MIM (boundary-element) rolling-contact solve on a Hertzian patch.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -34,8 +34,8 @@ int run_mim(const MimArgs& args) {
   in.semi_axis_x = args.a_mm * 1.0e-3;
   in.semi_axis_y = args.b_mm * 1.0e-3;
   in.normal_force = args.normal_force;
-  in.rolling = contact::mim::RollingInput{args.creepage_x, args.creepage_y, args.spin_per_m,
-                                          args.friction};
+  in.rolling =
+      contact::mim::RollingInput{args.creepage_x, args.creepage_y, args.spin_per_m, args.friction};
   in.body1 = in.body2 = contact::Material::from_young(args.young_gpa * 1.0e9, args.poisson);
   in.elements_minor = args.elements;
   const auto t0 = std::chrono::steady_clock::now();
@@ -52,8 +52,8 @@ int run_mim(const MimArgs& args) {
   fmt::print("Fn = {:.6g} N, Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m, approach = {:.6g} mm\n",
              r.normal_force, r.force_x, r.force_y, r.moment_z, r.approach * 1.0e3);
   fmt::print("Fx/(mu Fn) = {:.5f}, Fy/(mu Fn) = {:.5f}; converged: {}; {:.1f} ms (incl. set-up)\n",
-             r.force_x / (args.friction * r.normal_force), r.force_y / (args.friction * r.normal_force),
-             r.converged ? "yes" : "NO", ms);
+             r.force_x / (args.friction * r.normal_force),
+             r.force_y / (args.friction * r.normal_force), r.converged ? "yes" : "NO", ms);
   if (!args.out.empty()) {
     contact::mim::write_hdf5(r, args.out);
     fmt::print("fields written to {}\n", args.out);

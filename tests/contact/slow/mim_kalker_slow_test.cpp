@@ -1,15 +1,15 @@
 // Grid-converged MIM checks (slow): Kalker's creep coefficients over a/b = 0.2..5 and the
 // thesis's sphere rolling cases under grid refinement.
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "ferro/contact/mim/hertz_gap.hpp"
-#include "ferro/contact/mim/normal_solver.hpp"
-#include "ferro/contact/mim/tangential_solver.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/contact/mim/normal_solver.hpp"
+#include "ferro/contact/mim/tangential_solver.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -28,8 +28,10 @@ KalkerCoefficients mim_creep_coefficients(double a, double b, int elements) {
       solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
   const double g = m.shear_modulus, c = a * b, tiny = 1.0e-6, mu = 1.0e6;
   KalkerCoefficients k;
-  k.c11 = -solve_steady_rolling(op, s.pressure, RollingInput{tiny, 0.0, 0.0, mu}).force_x / (g * c * tiny);
-  k.c22 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, tiny, 0.0, mu}).force_y / (g * c * tiny);
+  k.c11 = -solve_steady_rolling(op, s.pressure, RollingInput{tiny, 0.0, 0.0, mu}).force_x /
+          (g * c * tiny);
+  k.c22 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, tiny, 0.0, mu}).force_y /
+          (g * c * tiny);
   const double spin = tiny / std::sqrt(c);
   k.c23 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, 0.0, spin, mu}).force_y /
           (g * std::pow(c, 1.5) * spin);
@@ -52,10 +54,13 @@ TEST_P(MimKalkerSweep, kalker_coefficients_grid_converged) {
   const KalkerCoefficients h1 = mim_creep_coefficients(a, b, 48);
   const KalkerCoefficients h2 = mim_creep_coefficients(a, b, 96);
   const KalkerCoefficients ref = kalker_coefficients_table(a, b, 0.28);
-  const double c11 = 2.0 * h2.c11 - h1.c11, c22 = 2.0 * h2.c22 - h1.c22, c23 = 2.0 * h2.c23 - h1.c23;
-  std::printf("a/b = %.2f  C11 %.4f (table %.4f, %+.2f %%)  C22 %.4f (%.4f, %+.2f %%)  C23 %.4f (%.4f, %+.2f %%)\n",
-              ratio, c11, ref.c11, 100.0 * (c11 / ref.c11 - 1.0), c22, ref.c22,
-              100.0 * (c22 / ref.c22 - 1.0), c23, ref.c23, 100.0 * (c23 / ref.c23 - 1.0));
+  const double c11 = 2.0 * h2.c11 - h1.c11, c22 = 2.0 * h2.c22 - h1.c22,
+               c23 = 2.0 * h2.c23 - h1.c23;
+  std::printf(
+      "a/b = %.2f  C11 %.4f (table %.4f, %+.2f %%)  C22 %.4f (%.4f, %+.2f %%)  C23 %.4f (%.4f, "
+      "%+.2f %%)\n",
+      ratio, c11, ref.c11, 100.0 * (c11 / ref.c11 - 1.0), c22, ref.c22,
+      100.0 * (c22 / ref.c22 - 1.0), c23, ref.c23, 100.0 * (c23 / ref.c23 - 1.0));
   EXPECT_NEAR(c11 / ref.c11, 1.0, kTol);
   EXPECT_NEAR(c22 / ref.c22, 1.0, kTol);
   EXPECT_NEAR(c23 / ref.c23, 1.0, kTol);
@@ -70,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(EllipseRatios, MimKalkerSweep, ::testing::Values(0.2, 0
 TEST(MimRollingSlow, thesis_sphere_cases_grid_convergence) {
   const CombinedMaterial m = combine(kSteel, kSteel);
   const double r_rel = 1.0 / (1.0 / 0.300 + 1.0 / 0.460);
-  const RollingInput cases[3] = {{3.0e-3, 0.0, 0.0, 0.2}, {0.0, 3.0e-3, 0.0, 0.2}, {0.0, 0.0, 0.6, 0.2}};
+  const RollingInput cases[3] = {
+      {3.0e-3, 0.0, 0.0, 0.2}, {0.0, 3.0e-3, 0.0, 0.2}, {0.0, 0.0, 0.6, 0.2}};
   double f[3][3];
   double mufn[3];
   const double dxs[3] = {0.5e-3, 0.25e-3, 0.125e-3};
@@ -79,7 +85,8 @@ TEST(MimRollingSlow, thesis_sphere_cases_grid_convergence) {
     if (n % 2 == 0) ++n;
     const Grid grid = Grid::centred(n, n, dxs[k], dxs[k]);
     InfluenceOperator op(grid, m);
-    const Field gap = sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
+    const Field gap =
+        sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
     const NormalSolution s = solve_normal_approach(op, gap, 0.4e-3);
     mufn[k] = 0.2 * s.normal_force;
     for (int c = 0; c < 3; ++c) {
@@ -115,7 +122,8 @@ TEST(MimNormalSlow, hertz_spheres_finer_grids) {
     if (n % 2 == 0) ++n;
     const Grid grid = Grid::centred(n, n, dx, dx);
     InfluenceOperator op(grid, m);
-    const Field gap = sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
+    const Field gap =
+        sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
     const NormalSolution s = solve_normal_approach(op, gap, delta);
     ASSERT_TRUE(s.converged);
     double bulk = 0.0, edge = 0.0;
@@ -124,11 +132,16 @@ TEST(MimNormalSlow, hertz_spheres_finer_grids) {
       const double r = std::abs(grid.x(ix));
       const double ph = r < a ? p0 * std::sqrt(1.0 - r * r / (a * a)) : 0.0;
       const double e = std::abs(s.pressure[grid.index(ix, iy)] - ph) / p0;
-      if (r <= 0.9 * a) bulk = std::max(bulk, e);
-      else edge = std::max(edge, e);
+      if (r <= 0.9 * a)
+        bulk = std::max(bulk, e);
+      else
+        edge = std::max(edge, e);
     }
-    std::printf("hertz_spheres dx %.3f mm (%d x %d): F %+.4f %%, profile %.4f %% (bulk) %.4f %% (edge), %d iterations\n",
-                dx * 1e3, n, n, 100.0 * (s.normal_force / f_hertz - 1.0), 100.0 * bulk, 100.0 * edge, s.iterations);
+    std::printf(
+        "hertz_spheres dx %.3f mm (%d x %d): F %+.4f %%, profile %.4f %% (bulk) %.4f %% (edge), %d "
+        "iterations\n",
+        dx * 1e3, n, n, 100.0 * (s.normal_force / f_hertz - 1.0), 100.0 * bulk, 100.0 * edge,
+        s.iterations);
     EXPECT_NEAR(s.normal_force / f_hertz, 1.0, 0.01);
     EXPECT_LE(bulk, 0.01);
     EXPECT_LE(edge, 0.03);

@@ -15,12 +15,12 @@ namespace ferro::contact::mim {
 /// row-major with x fastest: value(ix, iy) = field[iy * nx + ix]. x is the rolling direction;
 /// the body rolls towards +x, so the leading edge of a patch is at its largest x.
 struct Grid {
-  int nx = 0;                                             ///< elements along x [-]
-  int ny = 0;                                             ///< elements along y [-]
-  double dx = std::numeric_limits<double>::quiet_NaN();   ///< element length along x [m]
-  double dy = std::numeric_limits<double>::quiet_NaN();   ///< element length along y [m]
-  double x0 = std::numeric_limits<double>::quiet_NaN();   ///< x of the centre of element (0, .) [m]
-  double y0 = std::numeric_limits<double>::quiet_NaN();   ///< y of the centre of element (., 0) [m]
+  int nx = 0;                                            ///< elements along x [-]
+  int ny = 0;                                            ///< elements along y [-]
+  double dx = std::numeric_limits<double>::quiet_NaN();  ///< element length along x [m]
+  double dy = std::numeric_limits<double>::quiet_NaN();  ///< element length along y [m]
+  double x0 = std::numeric_limits<double>::quiet_NaN();  ///< x of the centre of element (0, .) [m]
+  double y0 = std::numeric_limits<double>::quiet_NaN();  ///< y of the centre of element (., 0) [m]
 
   /// Grid of nx x ny elements centred on the origin.
   static Grid centred(int nx, int ny, double dx, double dy);

@@ -15,10 +15,10 @@ namespace ferro::contact::mim {
 
 /// Curvature coefficients of the gap z = A x^2 + B y^2 and the Hertz approach.
 struct HertzGap {
-  double curvature_x = 0.0;  ///< A [1/m]
-  double curvature_y = 0.0;  ///< B [1/m]
-  double approach = 0.0;     ///< delta [m]
-  double max_pressure = 0.0; ///< p0 [Pa]
+  double curvature_x = 0.0;   ///< A [1/m]
+  double curvature_y = 0.0;   ///< B [1/m]
+  double approach = 0.0;      ///< delta [m]
+  double max_pressure = 0.0;  ///< p0 [Pa]
 };
 
 /// Gap reproducing the ellipse with semi-axes a (along x) and b (along y) [m] under normal

@@ -7,10 +7,10 @@
 // equal to the aperiodic (Toeplitz) sum exactly.
 // Known deviations: none; products are exact up to round-off (no truncation of the kernel).
 
+#include <memory>
+
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/mim/grid.hpp"
-
-#include <memory>
 
 namespace ferro::contact::mim {
 

@@ -6,16 +6,16 @@
 // tangential_solver.hpp.
 // Known deviations: quasi-identical bodies (K = 0); see the solver headers.
 
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/mim/grid.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/contact/mim/tangential_solver.hpp"
-
-#include <limits>
-#include <memory>
-#include <string>
-#include <vector>
 
 namespace ferro::contact::mim {
 
@@ -36,16 +36,16 @@ struct MimOptions {
 /// direction, z normal.
 struct MimResult {
   Grid grid;
-  double normal_force = 0.0;  ///< F_n [N]
-  double force_x = 0.0;       ///< F_x [N]
-  double force_y = 0.0;       ///< F_y [N]
-  double moment_z = 0.0;      ///< M_z about the grid origin [N m]
-  double approach = 0.0;      ///< delta [m]
-  Field pressure;             ///< p_n [Pa]
-  Field traction_x;           ///< tau_x [Pa]
-  Field traction_y;           ///< tau_y [Pa]
-  Field slip_x;               ///< w_x / V in slip elements [-]
-  Field slip_y;               ///< w_y / V in slip elements [-]
+  double normal_force = 0.0;        ///< F_n [N]
+  double force_x = 0.0;             ///< F_x [N]
+  double force_y = 0.0;             ///< F_y [N]
+  double moment_z = 0.0;            ///< M_z about the grid origin [N m]
+  double approach = 0.0;            ///< delta [m]
+  Field pressure;                   ///< p_n [Pa]
+  Field traction_x;                 ///< tau_x [Pa]
+  Field traction_y;                 ///< tau_y [Pa]
+  Field slip_x;                     ///< w_x / V in slip elements [-]
+  Field slip_y;                     ///< w_y / V in slip elements [-]
   std::vector<ElementState> state;  ///< exterior / stick (adhesion) / slip
   // Convergence record
   int normal_iterations = 0;
@@ -65,9 +65,9 @@ struct MimResult {
 
 /// Hertzian input, as a tangential (creep-force) model receives it.
 struct HertzRollingInput {
-  double semi_axis_x = std::numeric_limits<double>::quiet_NaN();  ///< a [m] (rolling direction)
-  double semi_axis_y = std::numeric_limits<double>::quiet_NaN();  ///< b [m]
-  double normal_force = std::numeric_limits<double>::quiet_NaN(); ///< F_n [N]
+  double semi_axis_x = std::numeric_limits<double>::quiet_NaN();   ///< a [m] (rolling direction)
+  double semi_axis_y = std::numeric_limits<double>::quiet_NaN();   ///< b [m]
+  double normal_force = std::numeric_limits<double>::quiet_NaN();  ///< F_n [N]
   RollingInput rolling;                                            ///< creepages, spin, mu
   Material body1;
   Material body2;

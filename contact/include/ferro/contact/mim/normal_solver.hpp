@@ -10,10 +10,10 @@
 // the same discrete solution with the Polonsky-Keer constrained CG, which never forms A^zz
 // (products by FFT, InfluenceOperator). Stopping test: the complementarity residuals below.
 
+#include <limits>
+
 #include "ferro/contact/mim/grid.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
-
-#include <limits>
 
 namespace ferro::contact::mim {
 
@@ -26,8 +26,8 @@ struct NormalSolverOptions {
 };
 
 struct NormalSolution {
-  Field pressure;        ///< p_n per element [Pa]
-  Field deformed_gap;    ///< e_z = u_z + z - delta per element [m]
+  Field pressure;             ///< p_n per element [Pa]
+  Field deformed_gap;         ///< e_z = u_z + z - delta per element [m]
   double normal_force = 0.0;  ///< F_n = dx dy sum p [N] (eq. 85)
   double approach = 0.0;      ///< delta [m]
   int iterations = 0;

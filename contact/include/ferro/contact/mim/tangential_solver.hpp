@@ -18,13 +18,13 @@
 // slip direction residuals are below tolerance.
 // Quasi-identical bodies (K = 0): tangential tractions do not change the pressure.
 
-#include "ferro/contact/mim/grid.hpp"
-#include "ferro/contact/mim/influence_operator.hpp"
-
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
+
+#include "ferro/contact/mim/grid.hpp"
+#include "ferro/contact/mim/influence_operator.hpp"
 
 namespace ferro::contact::mim {
 
@@ -32,9 +32,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// Rigid tangential shift of body 1 relative to body 2 (Cattaneo-Mindlin), eq. (97).
 struct SlidingInput {
-  double shift_x = kNaN;  ///< delta_x [m]
-  double shift_y = kNaN;  ///< delta_y [m]
-  double friction = kNaN; ///< mu [-]
+  double shift_x = kNaN;   ///< delta_x [m]
+  double shift_y = kNaN;   ///< delta_y [m]
+  double friction = kNaN;  ///< mu [-]
   void validate(const std::string& where = "SlidingInput") const;
 };
 
@@ -56,7 +56,7 @@ struct TangentialSolverOptions {
   /// (inexact Newton); the last step is solved to the tolerance [-].
   double newton_forcing = 1.0e-2;
   int max_outer_iterations = 200;
-  int max_matvecs = 20000;   ///< cap on FFT products in total
+  int max_matvecs = 20000;  ///< cap on FFT products in total
   int gmres_restart = 80;
   /// Start from the solution on the grid coarsened by two (recursively while both sides have
   /// >= 24 elements): same equations and tolerance on the final grid, fewer iterations.
