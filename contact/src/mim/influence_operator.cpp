@@ -198,7 +198,7 @@ struct InfluenceOperator::Impl {
 
   // Spectrum of a grid field (zero-padded): r2c on the data rows, zero rows above, columns.
   void transform(const double* field, double* real, fftw_complex* spec) {
-    const std::size_t nxc = static_cast<std::size_t>(px / 2 + 1);
+    const std::size_t nxc = static_cast<std::size_t>(px) / 2 + 1;
     for (int iy = 0; iy < grid.ny; ++iy) {
       double* row = real + static_cast<std::size_t>(iy) * px;
       std::copy(field + static_cast<std::size_t>(iy) * grid.nx,

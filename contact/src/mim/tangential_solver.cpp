@@ -111,7 +111,7 @@ struct GmresWorkspace {
     z.resize(n);
     v.resize(static_cast<std::size_t>(restart) + 1);
     for (Vec& vi : v) vi.resize(n);
-    h.assign(static_cast<std::size_t>((restart + 1) * restart), 0.0);
+    h.assign((static_cast<std::size_t>(restart) + 1) * static_cast<std::size_t>(restart), 0.0);
     cs.assign(restart, 0.0);
     sn.assign(restart, 0.0);
     g.assign(restart + 1, 0.0);
@@ -131,7 +131,9 @@ double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double ta
   Vec& w = ws.w;
   Vec& z = ws.z;
   std::vector<Vec>& v = ws.v;
-  auto H = [&](int i, int j) -> double& { return ws.h[static_cast<std::size_t>(i) * restart + j]; };
+  auto hess = [&](int i, int j) -> double& {
+    return ws.h[static_cast<std::size_t>(i) * restart + j];
+  };
   std::vector<double>& cs = ws.cs;
   std::vector<double>& sn = ws.sn;
   std::vector<double>& g = ws.g;
@@ -152,24 +154,24 @@ double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double ta
       --budget;
       for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
         const double hik = dot(w, v[i]);
-        H(i, k) = hik;
+        hess(i, k) = hik;
         axpy(-hik, v[i], w);
       }
-      H(k + 1, k) = norm(w);
-      if (H(k + 1, k) > 0.0) {
-        const double inv = 1.0 / H(k + 1, k);
+      hess(k + 1, k) = norm(w);
+      if (hess(k + 1, k) > 0.0) {
+        const double inv = 1.0 / hess(k + 1, k);
         for (std::size_t j = 0; j < n; ++j) v[k + 1][j] = w[j] * inv;
       }
       for (int i = 0; i < k; ++i) {  // previous Givens rotations
-        const double t = cs[i] * H(i, k) + sn[i] * H(i + 1, k);
-        H(i + 1, k) = -sn[i] * H(i, k) + cs[i] * H(i + 1, k);
-        H(i, k) = t;
+        const double t = cs[i] * hess(i, k) + sn[i] * hess(i + 1, k);
+        hess(i + 1, k) = -sn[i] * hess(i, k) + cs[i] * hess(i + 1, k);
+        hess(i, k) = t;
       }
-      const double d = std::hypot(H(k, k), H(k + 1, k));
-      cs[k] = d > 0.0 ? H(k, k) / d : 1.0;
-      sn[k] = d > 0.0 ? H(k + 1, k) / d : 0.0;
-      H(k, k) = d;
-      H(k + 1, k) = 0.0;
+      const double d = std::hypot(hess(k, k), hess(k + 1, k));
+      cs[k] = d > 0.0 ? hess(k, k) / d : 1.0;
+      sn[k] = d > 0.0 ? hess(k + 1, k) / d : 0.0;
+      hess(k, k) = d;
+      hess(k + 1, k) = 0.0;
       g[k + 1] = -sn[k] * g[k];
       g[k] = cs[k] * g[k];
       if (std::abs(g[k + 1]) <= target) {
@@ -181,8 +183,8 @@ double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double ta
     std::vector<double>& y = ws.y;
     for (int i = k - 1; i >= 0; --i) {
       double s = g[i];
-      for (int j = i + 1; j < k; ++j) s -= H(i, j) * y[j];
-      y[i] = H(i, i) != 0.0 ? s / H(i, i) : 0.0;
+      for (int j = i + 1; j < k; ++j) s -= hess(i, j) * y[j];
+      y[i] = hess(i, i) != 0.0 ? s / hess(i, i) : 0.0;
     }
     std::fill(w.begin(), w.end(), 0.0);
     for (int i = 0; i < k; ++i) axpy(y[i], v[i], w);
