@@ -93,8 +93,10 @@ struct InfluenceOperator::Impl {
   fftw_plan cols_forward = nullptr;   // c2c along y on all columns, in place on spec_a
   fftw_plan cols_backward = nullptr;  // c2c along y, in place on spec_c
   fftw_plan rows_backward = nullptr;  // c2r along x on the ny needed rows: spec_c -> real_a
-  Spectrum kzz, kxx, kxy, kyy, dxx, dxy, dyx, dyy;
+  Spectrum kzz, kxx, kxy, kyy, dxx, dxy, dyx, dyy, ixx, ixy, iyy;
   double self_zz = 0.0, self_xx = 0.0, self_yy = 0.0, roll_self = 0.0;
+  // Floor of the smaller eigenvalue of the inverted 2 x 2 symbol, relative to their mean.
+  static constexpr double inverse_floor = 0.5;
   std::unique_ptr<InfluenceOperator> coarse;
   bool measure = false;
 
@@ -185,6 +187,29 @@ struct InfluenceOperator::Impl {
     kxx = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).xx; });
     kxy = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).xy; });
     kyy = kernel_spectrum([&](int ox, int oy) { return at(ox, oy).yy; });
+    // Inverse of the 2 x 2 circulant symbol per frequency. The kernels are even (A^xy odd-odd),
+    // so the symbols are real symmetric. For the continuous half-space the two eigenvalues are
+    // in the ratio 1 - nu >= 0.5; the collocated operator is nearly singular at the y-Nyquist
+    // frequency for nu ~ 0.28 (indefinite there above ~0.3), which would make the inverse blow
+    // up, so the smaller eigenvalue is floored at a fraction of the mean of the two.
+    {
+      const double n2 = static_cast<double>(nreal) * static_cast<double>(nreal);
+      ixx.assign(ncomplex, 0.0);
+      ixy.assign(ncomplex, 0.0);
+      iyy.assign(ncomplex, 0.0);
+      for (std::size_t i = 0; i < ncomplex; ++i) {
+        const double a = kxx[i].real(), b = kxy[i].real(), c = kyy[i].real();
+        const double mean = 0.5 * (a + c), rad = std::hypot(0.5 * (a - c), b);
+        const double floor = inverse_floor * std::abs(mean);
+        const double l1 = std::max(mean + rad, floor), l2 = std::max(mean - rad, floor);
+        // eigenvector of l1: angle theta with tan(2 theta) = 2 b / (a - c)
+        const double theta = 0.5 * std::atan2(2.0 * b, a - c);
+        const double co = std::cos(theta), si = std::sin(theta);
+        ixx[i] = (co * co / l1 + si * si / l2) / n2;
+        ixy[i] = (co * si / l1 - co * si / l2) / n2;
+        iyy[i] = (si * si / l1 + co * co / l2) / n2;
+      }
+    }
     // Rolling: (A(X + h) - A(X)) / h with h = dx (eq. 117, 120).
     const double inv_h = 1.0 / dx;
     dxx = kernel_spectrum(
@@ -289,6 +314,11 @@ void InfluenceOperator::rolling_difference(const double* traction_x, const doubl
                                            double* out_x, double* out_y) {
   impl_->apply_block(impl_->dxx, impl_->dxy, impl_->dyx, impl_->dyy, traction_x, traction_y, out_x,
                      out_y);
+}
+
+void InfluenceOperator::tangential_inverse(const double* in_x, const double* in_y, double* out_x,
+                                           double* out_y) {
+  impl_->apply_block(impl_->ixx, impl_->ixy, impl_->ixy, impl_->iyy, in_x, in_y, out_x, out_y);
 }
 
 InfluenceOperator& InfluenceOperator::coarse() {

@@ -306,7 +306,6 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
   double previous_dir_res = std::numeric_limits<double>::infinity();
   int budget = options.max_matvecs;
   const double h = grid.dx;
-  const double pre_scale = rolling ? h / op.tangential_self_x() : 1.0 / op.tangential_self_x();
   // Diagonal of M: A^xx_ii (sliding) or (A^xx(0) - A^xx(h)) / h (rolling).
   const double m_diag = rolling ? op.rolling_self() : op.tangential_self_x();
 
@@ -360,22 +359,12 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
           res[offset[i]] += vnorm[i] / bound[i] * in[offset[i]];
       }
     };
-    // Right preconditioner P ~ M^-1: sliding 1 / A_ii; rolling h (I - S)^-1 / A_ii with
-    // (I - S)^-1 the exact inverse of the x-difference (running sum from the leading edge at
-    // +x), so that M P is close to the symmetric positive definite A^tt / A_ii.
+    // Right preconditioner P ~ M^-1 on the stick rows: sliding C^-1, rolling h C^-1 (I - S)^-1,
+    // with (I - S)^-1 the exact inverse of the x-difference (running sum from the leading edge
+    // at +x) and C^-1 the FFT inverse of the circulant extension of A^tt
+    // (InfluenceOperator::tangential_inverse); slip rows: inverse of their diagonal.
     auto precond = [&](const Vec& in, Vec& res) {
-      if (!rolling) {
-        for (std::size_t i : active) {
-          const std::size_t k = offset[i];
-          if (out.state[i] == ElementState::stick) {
-            res[k] = pre_scale * in[k];
-            res[k + 1] = pre_scale * in[k + 1];
-          } else {
-            res[k] = in[k] / (m_diag + vnorm[i] / bound[i]);
-          }
-        }
-        return;
-      }
+      // Stick rows: field of their residuals (zero elsewhere).
       std::fill(fx.begin(), fx.end(), 0.0);
       std::fill(fy.begin(), fy.end(), 0.0);
       for (std::size_t i : active) {
@@ -384,21 +373,25 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
           fy[i] = in[offset[i] + 1];
         }
       }
-      for (int iy = 0; iy < grid.ny; ++iy) {
-        double sx = 0.0, sy = 0.0;
-        for (int ix = grid.nx - 1; ix >= 0; --ix) {
-          const std::size_t i = grid.index(ix, iy);
-          sx += fx[i];
-          sy += fy[i];
-          fx[i] = pre_scale * sx;
-          fy[i] = pre_scale * sy;
+      if (rolling) {  // (I - S)^-1 h: running sum from the leading edge, kept on the stick set
+        for (int iy = 0; iy < grid.ny; ++iy) {
+          double sx = 0.0, sy = 0.0;
+          for (int ix = grid.nx - 1; ix >= 0; --ix) {
+            const std::size_t i = grid.index(ix, iy);
+            sx += fx[i];
+            sy += fy[i];
+            const bool keep = out.state[i] == ElementState::stick;
+            fx[i] = keep ? h * sx : 0.0;
+            fy[i] = keep ? h * sy : 0.0;
+          }
         }
       }
+      op.tangential_inverse(fx.data(), fy.data(), mx.data(), my.data());
       for (std::size_t i : active) {
         const std::size_t k = offset[i];
         if (out.state[i] == ElementState::stick) {
-          res[k] = fx[i];
-          res[k + 1] = fy[i];
+          res[k] = mx[i];
+          res[k + 1] = my[i];
         } else {  // slip rows: inverse of their diagonal (M_ii + |v_i| / mu p_i)
           res[k] = in[k] / (m_diag + vnorm[i] / bound[i]);
         }

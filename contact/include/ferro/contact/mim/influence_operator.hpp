@@ -39,6 +39,11 @@ class InfluenceOperator {
   void rolling_difference(const double* traction_x, const double* traction_y, double* out_x,
                           double* out_y);
 
+  /// Preconditioner: the exact inverse of the cyclic (circulant) extension of A^tt on the
+  /// zero-padded FFT grid, applied to a grid field and restricted back to the grid [Pa / m].
+  /// Approximates (A^tt restricted to a patch)^-1 (Strang/Chan-type circulant preconditioner).
+  void tangential_inverse(const double* in_x, const double* in_y, double* out_x, double* out_y);
+
   /// Operator on the grid coarsened by two in each direction (element (I, J) covers fine
   /// elements 2I..2I+1, 2J..2J+1), created on first use and kept. Used for nested iteration.
   [[nodiscard]] InfluenceOperator& coarse();

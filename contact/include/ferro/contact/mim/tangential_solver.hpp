@@ -12,8 +12,9 @@
 // (semi-smooth) Newton method: stick elements carry w = 0 (two equations), slip elements keep
 // |tau| = mu p_n and carry the linearised direction condition tau = -mu p_n w/|w| (one equation
 // for the component across the current direction); each linear system is solved by restarted
-// GMRES with FFT products (right preconditioner for rolling: the exact inverse of the
-// x-difference, a running sum from the leading edge). Sets are updated (stick -> slip when
+// GMRES with FFT products (right preconditioner: the FFT inverse of the circulant extension of
+// A^tt, for rolling composed with the exact inverse of the x-difference, a running sum from the
+// leading edge). Sets are updated (stick -> slip when
 // |tau| > mu p_n as eq. 107, slip -> stick when w turns along tau) until the stick velocity and
 // slip direction residuals are below tolerance.
 // Quasi-identical bodies (K = 0): tangential tractions do not change the pressure.
