@@ -26,15 +26,18 @@ KalkerCoefficients mim_creep_coefficients(double a, double b, int elements) {
   InfluenceOperator op(grid, m);
   const NormalSolution s =
       solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
+  EXPECT_TRUE(s.converged);
   const double g = m.shear_modulus, c = a * b, tiny = 1.0e-6, mu = 1.0e6;
   KalkerCoefficients k;
-  k.c11 = -solve_steady_rolling(op, s.pressure, RollingInput{tiny, 0.0, 0.0, mu}).force_x /
-          (g * c * tiny);
-  k.c22 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, tiny, 0.0, mu}).force_y /
-          (g * c * tiny);
+  auto rolling = [&](const RollingInput& in) {
+    const TangentialSolution t = solve_steady_rolling(op, s.pressure, in);
+    EXPECT_TRUE(t.converged);
+    return t;
+  };
+  k.c11 = -rolling(RollingInput{tiny, 0.0, 0.0, mu}).force_x / (g * c * tiny);
+  k.c22 = -rolling(RollingInput{0.0, tiny, 0.0, mu}).force_y / (g * c * tiny);
   const double spin = tiny / std::sqrt(c);
-  k.c23 = -solve_steady_rolling(op, s.pressure, RollingInput{0.0, 0.0, spin, mu}).force_y /
-          (g * std::pow(c, 1.5) * spin);
+  k.c23 = -rolling(RollingInput{0.0, 0.0, spin, mu}).force_y / (g * std::pow(c, 1.5) * spin);
   return k;
 }
 
