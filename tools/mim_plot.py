@@ -7,6 +7,10 @@
   mim_plot.py timing BENCH.json OUT.png
       time against number of elements from `ferro_bench_mim --benchmark_out=BENCH.json`, with an
       N log N guide and the thesis's Table 2.1 (Toumi 2016) for comparison.
+  mim_plot.py curve TEST_OUTPUT.txt OUT.png
+      creep curve from the "creep curve xi_x ..." lines printed by
+      `ferro_contact_tests --gtest_filter=MimRolling.thesis_creep_curve_25_points`, with Kalker's
+      linear law and the Shen-Hedrick-Elkins cubic (C11 from annex A.2 for a/b = 1, nu = 0.28).
 """
 import argparse
 import json
@@ -80,7 +84,7 @@ def timing(args):
     elems = np.array([n * n for n in ns], float)
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     ax.loglog(elems, [pts[n][1] for n in ns], "o-", label="ferrodyn MIM, CPU time")
-    ax.loglog(elems, [pts[n][0] for n in ns], "s--", alpha=0.6, label="ferrodyn MIM, wall time (loaded box)")
+    ax.loglog(elems, [pts[n][0] for n in ns], "s--", alpha=0.6, label="ferrodyn MIM, wall time")
     ref = elems * np.log(elems)
     k = pts[ns[-1]][1] / ref[-1]
     ax.loglog(elems, k * ref, "k:", label="N log N (through the largest grid)")
@@ -98,14 +102,44 @@ def timing(args):
     fig.savefig(args.output, dpi=80)
 
 
+def curve(args):
+    xi, f = [], []
+    with open(args.input) as fh:
+        for line in fh:
+            if line.startswith("creep curve xi_x"):
+                parts = line.split()
+                xi.append(float(parts[3]))
+                f.append(float(parts[-1]))
+    xi = np.array(xi)
+    f = np.array(f)
+    # Sphere case of the thesis: G = 82.03 GPa, a = 8.5224 mm, mu F_n = 0.2 x 517.9 kN.
+    g, a, mufn, c11 = 210e9 / 2.56, 8.5224e-3, 0.2 * 517925.0, 4.2306
+    x = np.linspace(xi.min(), xi.max(), 400)
+    lin = -g * a * a * c11 * x * 1e-3 / mufn
+    t = np.abs(lin)
+    cubic = np.where(t < 3, 1 - (1 - np.minimum(t, 3) / 3) ** 3, 1.0) * np.sign(lin)
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    ax.plot(x, np.clip(lin, -1.5, 1.5), "k:", label="Kalker linear theory (C11)")
+    ax.plot(x, cubic, "g--", label="Shen-Hedrick-Elkins cubic")
+    ax.plot(xi, f, "o-", label="ferrodyn MIM, dx = 0.5 mm (25 points)")
+    ax.set_xlabel("xi_x [per mille]")
+    ax.set_ylabel("Fx / (mu Fn)")
+    ax.set_ylim(-1.2, 1.2)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("Creep curve, spheres 300/460 mm, mu = 0.2 (thesis fig. 2.13 case)")
+    fig.tight_layout()
+    fig.savefig(args.output, dpi=80)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("kind", choices=["fields", "timing"])
+    ap.add_argument("kind", choices=["fields", "timing", "curve"])
     ap.add_argument("input")
     ap.add_argument("output")
     ap.add_argument("--title", default="")
     args = ap.parse_args()
-    (fields if args.kind == "fields" else timing)(args)
+    {"fields": fields, "timing": timing, "curve": curve}[args.kind](args)
 
 
 if __name__ == "__main__":
