@@ -17,6 +17,7 @@ int run_main(int argc, char** argv) {
   add_scene_commands(app, handler);
   add_contact_commands(app, handler);
   add_geometry_commands(app, handler);
+  add_mim_commands(app, handler);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

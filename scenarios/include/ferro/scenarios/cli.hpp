@@ -30,5 +30,6 @@ int run_main(int argc, char** argv);
 void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, plot, validate
 void add_contact_commands(CLI::App& app, VerbHandler& handler);  // contact eval, curve, patch
 void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry search, PAIR.yaml
+void add_mim_commands(CLI::App& app, VerbHandler& handler);      // mim
 
 }  // namespace ferro::cli

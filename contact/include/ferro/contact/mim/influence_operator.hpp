@@ -1,0 +1,64 @@
+#pragma once
+// Matrix-free influence products u = A p on a regular grid by zero-padded FFT convolution.
+//
+// References: Toumi (2016) eqs. (74)-(76), (100), (117)-(120); annex B.3 for the coefficients.
+// Vollebregt, "User guide for CONTACT" (2014) and Liu, Wang & Liu, Wear 243 (2000) for
+// discrete convolution + FFT (DC-FFT) with zero padding, which makes the cyclic convolution
+// equal to the aperiodic (Toeplitz) sum exactly.
+// Known deviations: none; products are exact up to round-off (no truncation of the kernel).
+
+#include <memory>
+
+#include "ferro/contact/material.hpp"
+#include "ferro/contact/mim/grid.hpp"
+
+namespace ferro::contact::mim {
+
+/// Holds the FFTW plans, the kernel spectra and the work buffers for one grid and one material
+/// pair. Plans are made once in the constructor and reused by every product. The products are
+/// not thread-safe (they share the work buffers); use one operator per thread.
+class InfluenceOperator {
+ public:
+  /// `measure_plans` asks FFTW to time candidate algorithms (slower construction, faster
+  /// products); the default estimates.
+  InfluenceOperator(const Grid& grid, const CombinedMaterial& material, bool measure_plans = false);
+  ~InfluenceOperator();
+  InfluenceOperator(const InfluenceOperator&) = delete;
+  InfluenceOperator& operator=(const InfluenceOperator&) = delete;
+
+  [[nodiscard]] const Grid& grid() const;
+  [[nodiscard]] const CombinedMaterial& material() const;
+
+  /// u_z = A^zz p_n [m] for pressures p_n [Pa]; arrays of grid().size().
+  void normal(const double* pressure, double* displacement_z);
+  /// u = A^tt tau [m] (eqs. 70-71, 100) for tractions (tau_x, tau_y) [Pa].
+  void tangential(const double* traction_x, const double* traction_y, double* displacement_x,
+                  double* displacement_y);
+  /// d = (B^tt - A^tt) tau / h [-] with B^tt(X) = A^tt(X + h), h = dx (eqs. 117-120): the
+  /// forward difference of the tangential displacement towards the leading edge (+x).
+  void rolling_difference(const double* traction_x, const double* traction_y, double* out_x,
+                          double* out_y);
+
+  /// Preconditioner: the exact inverse of the cyclic (circulant) extension of A^tt on the
+  /// zero-padded FFT grid, applied to a grid field and restricted back to the grid [Pa / m].
+  /// Approximates (A^tt restricted to a patch)^-1 (Strang/Chan-type circulant preconditioner).
+  void tangential_inverse(const double* in_x, const double* in_y, double* out_x, double* out_y);
+
+  /// Operator on the grid coarsened by two in each direction (element (I, J) covers fine
+  /// elements 2I..2I+1, 2J..2J+1), created on first use and kept. Used for nested iteration.
+  [[nodiscard]] InfluenceOperator& coarse();
+
+  /// Self-influence A^zz of an element on itself [m/Pa] (diagonal of A^zz).
+  [[nodiscard]] double normal_self() const;
+  /// Diagonal entries A^xx_ii, A^yy_ii [m/Pa].
+  [[nodiscard]] double tangential_self_x() const;
+  [[nodiscard]] double tangential_self_y() const;
+  /// Diagonal of -(B^xx - A^xx)/h, i.e. (A^xx(0) - A^xx(h))/h [1/Pa].
+  [[nodiscard]] double rolling_self() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ferro::contact::mim

@@ -1,0 +1,114 @@
+#pragma once
+// MIM (boundary-element) rolling contact in one call: normal problem, then steady rolling, with
+// the results a tangential-model adapter needs (forces, moment, approach, fields).
+//
+// References: Toumi (2016) chapter 2 (eqs. 74-123); see normal_solver.hpp and
+// tangential_solver.hpp.
+// Known deviations: quasi-identical bodies (K = 0); see the solver headers.
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/material.hpp"
+#include "ferro/contact/mim/grid.hpp"
+#include "ferro/contact/mim/influence_operator.hpp"
+#include "ferro/contact/mim/normal_solver.hpp"
+#include "ferro/contact/mim/tangential_solver.hpp"
+
+namespace ferro::contact::mim {
+
+/// Normal load: exactly one of the two must be set (the other NaN).
+struct NormalLoad {
+  double normal_force = std::numeric_limits<double>::quiet_NaN();  ///< F_n [N]
+  double approach = std::numeric_limits<double>::quiet_NaN();      ///< delta [m]
+  void validate(const std::string& where = "NormalLoad") const;
+};
+
+struct MimOptions {
+  NormalSolverOptions normal;
+  TangentialSolverOptions tangential;
+};
+
+/// Complete MIM solution. Fields are on `grid` (row-major, x fastest). Forces act on body 1
+/// (the body whose displacement is u1 in u = u1 - u2), in the contact frame: x rolling
+/// direction, z normal.
+struct MimResult {
+  Grid grid;
+  double normal_force = 0.0;        ///< F_n [N]
+  double force_x = 0.0;             ///< F_x [N]
+  double force_y = 0.0;             ///< F_y [N]
+  double moment_z = 0.0;            ///< M_z about the grid origin [N m]
+  double approach = 0.0;            ///< delta [m]
+  Field pressure;                   ///< p_n [Pa]
+  Field traction_x;                 ///< tau_x [Pa]
+  Field traction_y;                 ///< tau_y [Pa]
+  Field slip_x;                     ///< w_x / V in slip elements [-]
+  Field slip_y;                     ///< w_y / V in slip elements [-]
+  std::vector<ElementState> state;  ///< exterior / stick (adhesion) / slip
+  // Convergence record
+  int normal_iterations = 0;
+  double gap_residual = 0.0;
+  double penetration_residual = 0.0;
+  int tangential_matvecs = 0;
+  double stick_residual = 0.0;
+  double direction_residual = 0.0;
+  double coulomb_residual = 0.0;
+  bool converged = false;
+};
+
+/// Normal then steady-rolling solve on an arbitrary undeformed gap z [m] sampled on op.grid().
+[[nodiscard]] MimResult solve_rolling_contact(InfluenceOperator& op, const Field& gap,
+                                              const NormalLoad& load, const RollingInput& rolling,
+                                              const MimOptions& options = {});
+
+/// Hertzian input, as a tangential (creep-force) model receives it.
+struct HertzRollingInput {
+  double semi_axis_x = std::numeric_limits<double>::quiet_NaN();   ///< a [m] (rolling direction)
+  double semi_axis_y = std::numeric_limits<double>::quiet_NaN();   ///< b [m]
+  double normal_force = std::numeric_limits<double>::quiet_NaN();  ///< F_n [N]
+  RollingInput rolling;                                            ///< creepages, spin, mu
+  Material body1;
+  Material body2;
+  int elements_minor = 40;  ///< elements across the shorter axis of the ellipse [-]
+  void validate(const std::string& where = "HertzRollingInput") const;
+};
+
+/// Builds the gap that reproduces the ellipse a x b under F_n (hertz_gap.hpp), a grid with
+/// `elements_minor` elements across the shorter axis, solves. One-shot: builds its influence
+/// operator; repeated calls should use HertzMimSolver, which keeps them.
+[[nodiscard]] MimResult solve_hertz_rolling(const HertzRollingInput& input,
+                                            const MimOptions& options = {});
+
+/// Repeated Hertzian MIM solves (the body of a tangential-model adapter or a table builder).
+/// The half-space influence coefficients are homogeneous (degree 1 in the element size, -1 in
+/// G), so every patch is solved in units of the element size h and of G on a unit grid whose
+/// influence operator (kernels + FFTW plans) depends only on (nx, ny, nu) and is cached; results
+/// are scaled back (forces G h^2, moment G h^3, stresses G, approach h). Not thread-safe: use
+/// one solver per thread.
+class HertzMimSolver {
+ public:
+  explicit HertzMimSolver(MimOptions options = {}, std::size_t max_cached_grids = 16);
+  ~HertzMimSolver();
+  HertzMimSolver(const HertzMimSolver&) = delete;
+  HertzMimSolver& operator=(const HertzMimSolver&) = delete;
+
+  [[nodiscard]] MimResult solve(const HertzRollingInput& input);
+  /// Unit-grid operators built so far (cache misses).
+  [[nodiscard]] int operators_built() const { return operators_built_; }
+
+ private:
+  struct Entry;
+  MimOptions options_;
+  std::size_t max_cached_;
+  std::vector<std::unique_ptr<Entry>> cache_;
+  int operators_built_ = 0;
+};
+
+/// Writes grid, forces, convergence record and the fields (2-D datasets [ny][nx]: pressure_Pa,
+/// traction_x_Pa, traction_y_Pa, slip_x, slip_y, state) into an HDF5 file (HDF5 C API). Throws
+/// std::runtime_error if the file cannot be written.
+void write_hdf5(const MimResult& result, const std::string& path);
+
+}  // namespace ferro::contact::mim

@@ -1,0 +1,106 @@
+#pragma once
+// Tangential contact problems on the MIM grid: sliding with rigid shifts and steady rolling with
+// creepages, Coulomb friction, adhesion/slip partition.
+//
+// References: Toumi (2016) eqs. (97)-(107) (sliding: s = u - delta_rigid, eqs. 103-105) and
+// (111)-(123) (steady rolling: w/V = c - (B^tt - A^tt) tau / h, h = dx, c = (xi_x - y phi,
+// xi_y + x phi)); Kalker, "Three-dimensional elastic bodies in rolling contact" (1990) ch. 5;
+// Vollebregt, "A Gauss-Seidel type solver for special convex programs, with application to
+// frictional contact mechanics", JOTA 87 (1995) for the active-set view.
+// Known deviations: the thesis re-solves with an LU / CG inverse of A^tt after clipping the
+// tractions (eq. 107); here the same discrete equations are solved matrix-free by an active-set
+// (semi-smooth) Newton method: stick elements carry w = 0 (two equations), slip elements keep
+// |tau| = mu p_n and carry the linearised direction condition tau = -mu p_n w/|w| (one equation
+// for the component across the current direction); each linear system is solved by restarted
+// GMRES with FFT products (right preconditioner: the FFT inverse of the circulant extension of
+// A^tt, for rolling composed with the exact inverse of the x-difference, a running sum from the
+// leading edge). Sets are updated (stick -> slip when
+// |tau| > mu p_n as eq. 107, slip -> stick when w turns along tau) until the stick velocity and
+// slip direction residuals are below tolerance.
+// Quasi-identical bodies (K = 0): tangential tractions do not change the pressure.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/mim/grid.hpp"
+#include "ferro/contact/mim/influence_operator.hpp"
+
+namespace ferro::contact::mim {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Rigid tangential shift of body 1 relative to body 2 (Cattaneo-Mindlin), eq. (97).
+struct SlidingInput {
+  double shift_x = kNaN;   ///< delta_x [m]
+  double shift_y = kNaN;   ///< delta_y [m]
+  double friction = kNaN;  ///< mu [-]
+  void validate(const std::string& where = "SlidingInput") const;
+};
+
+/// Steady rolling towards +x with creepages, eq. (111).
+struct RollingInput {
+  double creepage_x = kNaN;  ///< xi_x [-]
+  double creepage_y = kNaN;  ///< xi_y [-]
+  double spin = kNaN;        ///< phi [1/m]
+  double friction = kNaN;    ///< mu [-]
+  void validate(const std::string& where = "RollingInput") const;
+};
+
+struct TangentialSolverOptions {
+  /// Convergence: RMS over the stick elements of the slip velocity w (rolling) or slip s
+  /// (sliding), and RMS over the slip elements of its component across the traction direction,
+  /// both relative to the largest rigid slip |c|, below this value, with unchanged sets [-].
+  double tolerance = 1.0e-5;
+  /// Relative linear residual of the Newton steps taken while the stick/slip sets still change
+  /// (inexact Newton); the last step is solved to the tolerance [-].
+  double newton_forcing = 1.0e-2;
+  int max_outer_iterations = 200;
+  int max_matvecs = 20000;  ///< cap on FFT products in total
+  int gmres_restart = 80;
+  /// Start from the solution on the grid coarsened by two (recursively while both sides have
+  /// >= 24 elements): same equations and tolerance on the final grid, fewer iterations.
+  bool nested = false;
+  /// RMS linear residual of a Newton step, relative to tolerance x max rigid slip [-].
+  double linear_factor = 0.3;
+  void validate(const std::string& where = "TangentialSolverOptions") const;
+};
+
+enum class ElementState : std::uint8_t { exterior = 0, stick = 1, slip = 2 };
+
+struct TangentialSolution {
+  Field traction_x;  ///< tau_x [Pa]
+  Field traction_y;  ///< tau_y [Pa]
+  /// Slip per element: sliding s = u - delta [m]; rolling w/V [-] (eq. 119). Zero in stick.
+  Field slip_x;
+  Field slip_y;
+  std::vector<ElementState> state;
+  double force_x = 0.0;   ///< F_x = dx dy sum tau_x [N]
+  double force_y = 0.0;   ///< F_y [N]
+  double moment_z = 0.0;  ///< M_z = dx dy sum (x tau_y - y tau_x) about the grid origin [N m]
+  int stick_elements = 0;
+  int slip_elements = 0;
+  int outer_iterations = 0;
+  int matvecs = 0;  ///< FFT influence products used
+  /// RMS of |v| over stick elements / max |rigid slip| [-] (v = s or w/V)
+  double stick_residual = kNaN;
+  /// RMS over slip elements of the slip-velocity component across the traction direction,
+  /// / max |rigid slip| (direction misfit of eqs. 99, 116) [-]
+  double direction_residual = kNaN;
+  /// max (|tau| - mu p) / (mu max p) over the patch; <= 0 when Coulomb holds [-]
+  double coulomb_residual = kNaN;
+  bool converged = false;
+};
+
+/// Sliding (shift) problem on the pressure field `pressure` [Pa] from the normal solve.
+[[nodiscard]] TangentialSolution solve_sliding(InfluenceOperator& op, const Field& pressure,
+                                               const SlidingInput& input,
+                                               const TangentialSolverOptions& options = {});
+
+/// Steady rolling problem on the pressure field `pressure` [Pa] from the normal solve.
+[[nodiscard]] TangentialSolution solve_steady_rolling(InfluenceOperator& op, const Field& pressure,
+                                                      const RollingInput& input,
+                                                      const TangentialSolverOptions& options = {});
+
+}  // namespace ferro::contact::mim

@@ -1,0 +1,155 @@
+// One-call MIM rolling contact: normal, then steady rolling.
+//
+// References: Toumi (2016) chapter 2, eqs. (74)-(123).
+// Known deviations: see normal_solver.hpp and tangential_solver.hpp.
+
+#include "ferro/contact/mim/mim.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "ferro/contact/mim/hertz_gap.hpp"
+
+namespace ferro::contact::mim {
+
+void NormalLoad::validate(const std::string& where) const {
+  const bool has_force = !std::isnan(normal_force);
+  const bool has_approach = !std::isnan(approach);
+  if (has_force == has_approach) {
+    throw std::invalid_argument(
+        fmt::format("{}: set exactly one of normal_force (N) and approach (m), got {} and {}",
+                    where, normal_force, approach));
+  }
+  if (has_force && !(normal_force > 0.0 && std::isfinite(normal_force))) {
+    throw std::invalid_argument(
+        fmt::format("{}.normal_force: must be finite and > 0 N, got {}", where, normal_force));
+  }
+  if (has_approach && !std::isfinite(approach)) {
+    throw std::invalid_argument(
+        fmt::format("{}.approach: must be finite (m), got {}", where, approach));
+  }
+}
+
+void HertzRollingInput::validate(const std::string& where) const {
+  if (!(semi_axis_x > 0.0) || !(semi_axis_y > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("{}.semi_axis_x/semi_axis_y: must be > 0 m, got {} and {}", where, semi_axis_x,
+                    semi_axis_y));
+  }
+  if (!(normal_force > 0.0) || !std::isfinite(normal_force)) {
+    throw std::invalid_argument(
+        fmt::format("{}.normal_force: must be > 0 N, got {}", where, normal_force));
+  }
+  if (elements_minor < 4) {
+    throw std::invalid_argument(
+        fmt::format("{}.elements_minor: must be >= 4, got {}", where, elements_minor));
+  }
+  rolling.validate(where + ".rolling");
+  body1.validate(where + ".body1");
+  body2.validate(where + ".body2");
+}
+
+MimResult solve_rolling_contact(InfluenceOperator& op, const Field& gap, const NormalLoad& load,
+                                const RollingInput& rolling, const MimOptions& options) {
+  load.validate();
+  rolling.validate();
+  const NormalSolution n = std::isnan(load.normal_force)
+                               ? solve_normal_approach(op, gap, load.approach, options.normal)
+                               : solve_normal_force(op, gap, load.normal_force, options.normal);
+  const TangentialSolution t = solve_steady_rolling(op, n.pressure, rolling, options.tangential);
+  MimResult r;
+  r.grid = op.grid();
+  r.normal_force = n.normal_force;
+  r.approach = n.approach;
+  r.force_x = t.force_x;
+  r.force_y = t.force_y;
+  r.moment_z = t.moment_z;
+  r.pressure = n.pressure;
+  r.traction_x = t.traction_x;
+  r.traction_y = t.traction_y;
+  r.slip_x = t.slip_x;
+  r.slip_y = t.slip_y;
+  r.state = t.state;
+  r.normal_iterations = n.iterations;
+  r.gap_residual = n.gap_residual;
+  r.penetration_residual = n.penetration_residual;
+  r.tangential_matvecs = t.matvecs;
+  r.stick_residual = t.stick_residual;
+  r.direction_residual = t.direction_residual;
+  r.coulomb_residual = t.coulomb_residual;
+  r.converged = n.converged && t.converged;
+  return r;
+}
+
+struct HertzMimSolver::Entry {
+  int nx = 0;
+  int ny = 0;
+  double poisson = 0.0;
+  std::unique_ptr<InfluenceOperator> op;
+};
+
+HertzMimSolver::HertzMimSolver(MimOptions options, std::size_t max_cached_grids)
+    : options_(options), max_cached_(std::max<std::size_t>(1, max_cached_grids)) {}
+
+HertzMimSolver::~HertzMimSolver() = default;
+
+MimResult HertzMimSolver::solve(const HertzRollingInput& input) {
+  input.validate();
+  const CombinedMaterial m = combine(input.body1, input.body2);
+  const double a = input.semi_axis_x, b = input.semi_axis_y;
+  const HertzGap hg = hertz_gap_for_ellipse(a, b, input.normal_force, m.contact_modulus);
+  const Grid grid = grid_for_ellipse(a, b, input.elements_minor);
+  const double h = grid.dx;  // square elements
+
+  // Unit grid and material: lengths in h, stresses in G.
+  Entry* entry = nullptr;
+  for (auto& e : cache_) {
+    if (e->nx == grid.nx && e->ny == grid.ny && e->poisson == m.poisson) entry = e.get();
+  }
+  if (entry == nullptr) {
+    if (cache_.size() >= max_cached_) cache_.erase(cache_.begin());  // oldest first
+    auto e = std::make_unique<Entry>();
+    e->nx = grid.nx;
+    e->ny = grid.ny;
+    e->poisson = m.poisson;
+    CombinedMaterial unit;
+    unit.shear_modulus = 1.0;
+    unit.poisson = m.poisson;
+    unit.contact_modulus = 1.0 / (1.0 - m.poisson);  // E*/G for the pair; not used by the operator
+    e->op = std::make_unique<InfluenceOperator>(Grid::centred(grid.nx, grid.ny, 1.0, 1.0), unit);
+    ++operators_built_;
+    entry = e.get();
+    cache_.push_back(std::move(e));
+  }
+  InfluenceOperator& op = *entry->op;
+  const double cx = hg.curvature_x * h, cy = hg.curvature_y * h;  // z / h in units of h
+  const Field gap = quadratic_gap(op.grid(), cx, cy);
+  NormalLoad load;
+  load.normal_force = input.normal_force / (m.shear_modulus * h * h);
+  RollingInput rolling = input.rolling;
+  rolling.spin *= h;
+  MimResult r = solve_rolling_contact(op, gap, load, rolling, options_);
+
+  // Back to SI.
+  const double g = m.shear_modulus;
+  r.grid = grid;
+  r.normal_force *= g * h * h;
+  r.force_x *= g * h * h;
+  r.force_y *= g * h * h;
+  r.moment_z *= g * h * h * h;
+  r.approach *= h;
+  for (Field* f : {&r.pressure, &r.traction_x, &r.traction_y}) {
+    for (double& v : *f) v *= g;
+  }
+  return r;
+}
+
+MimResult solve_hertz_rolling(const HertzRollingInput& input, const MimOptions& options) {
+  HertzMimSolver solver(options, 1);
+  return solver.solve(input);
+}
+
+}  // namespace ferro::contact::mim

@@ -1,0 +1,84 @@
+// `ferrodyn mim`: one MIM (boundary-element) rolling-contact solve on a Hertzian patch.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "ferro/contact/mim/mim.hpp"
+#include "ferro/scenarios/cli.hpp"
+
+namespace ferro::cli {
+
+namespace {
+
+struct MimArgs {
+  double a_mm = std::numeric_limits<double>::quiet_NaN();
+  double b_mm = std::numeric_limits<double>::quiet_NaN();
+  double normal_force = std::numeric_limits<double>::quiet_NaN();
+  double creepage_x = 0.0;
+  double creepage_y = 0.0;
+  double spin_per_m = 0.0;
+  double friction = 0.3;
+  double young_gpa = 210.0;
+  double poisson = 0.28;
+  int elements = 40;
+  std::string out;
+};
+
+int run_mim(const MimArgs& args) {
+  contact::mim::HertzRollingInput in;
+  in.semi_axis_x = args.a_mm * 1.0e-3;
+  in.semi_axis_y = args.b_mm * 1.0e-3;
+  in.normal_force = args.normal_force;
+  in.rolling =
+      contact::mim::RollingInput{args.creepage_x, args.creepage_y, args.spin_per_m, args.friction};
+  in.body1 = in.body2 = contact::Material::from_young(args.young_gpa * 1.0e9, args.poisson);
+  in.elements_minor = args.elements;
+  const auto t0 = std::chrono::steady_clock::now();
+  const contact::mim::MimResult r = contact::mim::solve_hertz_rolling(in);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  int stick = 0, slip = 0;
+  for (auto s : r.state) {
+    stick += s == contact::mim::ElementState::stick ? 1 : 0;
+    slip += s == contact::mim::ElementState::slip ? 1 : 0;
+  }
+  fmt::print("grid {} x {}, dx = {:.4f} mm; {} stick, {} slip elements\n", r.grid.nx, r.grid.ny,
+             r.grid.dx * 1.0e3, stick, slip);
+  fmt::print("Fn = {:.6g} N, Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m, approach = {:.6g} mm\n",
+             r.normal_force, r.force_x, r.force_y, r.moment_z, r.approach * 1.0e3);
+  fmt::print("Fx/(mu Fn) = {:.5f}, Fy/(mu Fn) = {:.5f}; converged: {}; {:.1f} ms (incl. set-up)\n",
+             r.force_x / (args.friction * r.normal_force),
+             r.force_y / (args.friction * r.normal_force), r.converged ? "yes" : "NO", ms);
+  if (!args.out.empty()) {
+    contact::mim::write_hdf5(r, args.out);
+    fmt::print("fields written to {}\n", args.out);
+  }
+  return r.converged ? kExitOk : kExitRunFailure;
+}
+
+}  // namespace
+
+void add_mim_commands(CLI::App& app, VerbHandler& handler) {
+  auto args = std::make_shared<MimArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "mim", "MIM boundary-element rolling contact on a Hertz ellipse (normal + steady rolling)");
+  cmd->add_option("--a-mm", args->a_mm, "semi-axis along the rolling direction [mm]")->required();
+  cmd->add_option("--b-mm", args->b_mm, "lateral semi-axis [mm]")->required();
+  cmd->add_option("--fn", args->normal_force, "normal force [N]")->required();
+  cmd->add_option("--xi-x", args->creepage_x, "longitudinal creepage [-] (default 0)");
+  cmd->add_option("--xi-y", args->creepage_y, "lateral creepage [-] (default 0)");
+  cmd->add_option("--spin", args->spin_per_m, "spin creepage [1/m] (default 0)");
+  cmd->add_option("--mu", args->friction, "friction coefficient [-] (default 0.3)");
+  cmd->add_option("--young-gpa", args->young_gpa, "Young's modulus of both bodies [GPa] (210)");
+  cmd->add_option("--poisson", args->poisson, "Poisson's ratio of both bodies [-] (0.28)");
+  cmd->add_option("--elements", args->elements, "elements across the shorter axis (40)");
+  cmd->add_option("--out", args->out, "HDF5 file for the pressure, traction, slip fields");
+  cmd->callback([args, &handler] { handler = [args] { return run_mim(*args); }; });
+}
+
+}  // namespace ferro::cli
