@@ -1,22 +1,25 @@
 #!/usr/bin/env bash
 # Builds ferrodyn and runs its test suite.
-#   tools/test.sh              default suite (everything not labelled "slow"), build dir build/
-#   tools/test.sh --sanitize   the same suite under ASan+UBSan, build dir build-asan/
-#   tools/test.sh --slow       only the slow validations (ctest -L slow)
-#   tools/test.sh --all        default suite and slow validations
+#   tools/test.sh              the whole suite: the default tests, then the slow validations
+#                              (ctest label "slow"), build dir build/
+#   tools/test.sh --fast       the default tests only (everything not labelled "slow")
+#   tools/test.sh --slow       the slow validations only
+#   tools/test.sh --sanitize   the default tests under ASan+UBSan, build dir build-asan/
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 
 build=build
 cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
-ctest_args=(-LE slow)
+run_default=1
+run_slow=1
 for arg in "$@"; do
   case "$arg" in
-    --sanitize) build=build-asan; cmake_args=(-DCMAKE_BUILD_TYPE=Debug -DFERRO_SANITIZE=ON -DFERRO_BUILD_BENCH=OFF) ;;
-    --slow) ctest_args=(-L slow) ;;
-    --all) ctest_args=() ;;
-    *) echo "test.sh: unknown option '$arg' (allowed: --sanitize, --slow, --all)" >&2; exit 2 ;;
+    --sanitize) build=build-asan; run_slow=0
+                cmake_args=(-DCMAKE_BUILD_TYPE=Debug -DFERRO_SANITIZE=ON -DFERRO_BUILD_BENCH=OFF) ;;
+    --fast) run_slow=0 ;;
+    --slow) run_default=0 ;;
+    *) echo "test.sh: unknown option '$arg' (allowed: --fast, --slow, --sanitize)" >&2; exit 2 ;;
   esac
 done
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -24,4 +27,11 @@ cmake -S . -B "$build" -G Ninja "${cmake_args[@]}"
 cmake --build "$build" -j "$jobs"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-ctest --test-dir "$build" --output-on-failure -j "$jobs" "${ctest_args[@]}"
+if [ "$run_default" = 1 ]; then
+  echo "== default tests ($build)"
+  ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE slow
+fi
+if [ "$run_slow" = 1 ]; then
+  echo "== slow validations ($build, ctest -L slow)"
+  ctest --test-dir "$build" --output-on-failure -j "$jobs" -L slow
+fi
