@@ -63,10 +63,11 @@ TEST(RunOutput, layout_metadata_and_csv) {
 TEST(RunOutput, sigint_halfway_leaves_every_sample_up_to_the_interrupt) {
   const std::string out = temp_file("interrupted.h5");
   const std::string ref = temp_file("reference.h5");
-  // Paced at 4 simulated seconds per wall second, an 8 s run lasts 2 s of wall time; the
-  // non-TTY progress log announces 50 % and the test interrupts right then.
+  // Paced at 2 simulated seconds per wall second, an 8 s run lasts 4 s of wall time; the
+  // non-TTY progress log (lines from 1 s of wall time on) announces 50 % at 2 s and the test
+  // interrupts right then.
   test::BackgroundProcess p(
-      {FERRODYN_EXE, "run", kScene, "-o", out, "--t-end", "8", "--pace", "4", "--no-plots"});
+      {FERRODYN_EXE, "run", kScene, "-o", out, "--t-end", "8", "--pace", "2", "--no-plots"});
   std::string line;
   bool halfway = false;
   while (p.read_line(line)) {
