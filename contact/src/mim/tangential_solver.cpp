@@ -386,7 +386,15 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
           }
         }
       }
-      op.tangential_inverse(fx.data(), fy.data(), mx.data(), my.data());
+      if (options.fft_preconditioner) {
+        op.tangential_inverse(fx.data(), fy.data(), mx.data(), my.data());
+      } else {
+        const double inv_diag = 1.0 / op.tangential_self_x();
+        for (std::size_t i = 0; i < n; ++i) {
+          mx[i] = inv_diag * fx[i];
+          my[i] = inv_diag * fy[i];
+        }
+      }
       for (std::size_t i : active) {
         const std::size_t k = offset[i];
         if (out.state[i] == ElementState::stick) {
