@@ -238,3 +238,24 @@ TEST(MimRolling, robustness_envelope) {
   }
   EXPECT_EQ(cases, 80);
 }
+
+// The preconditioner changes the path, not the solution: spin + creepage on the sphere case with
+// and without the FFT preconditioner, and with the nested coarse-grid start, agree to the
+// solver tolerance (1e-5 of the rigid slip -> forces within 1e-5 mu F_n).
+TEST(MimRolling, solver_options_same_solution) {
+  SphereCase sc;
+  const double mu = 0.2, fn = sc.normal.normal_force;
+  const RollingInput in{2.0e-3, -1.0e-3, 0.4, mu};
+  const TangentialSolution ref = solve_steady_rolling(sc.op, sc.normal.pressure, in);
+  TangentialSolverOptions plain;
+  plain.fft_preconditioner = false;
+  TangentialSolverOptions nested;
+  nested.nested = true;
+  for (const TangentialSolverOptions& o : {plain, nested}) {
+    const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in, o);
+    ASSERT_TRUE(ref.converged && t.converged);
+    EXPECT_NEAR(t.force_x, ref.force_x, 1.0e-5 * mu * fn);
+    EXPECT_NEAR(t.force_y, ref.force_y, 1.0e-5 * mu * fn);
+    EXPECT_EQ(t.slip_elements, ref.slip_elements);
+  }
+}
