@@ -160,3 +160,19 @@ TEST(MimNormal, complementarity_on_arbitrary_gap) {
   }
   EXPECT_GT(s.contact_elements, 20);
 }
+
+// A grid smaller than the patch must be reported as truncated; the standard sphere grid not.
+TEST(MimNormal, truncated_patch_is_flagged) {
+  const CombinedMaterial m = combine(kSteel, kSteel);
+  for (int n : {41, 25}) {  // 41 x 0.5 mm covers a = 8.5 mm, 25 x 0.5 mm does not
+    const Grid grid = Grid::centred(n, n, 0.5e-3, 0.5e-3);
+    InfluenceOperator op(grid, m);
+    const Field gap = sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kR); });
+    const NormalSolution s = solve_normal_approach(op, gap, 0.4e-3);
+    ASSERT_TRUE(s.converged);
+    if (n == 41)
+      EXPECT_EQ(s.boundary_contact_elements, 0);
+    else
+      EXPECT_GT(s.boundary_contact_elements, 0);
+  }
+}

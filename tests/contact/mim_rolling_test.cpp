@@ -2,12 +2,14 @@
 // curve (Toumi 2016 section 2.2.4.4).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/contact/mim/mim.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/contact/mim/tangential_solver.hpp"
 
@@ -237,4 +239,67 @@ TEST(MimRolling, robustness_envelope) {
     }
   }
   EXPECT_EQ(cases, 80);
+}
+
+// The preconditioner changes the path, not the solution: spin + creepage on the sphere case with
+// and without the FFT preconditioner, and with the nested coarse-grid start, agree to the
+// solver tolerance (1e-5 of the rigid slip -> forces within 1e-5 mu F_n).
+TEST(MimRolling, solver_options_same_solution) {
+  SphereCase sc;
+  const double mu = 0.2, fn = sc.normal.normal_force;
+  const RollingInput in{2.0e-3, -1.0e-3, 0.4, mu};
+  const TangentialSolution ref = solve_steady_rolling(sc.op, sc.normal.pressure, in);
+  TangentialSolverOptions plain;
+  plain.fft_preconditioner = false;
+  TangentialSolverOptions nested;
+  nested.nested = true;
+  for (const TangentialSolverOptions& o : {plain, nested}) {
+    const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in, o);
+    ASSERT_TRUE(ref.converged && t.converged);
+    EXPECT_NEAR(t.force_x, ref.force_x, 1.0e-5 * mu * fn);
+    EXPECT_NEAR(t.force_y, ref.force_y, 1.0e-5 * mu * fn);
+    EXPECT_EQ(t.slip_elements, ref.slip_elements);
+  }
+}
+
+// Non-Hertzian, two-lobe patch on the thesis's S1002/UIC60 grid (46 x 100, dx = 0.223 mm,
+// F_n = 54.53 kN, mu = 0.36, xi_x = -0.161 per mille, phi = 5.227e-5 /mm), with a synthetic
+// two-minimum lateral gap standing in for the profiles (the real profile gap belongs to the
+// geometry work): the full normal + rolling chain must converge, obey Coulomb and
+// |F| <= mu F_n, give two separate pressure lobes, and reverse its forces when every creepage
+// is reversed (to 1e-5 mu F_n, the solver tolerance).
+TEST(MimRolling, two_lobe_gap) {
+  const CombinedMaterial m = combine(kSteel, kSteel);
+  const Grid grid = Grid::centred(46, 100, 0.223e-3, 0.223e-3);
+  InfluenceOperator op(grid, m);
+  const Field gap = sample(grid, [](double x, double y) {
+    const double ymm = y * 1.0e3;
+    const double f_mm =
+        std::min(0.002 * (ymm - 3.0) * (ymm - 3.0), 0.003 * (ymm + 6.0) * (ymm + 6.0) + 0.004);
+    return x * x / (2.0 * 0.46) + f_mm * 1.0e-3;
+  });
+  NormalLoad load;
+  load.normal_force = 54530.0;
+  const double mu = 0.36, mufn = mu * 54530.0;
+  const RollingInput in{-0.161e-3, 0.0, 0.05227, mu};
+  const MimResult r = solve_rolling_contact(op, gap, load, in);
+  ASSERT_TRUE(r.converged);
+  EXPECT_LE(r.coulomb_residual, 1.0e-9);
+  EXPECT_LE(std::hypot(r.force_x, r.force_y), mufn);
+  // two lobes: along the centre column x = 0 the pressure has two separate runs
+  int runs = 0;
+  bool inside = false;
+  const int ix = grid.nx / 2;
+  for (int iy = 0; iy < grid.ny; ++iy) {
+    const bool p = r.pressure[grid.index(ix, iy)] > 0.0;
+    if (p && !inside) ++runs;
+    inside = p;
+  }
+  EXPECT_EQ(runs, 2);
+  const MimResult rev =
+      solve_rolling_contact(op, gap, load, RollingInput{-in.creepage_x, 0.0, -in.spin, mu});
+  ASSERT_TRUE(rev.converged);
+  EXPECT_NEAR(rev.force_x, -r.force_x, 1.0e-5 * mufn);
+  EXPECT_NEAR(rev.force_y, -r.force_y, 1.0e-5 * mufn);
+  EXPECT_NEAR(rev.moment_z, -r.moment_z, 1.0e-5 * mufn * 1.0e-2);
 }

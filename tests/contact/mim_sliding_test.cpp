@@ -42,7 +42,7 @@ TEST(MimSliding, cattaneo_mindlin) {
     ASSERT_GT(base, 0.0);
     const double ft = mu * fn * (1.0 - std::pow(base, 1.5));
     EXPECT_NEAR(t.force_x / ft, 1.0, kForceTol) << "delta_x = " << shift;
-    EXPECT_NEAR(t.force_y, 0.0, 1.0e-6 * ft);
+    EXPECT_NEAR(t.force_y, 0.0, 1.0e-5 * mu * fn);  // symmetry, to the solver tolerance 1e-5
     const double c = a * std::sqrt(base);
     const double c_num = std::sqrt(t.stick_elements * dx * dx / std::numbers::pi);
     EXPECT_NEAR(c_num, c, dx) << "delta_x = " << shift;

@@ -1,3 +1,8 @@
+// Regular MIM grid: construction and validation.
+//
+// References: Toumi (2016) section 2.2.1 (figure 2.2).
+// Known deviations: none.
+
 #include "ferro/contact/mim/grid.hpp"
 
 #include <fmt/format.h>

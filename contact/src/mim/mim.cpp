@@ -73,6 +73,7 @@ MimResult solve_rolling_contact(InfluenceOperator& op, const Field& gap, const N
   r.slip_x = t.slip_x;
   r.slip_y = t.slip_y;
   r.state = t.state;
+  r.patch_truncated = n.boundary_contact_elements > 0;
   r.normal_iterations = n.iterations;
   r.gap_residual = n.gap_residual;
   r.penetration_residual = n.penetration_residual;

@@ -90,6 +90,7 @@ void write_hdf5(const MimResult& r, const std::string& path) {
   attribute(file.id, path, "direction_residual", r.direction_residual);
   attribute(file.id, path, "coulomb_residual", r.coulomb_residual);
   attribute(file.id, path, "converged", r.converged ? 1.0 : 0.0);
+  attribute(file.id, path, "patch_truncated", r.patch_truncated ? 1.0 : 0.0);
   dataset(file.id, path, "pressure_Pa", r.grid, r.pressure.data(), H5T_NATIVE_DOUBLE);
   dataset(file.id, path, "traction_x_Pa", r.grid, r.traction_x.data(), H5T_NATIVE_DOUBLE);
   dataset(file.id, path, "traction_y_Pa", r.grid, r.traction_y.data(), H5T_NATIVE_DOUBLE);

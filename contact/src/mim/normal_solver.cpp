@@ -172,6 +172,12 @@ NormalSolution solve(InfluenceOperator& op, const Field& gap, double target, boo
   }
   out.normal_force = sum * area;
   out.contact_elements = nc;
+  for (int iy = 0; iy < grid.ny; ++iy) {
+    for (int ix = 0; ix < grid.nx; ++ix) {
+      const bool edge = ix == 0 || iy == 0 || ix == grid.nx - 1 || iy == grid.ny - 1;
+      if (edge && p[grid.index(ix, iy)] > 0.0) ++out.boundary_contact_elements;
+    }
+  }
   return out;
 }
 

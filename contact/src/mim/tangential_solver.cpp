@@ -124,7 +124,7 @@ struct GmresWorkspace {
 // spent. Returns the final residual norm.
 template <class MatVec, class Precond>
 double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double target, int restart,
-             int& budget, GmresWorkspace& ws) {
+             int& budget, GmresWorkspace& ws, bool zero_start = false) {
   const std::size_t n = b.size();
   ws.resize(n, restart);
   Vec& r = ws.r;
@@ -138,10 +138,16 @@ double gmres(MatVec&& matvec, Precond&& precond, const Vec& b, Vec& x, double ta
   std::vector<double>& sn = ws.sn;
   std::vector<double>& g = ws.g;
   double res = 0.0;
+  bool first = true;
   while (true) {
-    matvec(x, r);
-    --budget;
-    for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
+    if (first && zero_start) {  // x = 0: the residual is b, no product needed
+      r = b;
+    } else {
+      matvec(x, r);
+      --budget;
+      for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
+    }
+    first = false;
     res = norm(r);
     if (res <= target || budget <= 0) return res;
     for (std::size_t i = 0; i < n; ++i) v[0][i] = r[i] / res;
@@ -386,7 +392,15 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
           }
         }
       }
-      op.tangential_inverse(fx.data(), fy.data(), mx.data(), my.data());
+      if (options.fft_preconditioner) {
+        op.tangential_inverse(fx.data(), fy.data(), mx.data(), my.data());
+      } else {
+        const double inv_diag = 1.0 / op.tangential_self_x();
+        for (std::size_t i = 0; i < n; ++i) {
+          mx[i] = inv_diag * fx[i];
+          my[i] = inv_diag * fy[i];
+        }
+      }
       for (std::size_t i : active) {
         const std::size_t k = offset[i];
         if (out.state[i] == ElementState::stick) {
@@ -398,27 +412,19 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
       }
     };
 
-    // Right-hand side from the fixed part mu p e of the slip tractions.
-    for (std::size_t i = 0; i < n; ++i) {
-      const bool s = out.state[i] == ElementState::slip;
-      fx[i] = s ? bound[i] * ex[i] : 0.0;
-      fy[i] = s ? bound[i] * ey[i] : 0.0;
-    }
-    pb.apply(fx.data(), fy.data(), mx.data(), my.data());
+    // Newton step as a correction of the current tractions: the right-hand side is the residual
+    // of the current iterate, b = -(M tau + q) on the rows (stick: w; slip: its component across
+    // e), so GMRES starts from zero without a product of its own.
+    pb.apply(tx.data(), ty.data(), mx.data(), my.data());
     --budget;
     Field rx(n), ry(n);
     for (std::size_t i = 0; i < n; ++i) {
       rx[i] = -(qx[i] + mx[i]);
       ry[i] = -(qy[i] + my[i]);
     }
-    Vec b(m), x(m, 0.0);
+    Vec b(m), x(m, 0.0), bq(m);
     from_field(rx, ry, b);
-    for (std::size_t i : active) {  // warm start
-      if (out.state[i] == ElementState::stick) {
-        x[offset[i]] = tx[i];
-        x[offset[i] + 1] = ty[i];
-      }
-    }
+    from_field(qx, qy, bq);  // rigid-slip scale of the rows, for the inexact steps
     // Linear tolerance: RMS stick-velocity error below the requested max-norm tolerance once the
     // sets have settled; while sets still change, an inexact Newton step (1e-3 relative) suffices.
     const double final_target =
@@ -426,16 +432,16 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
     // Few set changes left: solve this Newton step to the final tolerance.
     const bool tight = last_changes <= static_cast<int>(0.001 * static_cast<double>(m));
     const double target =
-        tight ? final_target : std::max(final_target, options.newton_forcing * norm(b));
-    gmres(matvec, precond, b, x, target, options.gmres_restart, budget, workspace);
+        tight ? final_target : std::max(final_target, options.newton_forcing * norm(bq));
+    gmres(matvec, precond, b, x, target, options.gmres_restart, budget, workspace, true);
 
     // New tractions: stick values; slip tractions rotated to the solved direction, norm mu p.
     double dir_change = 0.0;
     for (std::size_t i : active) {
       const std::size_t k = offset[i];
       if (out.state[i] == ElementState::stick) {
-        tx[i] = x[k];
-        ty[i] = x[k + 1];
+        tx[i] += x[k];
+        ty[i] += x[k + 1];
       } else {
         const double ux = ex[i] - ey[i] * x[k] / bound[i];
         const double uy = ey[i] + ex[i] * x[k] / bound[i];

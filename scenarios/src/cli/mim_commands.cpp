@@ -54,6 +54,9 @@ int run_mim(const MimArgs& args) {
   fmt::print("Fx/(mu Fn) = {:.5f}, Fy/(mu Fn) = {:.5f}; converged: {}; {:.1f} ms (incl. set-up)\n",
              r.force_x / (args.friction * r.normal_force),
              r.force_y / (args.friction * r.normal_force), r.converged ? "yes" : "NO", ms);
+  if (r.patch_truncated) {
+    fmt::print("warning: the pressure reaches the grid boundary (patch truncated)\n");
+  }
   if (!args.out.empty()) {
     contact::mim::write_hdf5(r, args.out);
     fmt::print("fields written to {}\n", args.out);

@@ -48,6 +48,8 @@ struct MimResult {
   Field slip_y;                     ///< w_y / V in slip elements [-]
   std::vector<ElementState> state;  ///< exterior / stick (adhesion) / slip
   // Convergence record
+  /// The pressure reaches the outermost grid elements: the patch is probably truncated.
+  bool patch_truncated = false;
   int normal_iterations = 0;
   double gap_residual = 0.0;
   double penetration_residual = 0.0;

@@ -32,6 +32,9 @@ struct NormalSolution {
   double approach = 0.0;      ///< delta [m]
   int iterations = 0;
   int contact_elements = 0;
+  /// Elements of the outermost grid rows/columns carrying pressure: > 0 means the patch reaches
+  /// the grid boundary and is probably truncated (enlarge the grid).
+  int boundary_contact_elements = 0;
   /// max |e_z| over elements with p > 0, divided by the largest u_z [-].
   double gap_residual = std::numeric_limits<double>::quiet_NaN();
   /// max(-e_z) over elements with p = 0 (penetration), divided by the largest u_z [-].
