@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "ferro/contact/fastsim.hpp"
+#include "ferro/contact/mim_tangential_model.hpp"
 #include "ferro/contact/polach.hpp"
 #include "ferro/contact/saturation_laws.hpp"
 
@@ -103,7 +104,7 @@ class KalkerLinearModel final : public TangentialModel {
 std::vector<std::string> tangential_model_names() {
   return {
       "kalker_linear", "linear_saturated", "vermeulen_johnson", "shen_hedrick_elkins", "chopaya",
-      "polach",        "fastsim"};
+      "polach",        "fastsim",           "mim"};
 }
 
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
@@ -152,6 +153,12 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
           "fastsim option 'flexibility': unknown value '{}'; allowed: three, weighted", flex));
     }
     return std::make_unique<FastsimModel>(o);
+  }
+  if (name == "mim") {
+    check_option_keys(name, options, {"elements"});
+    MimModelOptions o;
+    o.elements = option_int(options, "elements", o.elements);
+    return std::make_unique<MimTangentialModel>(o);
   }
   throw std::invalid_argument(fmt::format("unknown tangential contact model '{}'; allowed: {}",
                                           name, fmt::join(tangential_model_names(), ", ")));
