@@ -33,5 +33,6 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry sea
 void add_mim_commands(CLI::App& app, VerbHandler& handler);      // mim
 /// After add_contact_commands: contact mim-table.
 void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
+void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
 
 }  // namespace ferro::cli
