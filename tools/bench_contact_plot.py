@@ -37,7 +37,7 @@ def main():
     axes[0].set_ylabel("CPU time per evaluation [us]")
     ref = [r for r in rows if "reference" in r["model"]]
     fig.suptitle("ferrodyn bench contact: speed against error"
-                 + (f" (reference {ref[0]['model']}, {float(ref[0]['us_per_eval']):.0f} us)" if ref else ""))
+                 + (f" ({ref[0]['model']}, {float(ref[0]['us_per_eval']):.0f} us)" if ref else ""))
     fig.tight_layout()
     fig.savefig(sys.argv[2], dpi=90)
 
