@@ -8,9 +8,12 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "ferro/contact/fastsim.hpp"
+#include "ferro/contact/mim_table.hpp"
+#include "ferro/contact/mim_tangential_model.hpp"
 #include "ferro/contact/polach.hpp"
 #include "ferro/contact/saturation_laws.hpp"
 
@@ -103,7 +106,8 @@ class KalkerLinearModel final : public TangentialModel {
 std::vector<std::string> tangential_model_names() {
   return {
       "kalker_linear", "linear_saturated", "vermeulen_johnson", "shen_hedrick_elkins", "chopaya",
-      "polach",        "fastsim"};
+      "polach",        "fastsim",           "mim",
+      "mim_table"};
 }
 
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
@@ -152,6 +156,23 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
           "fastsim option 'flexibility': unknown value '{}'; allowed: three, weighted", flex));
     }
     return std::make_unique<FastsimModel>(o);
+  }
+  if (name == "mim") {
+    check_option_keys(name, options, {"elements"});
+    MimModelOptions o;
+    o.elements = option_int(options, "elements", o.elements);
+    return std::make_unique<MimTangentialModel>(o);
+  }
+  if (name == "mim_table") {
+    check_option_keys(name, options, {"table"});
+    const char* env = std::getenv("FERRO_MIM_TABLE");
+    const std::string path = option_string(options, "table", env != nullptr ? env : "");
+    if (path.empty()) {
+      throw std::invalid_argument(
+          "mim_table option 'table': give the HDF5 table path (table=PATH or $FERRO_MIM_TABLE; "
+          "build one with `ferrodyn contact mim-table --out PATH`)");
+    }
+    return std::make_unique<MimTableModel>(MimTable::read_hdf5(path));
   }
   throw std::invalid_argument(fmt::format("unknown tangential contact model '{}'; allowed: {}",
                                           name, fmt::join(tangential_model_names(), ", ")));

@@ -280,6 +280,7 @@ TEST(fastsim_semi_hertz, strips_match_ellipse_in_linear_range) {
 
 TEST(tangential_registry, names_options_errors) {
   for (const std::string& n : fc::tangential_model_names()) {
+    if (n == "mim_table") continue;  // needs its HDF5 table (mim_table_test.cpp)
     EXPECT_EQ(fc::make_tangential_model(n)->name(), n);
   }
   EXPECT_THROW((void)fc::make_tangential_model("fastsimm"), std::invalid_argument);

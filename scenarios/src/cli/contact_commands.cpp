@@ -284,7 +284,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   eval->add_option("--phi", in->phi, "spin creepage [1/m]");
   eval->add_option("--model", in->model,
                    "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
-                   "chopaya, polach, fastsim")
+                   "chopaya, polach, fastsim, mim")
       ->capture_default_str();
   eval->add_option("--option", *opts,
                    "model option key=value (repeatable), e.g. mx=40, "

@@ -18,6 +18,8 @@ int run_main(int argc, char** argv) {
   add_contact_commands(app, handler);
   add_geometry_commands(app, handler);
   add_mim_commands(app, handler);
+  add_mim_table_commands(app, handler);
+  add_bench_commands(app, handler);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -72,13 +72,14 @@ class TangentialModel {
 };
 
 /// Registered names: kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins,
-/// chopaya, polach, fastsim.
+/// chopaya, polach, fastsim, mim (mim_tangential_model.hpp), mim_table (mim_table.hpp).
 [[nodiscard]] std::vector<std::string> tangential_model_names();
 
 /// Creates a model. Common option: "coefficients" = kalker_table (default) | voco_fit.
 /// polach: "k_a", "k_s" (default 1), "friction_ratio" (A, default 1), "friction_decay" (B [s/m],
 /// default 0). fastsim: "mx", "my" (default 20, 20),
-/// "flexibility" = three (default) | weighted. Unknown names/options throw
+/// "flexibility" = three (default) | weighted. mim: "elements" (default 30).
+/// mim_table: "table" (HDF5 path, default $FERRO_MIM_TABLE). Unknown names/options throw
 /// std::invalid_argument listing the allowed values.
 [[nodiscard]] std::unique_ptr<TangentialModel> make_tangential_model(
     std::string_view name, const ModelOptions& options = {});

@@ -31,5 +31,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, pl
 void add_contact_commands(CLI::App& app, VerbHandler& handler);  // contact eval, curve, patch
 void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry search, PAIR.yaml
 void add_mim_commands(CLI::App& app, VerbHandler& handler);      // mim
+/// After add_contact_commands: contact mim-table.
+void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
+void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
 
 }  // namespace ferro::cli

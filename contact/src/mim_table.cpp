@@ -1,0 +1,436 @@
+// Tabulated MIM creep forces: build (MIM solves), HDF5 I/O (HDF5 C API), tensor-product cubic
+// Hermite interpolation, and the tangential model "mim_table".
+//
+// References: see mim_table.hpp (Toumi 2016 ch. 2, eqs. 38-40, annex A.2; Kalker 1990 ch. 2).
+// Known deviations: see mim_table.hpp (fixed nu, clamping outside the table, interpolation).
+#include "ferro/contact/mim_table.hpp"
+
+#include <fmt/format.h>
+#include <hdf5.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/mim/mim.hpp"
+
+namespace ferro::contact {
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+
+void check_axis(const std::vector<double>& v, const char* name, bool starts_at_zero,
+                bool positive) {
+  if (v.size() < 3) {
+    throw std::invalid_argument(fmt::format("mim table axis '{}': needs >= 3 nodes", name));
+  }
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!std::isfinite(v[i]) || (positive && !(v[i] > 0.0)) || (i > 0 && !(v[i] > v[i - 1]))) {
+      throw std::invalid_argument(fmt::format(
+          "mim table axis '{}': nodes must be finite{} and strictly increasing (node {} = {})",
+          name, positive ? ", > 0" : "", i, v[i]));
+    }
+  }
+  if (starts_at_zero && v.front() != 0.0) {
+    throw std::invalid_argument(fmt::format("mim table axis '{}': first node must be 0", name));
+  }
+}
+
+// Weights of the cubic Hermite interpolant on nodes t at q (clamped): value = sum w[k] f[k].
+// Node derivatives: three-point (non-uniform) formulas, one-sided second order at the ends.
+struct AxisWeights {
+  int first = 0;            // index of w[0]
+  int count = 0;            // <= 4
+  double w[4] = {0, 0, 0, 0};
+};
+
+AxisWeights axis_weights(const std::vector<double>& t, double q) {
+  const int n = static_cast<int>(t.size());
+  q = std::clamp(q, t.front(), t.back());
+  int i = static_cast<int>(std::upper_bound(t.begin(), t.end(), q) - t.begin()) - 1;
+  i = std::clamp(i, 0, n - 2);
+  const double h = t[i + 1] - t[i];
+  const double u = (q - t[i]) / h;
+  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
+  const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+  // Derivative at node j as coefficients on nodes (j0, j0+1, j0+2).
+  const auto derivative = [&](int j, int& j0, double c[3]) {
+    if (j == 0) {
+      const double a = t[1] - t[0], b = t[2] - t[1];
+      j0 = 0;
+      c[0] = -(2 * a + b) / (a * (a + b));
+      c[1] = (a + b) / (a * b);
+      c[2] = -a / (b * (a + b));
+    } else if (j == n - 1) {
+      const double a = t[n - 2] - t[n - 3], b = t[n - 1] - t[n - 2];
+      j0 = n - 3;
+      c[0] = b / (a * (a + b));
+      c[1] = -(a + b) / (a * b);
+      c[2] = (2 * b + a) / (b * (a + b));
+    } else {
+      const double a = t[j] - t[j - 1], b = t[j + 1] - t[j];
+      j0 = j - 1;
+      c[0] = -b / (a * (a + b));
+      c[1] = (b - a) / (a * b);
+      c[2] = a / (b * (a + b));
+    }
+  };
+  AxisWeights out;
+  out.first = std::max(0, std::min(i - 1, n - 4));
+  out.count = std::min(4, n);
+  const auto add = [&](int node, double weight) { out.w[node - out.first] += weight; };
+  add(i, h00);
+  add(i + 1, h01);
+  double c[3];
+  int j0 = 0;
+  derivative(i, j0, c);
+  for (int k = 0; k < 3; ++k) add(j0 + k, h10 * h * c[k]);
+  derivative(i + 1, j0, c);
+  for (int k = 0; k < 3; ++k) add(j0 + k, h11 * h * c[k]);
+  return out;
+}
+
+// HDF5 helpers (C API).
+struct H5Handle {
+  hid_t id = -1;
+  herr_t (*close)(hid_t) = nullptr;
+  H5Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
+  ~H5Handle() {
+    if (id >= 0 && close) close(id);
+  }
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+};
+
+void write_dataset(hid_t file, const std::string& name, const std::vector<double>& v,
+                   const std::vector<hsize_t>& dims) {
+  H5Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+  H5Handle set(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT,
+                          H5P_DEFAULT),
+               H5Dclose);
+  if (set.id < 0 || H5Dwrite(set.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                             v.data()) < 0) {
+    throw std::runtime_error(fmt::format("mim table: cannot write dataset '{}'", name));
+  }
+}
+
+std::vector<double> read_dataset(hid_t file, const std::string& path, const std::string& name,
+                                 std::vector<hsize_t>* dims_out = nullptr) {
+  if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) {
+    throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));
+  }
+  H5Handle set(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
+  H5Handle space(H5Dget_space(set.id), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space.id);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space.id, dims.data(), nullptr);
+  std::size_t n = 1;
+  for (hsize_t d : dims) n *= d;
+  std::vector<double> v(n);
+  if (H5Dread(set.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
+    throw std::runtime_error(fmt::format("{}: cannot read dataset '{}'", path, name));
+  }
+  if (dims_out) *dims_out = dims;
+  return v;
+}
+
+void write_attribute(hid_t file, const char* name, double value) {
+  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  H5Handle attr(H5Acreate2(file, name, H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT),
+                H5Aclose);
+  if (attr.id < 0 || H5Awrite(attr.id, H5T_NATIVE_DOUBLE, &value) < 0) {
+    throw std::runtime_error(fmt::format("mim table: cannot write attribute '{}'", name));
+  }
+}
+
+double read_attribute(hid_t file, const std::string& path, const char* name) {
+  if (H5Aexists(file, name) <= 0) {
+    throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));
+  }
+  H5Handle attr(H5Aopen(file, name, H5P_DEFAULT), H5Aclose);
+  double v = 0.0;
+  if (H5Aread(attr.id, H5T_NATIVE_DOUBLE, &v) < 0) {
+    throw std::runtime_error(fmt::format("{}: cannot read attribute '{}'", path, name));
+  }
+  return v;
+}
+
+// Scales of a Hertzian problem: s = mu F_n, c = sqrt(ab), and the normalisation factors.
+struct Scales {
+  double s = 0.0, c = 0.0;
+  double kx = 0.0, ky = 0.0, ks = 0.0;  // xi* = k xi
+};
+
+Scales scales(double a, double b, double normal_force, double mu, double shear_modulus,
+              double poisson) {
+  const KalkerCoefficients cij = kalker_coefficients_table(a, b, poisson);
+  Scales sc;
+  sc.s = mu * normal_force;
+  sc.c = std::sqrt(a * b);
+  sc.kx = shear_modulus * a * b * cij.c11 / sc.s;
+  sc.ky = shear_modulus * a * b * cij.c22 / sc.s;
+  sc.ks = shear_modulus * a * b * sc.c * cij.c23 / sc.s;
+  return sc;
+}
+
+}  // namespace
+
+void MimTableSpec::validate() const {
+  check_axis(ratio, "ratio", false, true);
+  check_axis(xi_x, "xi_x", true, false);
+  check_axis(xi_y, "xi_y", true, false);
+  check_axis(spin, "spin", false, false);
+  if (!(poisson >= 0.0 && poisson < 0.5)) {
+    throw std::invalid_argument(fmt::format("mim table poisson: must be in [0, 0.5), got {}",
+                                            poisson));
+  }
+  if (elements < 6) {
+    throw std::invalid_argument(fmt::format("mim table elements: must be >= 6, got {}", elements));
+  }
+  if (threads < 1) {
+    throw std::invalid_argument(fmt::format("mim table threads: must be >= 1, got {}", threads));
+  }
+}
+
+MimTableSpec MimTableSpec::default_spec() {
+  MimTableSpec s;
+  for (int k = -2; k <= 2; ++k) s.ratio.push_back(std::pow(5.0, k / 2.0));  // 0.2 ... 5
+  s.xi_x = {0.0, 0.3, 0.6, 1.0, 1.5, 2.2, 3.2, 5.0};
+  s.xi_y = s.xi_x;
+  const std::vector<double> half = {0.6, 1.4, 2.8, 5.0, 9.0};
+  for (auto it = half.rbegin(); it != half.rend(); ++it) s.spin.push_back(-*it);
+  s.spin.push_back(0.0);
+  for (double v : half) s.spin.push_back(v);
+  s.elements = 16;
+  return s;
+}
+
+std::size_t MimTable::index(int ir, int ix, int iy, int is) const {
+  const std::size_t nx = spec_.xi_x.size(), ny = spec_.xi_y.size(), ns = spec_.spin.size();
+  return ((static_cast<std::size_t>(ir) * nx + ix) * ny + iy) * ns + is;
+}
+
+MimTableValue MimTable::node(int ir, int ix, int iy, int is) const {
+  const std::size_t k = index(ir, ix, iy, is);
+  return {fx_[k], fy_[k], mz_[k]};
+}
+
+MimTable MimTable::build(const MimTableSpec& spec) {
+  spec.validate();
+  MimTable t;
+  t.spec_ = spec;
+  for (double r : spec.ratio) t.log_ratio_.push_back(std::log(r));
+  const std::size_t n = spec.ratio.size() * spec.xi_x.size() * spec.xi_y.size() * spec.spin.size();
+  t.fx_.assign(n, 0.0);
+  t.fy_.assign(n, 0.0);
+  t.mz_.assign(n, 0.0);
+  const Material steel = Material::from_young(210.0e9, spec.poisson);
+  const double g = combine(steel, steel).shear_modulus;
+  const double b = 5.0e-3, normal_force = 100.0e3, mu = 0.3;
+  const int nx = static_cast<int>(spec.xi_x.size()), ny = static_cast<int>(spec.xi_y.size());
+  const int ns = static_cast<int>(spec.spin.size());
+  // Work item = (ratio, xi_x) line; threads take lines in order (one MIM solver each, so the
+  // unit-grid operators are reused along a ratio).
+  const int lines = static_cast<int>(spec.ratio.size()) * nx;
+  std::atomic<int> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto worker = [&] {
+    mim::HertzMimSolver solver;
+    try {
+      for (int line = next++; line < lines; line = next++) {
+        const int ir = line / nx, ix = line % nx;
+        const double a = spec.ratio[ir] * b;
+        const Scales sc = scales(a, b, normal_force, mu, g, spec.poisson);
+        for (int iy = 0; iy < ny; ++iy) {
+          for (int is = 0; is < ns; ++is) {
+            if (spec.xi_x[ix] == 0.0 && spec.xi_y[iy] == 0.0 && spec.spin[is] == 0.0) continue;
+            mim::HertzRollingInput in;
+            in.semi_axis_x = a;
+            in.semi_axis_y = b;
+            in.normal_force = normal_force;
+            in.rolling = mim::RollingInput{spec.xi_x[ix] / sc.kx, spec.xi_y[iy] / sc.ky,
+                                           spec.spin[is] / sc.ks, mu};
+            in.body1 = in.body2 = steel;
+            in.elements_minor = spec.elements;
+            const mim::MimResult r = solver.solve(in);
+            if (!r.converged) {
+              throw std::runtime_error(fmt::format(
+                  "mim table: MIM did not converge at a/b = {}, xi* = ({}, {}, {})",
+                  spec.ratio[ir], spec.xi_x[ix], spec.xi_y[iy], spec.spin[is]));
+            }
+            const std::size_t k = t.index(ir, ix, iy, is);
+            t.fx_[k] = r.force_x / sc.s;
+            t.fy_[k] = r.force_y / sc.s;
+            t.mz_[k] = r.moment_z / (sc.s * sc.c);
+          }
+        }
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = lines;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < spec.threads; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
+  return t;
+}
+
+void MimTable::write_hdf5(const std::string& path) const {
+  H5Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
+  write_attribute(file.id, "format_version", kFormatVersion);
+  write_attribute(file.id, "poisson", spec_.poisson);
+  write_attribute(file.id, "elements", spec_.elements);
+  const auto axis = [&](const char* name, const std::vector<double>& v) {
+    write_dataset(file.id, name, v, {static_cast<hsize_t>(v.size())});
+  };
+  axis("ratio", spec_.ratio);
+  axis("xi_x", spec_.xi_x);
+  axis("xi_y", spec_.xi_y);
+  axis("spin", spec_.spin);
+  const std::vector<hsize_t> dims = {spec_.ratio.size(), spec_.xi_x.size(), spec_.xi_y.size(),
+                                     spec_.spin.size()};
+  write_dataset(file.id, "f_x", fx_, dims);
+  write_dataset(file.id, "f_y", fy_, dims);
+  write_dataset(file.id, "m_z", mz_, dims);
+}
+
+MimTable MimTable::read_hdf5(const std::string& path) {
+  H5E_auto2_t old_func = nullptr;
+  void* old_data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &old_func, &old_data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  H5Eset_auto2(H5E_DEFAULT, old_func, old_data);
+  if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot open HDF5 file", path));
+  const double version = read_attribute(file.id, path, "format_version");
+  if (version != kFormatVersion) {
+    throw std::invalid_argument(fmt::format("{}: format_version {} (expected {})", path, version,
+                                            kFormatVersion));
+  }
+  MimTable t;
+  t.spec_.poisson = read_attribute(file.id, path, "poisson");
+  t.spec_.elements = static_cast<int>(read_attribute(file.id, path, "elements"));
+  t.spec_.ratio = read_dataset(file.id, path, "ratio");
+  t.spec_.xi_x = read_dataset(file.id, path, "xi_x");
+  t.spec_.xi_y = read_dataset(file.id, path, "xi_y");
+  t.spec_.spin = read_dataset(file.id, path, "spin");
+  try {
+    t.spec_.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: {}", path, e.what()));
+  }
+  for (double r : t.spec_.ratio) t.log_ratio_.push_back(std::log(r));
+  const std::vector<hsize_t> expect = {t.spec_.ratio.size(), t.spec_.xi_x.size(),
+                                       t.spec_.xi_y.size(), t.spec_.spin.size()};
+  for (const char* name : {"f_x", "f_y", "m_z"}) {
+    std::vector<hsize_t> dims;
+    std::vector<double> v = read_dataset(file.id, path, name, &dims);
+    if (dims != expect) {
+      throw std::invalid_argument(fmt::format(
+          "{}: dataset '{}' must have dims [ratio][xi_x][xi_y][spin] = [{}][{}][{}][{}]", path,
+          name, expect[0], expect[1], expect[2], expect[3]));
+    }
+    (name[0] == 'f' ? (name[2] == 'x' ? t.fx_ : t.fy_) : t.mz_) = std::move(v);
+  }
+  return t;
+}
+
+MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
+  // Symmetries: y-mirror for xi_y < 0, reversal of xi_x (see the header).
+  double sign_fx = 1.0, sign_fy = 1.0;
+  if (p.xi_y < 0.0) {
+    p.xi_y = -p.xi_y;
+    p.spin = -p.spin;
+    sign_fy = -1.0;
+  }
+  if (p.xi_x < 0.0) {
+    p.xi_x = -p.xi_x;
+    sign_fx = -1.0;
+  }
+  // Outside the box: scale the creepage vector down onto it.
+  const double over = std::max({p.xi_x / spec_.xi_x.back(), p.xi_y / spec_.xi_y.back(),
+                                p.spin / spec_.spin.back(), p.spin / spec_.spin.front()});
+  if (over > 1.0) {
+    p.xi_x /= over;
+    p.xi_y /= over;
+    p.spin /= over;
+  }
+  const AxisWeights wr = axis_weights(log_ratio_, std::log(ratio));
+  const AxisWeights wx = axis_weights(spec_.xi_x, p.xi_x);
+  const AxisWeights wy = axis_weights(spec_.xi_y, p.xi_y);
+  const AxisWeights ws = axis_weights(spec_.spin, p.spin);
+  MimTableValue v;
+  for (int a = 0; a < wr.count; ++a) {
+    for (int b = 0; b < wx.count; ++b) {
+      const double wab = wr.w[a] * wx.w[b];
+      if (wab == 0.0) continue;
+      for (int c = 0; c < wy.count; ++c) {
+        const double wabc = wab * wy.w[c];
+        if (wabc == 0.0) continue;
+        const std::size_t base = index(wr.first + a, wx.first + b, wy.first + c, ws.first);
+        for (int d = 0; d < ws.count; ++d) {
+          const double w = wabc * ws.w[d];
+          v.f_x += w * fx_[base + d];
+          v.f_y += w * fy_[base + d];
+          v.m_z += w * mz_[base + d];
+        }
+      }
+    }
+  }
+  v.f_x *= sign_fx;
+  v.f_y *= sign_fy;
+  v.m_z *= sign_fy;
+  return v;
+}
+
+MimTablePoint MimTable::normalise(const TangentialProblem& problem) const {
+  const CombinedMaterial m = combine(problem.body1, problem.body2);
+  const ContactPatch& patch = *problem.patch;
+  const Scales sc = scales(patch.semi_axis_x, patch.semi_axis_y, patch.normal_force,
+                           problem.friction, m.shear_modulus, spec_.poisson);
+  return {problem.creepage.longitudinal * sc.kx, problem.creepage.lateral * sc.ky,
+          problem.creepage.spin * sc.ks};
+}
+
+TangentialSolution MimTable::forces(const TangentialProblem& problem) const {
+  problem.validate();
+  const ReductionFactors& k = problem.reduction;
+  if (k.k11 != 1.0 || k.k22 != 1.0 || k.k23 != 1.0 || k.k33 != 1.0) {
+    throw std::invalid_argument(
+        "tangential problem.reduction: mim_table takes no K_ij reduction factors (all must be 1)");
+  }
+  const CombinedMaterial m = combine(problem.body1, problem.body2);
+  if (std::abs(m.poisson - spec_.poisson) > 0.02) {
+    throw std::invalid_argument(fmt::format(
+        "tangential problem.body1/body2: combined nu = {} but the mim table was built for nu = {}",
+        m.poisson, spec_.poisson));
+  }
+  TangentialSolution s;
+  if (problem.friction == 0.0) return s;
+  const ContactPatch& patch = *problem.patch;
+  const double mu_fn = problem.friction * patch.normal_force;
+  const MimTableValue v = at(patch.semi_axis_x / patch.semi_axis_y, normalise(problem));
+  s.force_x = v.f_x * mu_fn;
+  s.force_y = v.f_y * mu_fn;
+  s.moment_z = v.m_z * mu_fn * std::sqrt(patch.semi_axis_x * patch.semi_axis_y);
+  return s;
+}
+
+TangentialSolution MimTableModel::solve(const TangentialProblem& problem) const {
+  return table_.forces(problem);
+}
+
+}  // namespace ferro::contact
