@@ -19,6 +19,7 @@
 
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "quiet_hdf5.hpp"
 
 namespace ferro::contact {
 
@@ -308,12 +309,10 @@ void MimTable::write_hdf5(const std::string& path) const {
 }
 
 MimTable MimTable::read_hdf5(const std::string& path) {
-  H5E_auto2_t old_func = nullptr;
-  void* old_data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &old_func, &old_data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  H5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  H5Eset_auto2(H5E_DEFAULT, old_func, old_data);
+  H5Handle file = [&] {
+    const detail::QuietHdf5 quiet;
+    return H5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  }();
   if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot open HDF5 file", path));
   const double version = read_attribute(file.id, path, "format_version");
   if (version != kFormatVersion) {

@@ -3,6 +3,7 @@
 // References: Toumi (2016) eq. (156).
 // Known deviations: multilinear interpolation, clamped at the axis ends.
 #include "ferro/contact/reduction_factors.hpp"
+#include "quiet_hdf5.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -165,22 +166,7 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
 
 namespace {
 
-// Silences HDF5's own error printing while a table is read or written (library code must not
-// print); restores the previous handler on exit.
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
+using detail::QuietHdf5;
 
 struct Handle {
   hid_t id = -1;

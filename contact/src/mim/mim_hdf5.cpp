@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ferro/contact/mim/mim.hpp"
+#include "../quiet_hdf5.hpp"
 
 namespace ferro::contact::mim {
 namespace {
@@ -24,22 +25,7 @@ struct H5Handle {
   H5Handle& operator=(const H5Handle&) = delete;
 };
 
-// Silences HDF5's default error printing for the scope (library code must not print); errors
-// are reported by exceptions instead.
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
+using detail::QuietHdf5;
 
 void check(bool ok, const std::string& path, const std::string& what) {
   if (!ok) throw std::runtime_error(fmt::format("write_hdf5 {}: cannot write {}", path, what));

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "ferro/contact/kalker_coefficients.hpp"
+#include "mim_kalker.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/contact/mim/tangential_solver.hpp"
@@ -18,28 +19,7 @@ namespace {
 
 const Material kSteel = Material::from_young(210.0e9, 0.28);
 
-KalkerCoefficients mim_creep_coefficients(double a, double b, int elements) {
-  const CombinedMaterial m = combine(kSteel, kSteel);
-  const double fn = 1.0e5;
-  const HertzGap hg = hertz_gap_for_ellipse(a, b, fn, m.contact_modulus);
-  const Grid grid = grid_for_ellipse(a, b, elements, 0.04);
-  InfluenceOperator op(grid, m);
-  const NormalSolution s =
-      solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
-  EXPECT_TRUE(s.converged);
-  const double g = m.shear_modulus, c = a * b, tiny = 1.0e-6, mu = 1.0e6;
-  KalkerCoefficients k;
-  auto rolling = [&](const RollingInput& in) {
-    const TangentialSolution t = solve_steady_rolling(op, s.pressure, in);
-    EXPECT_TRUE(t.converged);
-    return t;
-  };
-  k.c11 = -rolling(RollingInput{tiny, 0.0, 0.0, mu}).force_x / (g * c * tiny);
-  k.c22 = -rolling(RollingInput{0.0, tiny, 0.0, mu}).force_y / (g * c * tiny);
-  const double spin = tiny / std::sqrt(c);
-  k.c23 = -rolling(RollingInput{0.0, 0.0, spin, mu}).force_y / (g * std::pow(c, 1.5) * spin);
-  return k;
-}
+using ferro::test::mim_creep_coefficients;
 
 }  // namespace
 
