@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "ferro/contact/geometry/profile.hpp"
@@ -32,12 +33,7 @@ class ProfileCurve {
 
   /// z and dz/dy at y (clamped to the range; check `contains` first).
   void eval(double y, double& z, double& dz) const {
-    double u = (y - y0_) * inv_h_;
-    if (u < 0.0) u = 0.0;
-    const double umax = static_cast<double>(n_ - 1) - 1e-9;
-    if (u > umax) u = umax;
-    const auto i = static_cast<std::size_t>(u);
-    const double t = u - static_cast<double>(i);
+    const auto [i, t] = cell(y);
     const double z0 = z_[i], z1 = z_[i + 1], d0 = dz_[i] * h_, d1 = dz_[i + 1] * h_;
     const double t2 = t * t, t3 = t2 * t;
     z = (2 * t3 - 3 * t2 + 1) * z0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * z1 +
@@ -49,12 +45,7 @@ class ProfileCurve {
   /// z, dz/dy and d2z/dy2 at y.
   void eval2(double y, double& z, double& dz, double& ddz) const {
     eval(y, z, dz);
-    double u = (y - y0_) * inv_h_;
-    if (u < 0.0) u = 0.0;
-    const double umax = static_cast<double>(n_ - 1) - 1e-9;
-    if (u > umax) u = umax;
-    const auto i = static_cast<std::size_t>(u);
-    const double t = u - static_cast<double>(i);
+    const auto [i, t] = cell(y);
     ddz = (1.0 - t) * ddz_[i] + t * ddz_[i + 1];
   }
   [[nodiscard]] double z(double y) const {
@@ -73,6 +64,16 @@ class ProfileCurve {
   [[nodiscard]] std::size_t size() const { return n_; }
 
  private:
+  // Sample interval i and local coordinate t in [0, 1) of y, clamped to the range.
+  [[nodiscard]] std::pair<std::size_t, double> cell(double y) const {
+    double u = (y - y0_) * inv_h_;
+    if (u < 0.0) u = 0.0;
+    const double umax = static_cast<double>(n_ - 1) - 1e-9;
+    if (u > umax) u = umax;
+    const auto i = static_cast<std::size_t>(u);
+    return {i, u - static_cast<double>(i)};
+  }
+
   double y0_ = 0.0, h_ = 1.0, inv_h_ = 1.0;
   std::size_t n_ = 0;
   std::vector<double> z_, dz_, ddz_;
