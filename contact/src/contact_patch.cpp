@@ -37,4 +37,16 @@ ContactPatch elliptic_patch(double semi_axis_x, double semi_axis_y, double norma
   return p;
 }
 
+ContactPatch hertz_patch(const HertzSolution& hertz, double curvature_x, double curvature_y) {
+  ContactPatch p;
+  p.semi_axis_x = hertz.semi_axis_x;
+  p.semi_axis_y = hertz.semi_axis_y;
+  p.normal_force = hertz.normal_force;
+  p.peak_pressure = hertz.peak_pressure;
+  p.approach = hertz.approach;
+  p.curvature_x = curvature_x;
+  p.curvature_y = curvature_y;
+  return p;
+}
+
 }  // namespace ferro::contact

@@ -34,17 +34,9 @@ class HertzModel final : public NormalContactModel {
     const CombinedMaterial m = combine(problem.body1, problem.body2);
     const HertzSolution h = hertz_solve(problem.curvature_x, problem.curvature_y,
                                         problem.normal_force, m.contact_modulus);
-    ContactPatch patch;
-    patch.semi_axis_x = h.semi_axis_x;
-    patch.semi_axis_y = h.semi_axis_y;
-    patch.normal_force = h.normal_force;
-    patch.peak_pressure = h.peak_pressure;
-    patch.approach = h.approach;
-    patch.curvature_x = problem.curvature_x;
-    patch.curvature_y = problem.curvature_y;
     NormalSolution s;
     s.approach = h.approach;
-    s.patches.push_back(std::move(patch));
+    s.patches.push_back(hertz_patch(h, problem.curvature_x, problem.curvature_y));
     return s;
   }
 };

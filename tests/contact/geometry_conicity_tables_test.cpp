@@ -144,9 +144,7 @@ TEST(geometry_gap, contact_plane_gap_is_hertzian_near_the_point) {
   const fc::WheelRailPair pair(wheel_file(), rail_file(), a22_params());
   const fc::WheelsetPose pose = fc::touching_pose(pair, fc::WheelsetPose{});
   const auto pts = fc::candidate_points(pair, pose, fc::Side::right);
-  const fc::ContactPoint* best = &pts.front();
-  for (const auto& p : pts)
-    if (p.vertical_gap < best->vertical_gap) best = &p;
+  const fc::ContactPoint* best = &fc::deepest_candidate(pts);
   const double h = 0.2e-3;
   const fc::GapGrid g = fc::sample_gap(pair, pose, *best, 21, 3, 0.2e-3, h);
   EXPECT_NEAR(g.at(10, 1), 0.0, 1e-9);
@@ -166,9 +164,7 @@ TEST(geometry_gap, thesis_centred_case_gap_gives_two_connected_lobes) {
   const fc::WheelRailPair pair(wheel_file(), rail_file(), a22_params());
   const fc::WheelsetPose pose = fc::touching_pose(pair, fc::WheelsetPose{});
   const auto pts = fc::candidate_points(pair, pose, fc::Side::right);
-  const fc::ContactPoint* best = &pts.front();
-  for (const auto& p : pts)
-    if (p.vertical_gap < best->vertical_gap) best = &p;
+  const fc::ContactPoint* best = &fc::deepest_candidate(pts);
   const int ny = 149;
   const double ds = (7.908e-3 + 14.374e-3) / (ny - 1);
   const fc::GapGrid g =

@@ -38,10 +38,7 @@ CentredCase centred_case_gap() {
                                params);
   const fc::WheelsetPose pose = fc::touching_pose(pair, fc::WheelsetPose{});
   const auto pts = fc::candidate_points(pair, pose, fc::Side::right);
-  const fc::ContactPoint* best = &pts.front();
-  for (const auto& p : pts) {
-    if (p.vertical_gap < best->vertical_gap) best = &p;
-  }
+  const fc::ContactPoint* best = &fc::deepest_candidate(pts);
   constexpr int kNx = 46, kNy = 100;
   constexpr double kH = 0.223e-3;
   const double s_centre = 0.5 * (7.908e-3 - 14.374e-3);

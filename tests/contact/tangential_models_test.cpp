@@ -106,7 +106,9 @@ TEST(tangential_linear_limit, slopes_equal_kalker) {
     } else {
       EXPECT_EQ(fs.force_y, 0.0) << m.label();
     }
-    if (!m.spin_in_force) EXPECT_EQ(fs.moment_z, 0.0) << m.label();
+    if (!m.spin_in_force) {
+      EXPECT_EQ(fs.moment_z, 0.0) << m.label();
+    }
     if (m.has_c33_moment) {
       const double ab = lin.a * lin.b;
       EXPECT_NEAR(fs.moment_z / (-gab * ab * lin.c.c33 * phi), 1.0, kSlopeTol) << m.label();
@@ -154,7 +156,9 @@ TEST(tangential_curves, opposing_monotone_continuous) {
         const fc::Creepage c = dir == 0 ? fc::Creepage{xi, 0.0, 0.0} : fc::Creepage{0.0, xi, 0.0};
         const fc::TangentialSolution f = model->solve(s.problem(c));
         const double force = dir == 0 ? f.force_x : f.force_y;
-        if (xi != 0.0) EXPECT_LT(force * xi, 0.0) << m.label() << " xi=" << xi;
+        if (xi != 0.0) {
+          EXPECT_LT(force * xi, 0.0) << m.label() << " xi=" << xi;
+        }
         if (i > 0) {
           EXPECT_LE(force, prev + 1e-9 * std::abs(prev)) << m.label() << " xi=" << xi;
           EXPECT_LE(std::abs(force - prev), 1.01 * slope * step) << m.label() << " xi=" << xi;
@@ -182,8 +186,12 @@ TEST(tangential_reduction_factors, scale_initial_slopes_exactly) {
     const auto mz = [](const fc::TangentialSolution& t) { return t.moment_z; };
     EXPECT_NEAR(ratio(fc::Creepage{xi, 0, 0}, fx), k.k11, kExact) << m.label();
     EXPECT_NEAR(ratio(fc::Creepage{0, xi, 0}, fy), k.k22, kExact) << m.label();
-    if (m.spin_in_force) EXPECT_NEAR(ratio(fc::Creepage{0, 0, phi}, fy), k.k23, 1e-6) << m.label();
-    if (m.has_c33_moment) EXPECT_NEAR(ratio(fc::Creepage{0, 0, phi}, mz), k.k33, 1e-6) << m.label();
+    if (m.spin_in_force) {
+      EXPECT_NEAR(ratio(fc::Creepage{0, 0, phi}, fy), k.k23, 1e-6) << m.label();
+    }
+    if (m.has_c33_moment) {
+      EXPECT_NEAR(ratio(fc::Creepage{0, 0, phi}, mz), k.k33, 1e-6) << m.label();
+    }
   }
 }
 

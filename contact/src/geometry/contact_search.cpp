@@ -235,6 +235,14 @@ WheelRailPair::WheelRailPair(const Profile& wheel, const Profile& rail,
   rail_offset_ = 0.5 * params_.track_gauge - rail_ref_.gauge_y;
 }
 
+const ContactPoint& deepest_candidate(const std::vector<ContactPoint>& candidates) {
+  if (candidates.empty()) throw std::invalid_argument("deepest_candidate: no candidate point");
+  return *std::min_element(candidates.begin(), candidates.end(),
+                           [](const ContactPoint& a, const ContactPoint& b) {
+                             return a.vertical_gap < b.vertical_gap;
+                           });
+}
+
 std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const WheelsetPose& pose,
                                            Side side, double max_gap) {
   const SideContext c = make_context(pair, pose, side);

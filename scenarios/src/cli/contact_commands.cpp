@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/elliptic_integrals.hpp"
 #include "ferro/contact/hertz.hpp"
+#include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/contact/tangential_model.hpp"
 #include "ferro/scenarios/cli.hpp"
@@ -66,33 +66,17 @@ fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) 
   if (!(in.fn > 0.0))
     throw std::invalid_argument(fmt::format("--fn: must be > 0 [N], got {}", in.fn));
   if (have_curv) {
-    const fc::HertzSolution h =
-        fc::hertz_solve(in.curvature_x, in.curvature_y, in.fn, m.contact_modulus);
-    fc::ContactPatch p;
-    p.semi_axis_x = h.semi_axis_x;
-    p.semi_axis_y = h.semi_axis_y;
-    p.normal_force = in.fn;
-    p.peak_pressure = h.peak_pressure;
-    p.approach = h.approach;
-    p.curvature_x = in.curvature_x;
-    p.curvature_y = in.curvature_y;
-    return p;
+    return fc::hertz_patch(
+        fc::hertz_solve(in.curvature_x, in.curvature_y, in.fn, m.contact_modulus),
+        in.curvature_x, in.curvature_y);
   }
   if (!(in.a > 0.0) || !(in.b > 0.0)) {
     throw std::invalid_argument(
         fmt::format("--a, --b: must both be > 0 [m], got {}, {}", in.a, in.b));
   }
-  // Hertz inverse: ratio from k = minor/major, then A + B = 3 F E(e) / (2 pi E* k^2 major^3).
-  const double major = std::max(in.a, in.b), minor = std::min(in.a, in.b);
-  const double k = minor / major;
-  const double rho = fc::hertz_curvature_ratio(k);
-  const double ee = k < 1.0 ? fc::complete_elliptic_integrals(std::sqrt(1.0 - k * k)).second
-                            : 0.5 * std::numbers::pi;
-  const double sum = 3.0 * in.fn * ee /
-                     (2.0 * std::numbers::pi * m.contact_modulus * k * k * major * major * major);
-  const double small = sum / (1.0 + rho), large = sum - small;
-  return fc::elliptic_patch(in.a, in.b, in.fn, in.a >= in.b ? small : large,
-                            in.a >= in.b ? large : small);
+  // Hertz inverse: the curvatures A, B that give this ellipse under F_n.
+  const fc::mim::HertzGap g = fc::mim::hertz_gap_for_ellipse(in.a, in.b, in.fn, m.contact_modulus);
+  return fc::elliptic_patch(in.a, in.b, in.fn, g.curvature_x, g.curvature_y);
 }
 
 EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,

@@ -7,6 +7,8 @@
 #include <limits>
 #include <vector>
 
+#include "ferro/contact/hertz.hpp"
+
 namespace ferro::contact {
 
 /// One strip of a non-elliptic patch, parallel to the rolling direction x.
@@ -45,5 +47,10 @@ struct ContactPatch {
                                           double normal_force,
                                           double curvature_x = ContactPatch::kNaN,
                                           double curvature_y = ContactPatch::kNaN);
+
+/// Elliptic patch of a Hertz solution (semi-axes, load, p_max, approach) for the curvatures
+/// A, B [1/m] it was solved for.
+[[nodiscard]] ContactPatch hertz_patch(const HertzSolution& hertz, double curvature_x,
+                                       double curvature_y);
 
 }  // namespace ferro::contact

@@ -124,6 +124,10 @@ struct ContactPoint {
     const WheelRailPair& pair, const WheelsetPose& pose, Side side,
     double max_gap = std::numeric_limits<double>::infinity());
 
+/// The candidate with the smallest vertical gap (the first touching point of a wheel). Throws
+/// std::invalid_argument when `candidates` is empty.
+[[nodiscard]] const ContactPoint& deepest_candidate(const std::vector<ContactPoint>& candidates);
+
 /// Contact points at `pose`: one per connected run of interpenetration on each wheel, both
 /// wheels (left first, then right, each in increasing wheel_y).
 [[nodiscard]] std::vector<ContactPoint> search_contacts(const WheelRailPair& pair,
