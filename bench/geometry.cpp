@@ -15,7 +15,7 @@ namespace fc = ferro::contact;
 namespace {
 
 fc::WheelRailPair make_a22_pair(double section_step) {
-  const std::string d = std::string(FERRO_SHARED_DATA_DIR) + "/profiles/";
+  const std::string d = std::string(FERRO_DATA_DIR) + "/profiles/";
   fc::WheelRailPairParams p;
   p.track_gauge = 1.435;
   p.flange_back_distance = 1.360;

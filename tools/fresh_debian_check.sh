@@ -2,8 +2,8 @@
 # Checks the README's two Quick start commands on a fresh Debian 12 root made by debootstrap
 # (minbase), as root in a chroot, from a clean clone of this repository's HEAD.
 #   tools/fresh_debian_check.sh [WORKDIR]     (default WORKDIR: /tmp/ferro-fresh)
-# Needs root, debootstrap and access to the Debian mirror. The shared data folder is copied
-# beside the clone, as CI has it.
+# Needs root, debootstrap and access to the Debian mirror. The clone is used on its own (the
+# repository carries its data in data/).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 work=${1:-/tmp/ferro-fresh}
@@ -15,7 +15,6 @@ fi
 cp /etc/resolv.conf "$root/etc/resolv.conf"
 rm -rf "$root/work" && mkdir -p "$root/work"
 git clone -q "$repo" "$root/work/main"
-[ -d "$repo/../shared" ] && cp -r "$repo/../shared" "$root/work/shared"
 for fs in proc sys dev; do mountpoint -q "$root/$fs" || mount --bind "/$fs" "$root/$fs"; done
 trap 'for fs in proc sys dev; do umount -l "$root/$fs" 2>/dev/null || true; done' EXIT
 chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin bash -c \

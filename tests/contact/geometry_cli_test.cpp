@@ -28,7 +28,7 @@ CliRun run(const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
-const std::string kProfiles = std::string(FERRO_SHARED_DATA_DIR) + "/profiles/";
+const std::string kProfiles = std::string(FERRO_DATA_DIR) + "/profiles/";
 const std::string kPair = "--wheel " + kProfiles + "MBench_S1002_v3.prw --rail " + kProfiles +
                           "MBench_UIC60_v3.prr --gauge-mm 1435 --flange-back-mm 1360 "
                           "--flange-back-y-mm -70 --radius-mm 460";
@@ -95,7 +95,7 @@ TEST(geometry_cli, pair_yaml_writes_table_diagram_and_conicity) {
   const auto dir = std::filesystem::temp_directory_path() / "ferro_geometry_pair";
   std::filesystem::remove_all(dir);
   const CliRun r =
-      run("geometry " + std::string(FERRO_SHARED_DATA_DIR) +
+      run("geometry " + std::string(FERRO_DATA_DIR) +
           "/manchester_contact_benchmark_a22.yaml --no-plot --out-dir " + dir.string());
   ASSERT_EQ(r.code, 0) << r.out;
   for (const char* f : {"contact_table.h5", "contact_points.csv", "conicity.csv", "profiles.csv"}) {

@@ -15,7 +15,7 @@ namespace fc = ferro::contact;
 
 namespace {
 
-const std::string kData = FERRO_SHARED_DATA_DIR;
+const std::string kData = FERRO_DATA_DIR;
 
 fc::WheelRailPairParams a22_params() {
   fc::WheelRailPairParams p;

@@ -17,7 +17,7 @@ namespace fc = ferro::contact;
 
 namespace {
 
-const std::string kData = FERRO_SHARED_DATA_DIR;
+const std::string kData = FERRO_DATA_DIR;
 
 struct A22Case {
   int id;

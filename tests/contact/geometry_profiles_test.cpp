@@ -15,8 +15,8 @@ namespace fc = ferro::contact;
 
 namespace {
 
-const std::string kWheelFile = std::string(FERRO_SHARED_DATA_DIR) + "/profiles/MBench_S1002_v3.prw";
-const std::string kRailFile = std::string(FERRO_SHARED_DATA_DIR) + "/profiles/MBench_UIC60_v3.prr";
+const std::string kWheelFile = std::string(FERRO_DATA_DIR) + "/profiles/MBench_S1002_v3.prw";
+const std::string kRailFile = std::string(FERRO_DATA_DIR) + "/profiles/MBench_UIC60_v3.prr";
 
 // Shortest distance from (y, z) to the polyline p [m].
 double distance_to_polyline(const fc::Profile& p, double y, double z) {

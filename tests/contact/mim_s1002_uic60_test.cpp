@@ -27,7 +27,7 @@ struct CentredCase {
 };
 
 CentredCase centred_case_gap() {
-  const std::string data = FERRO_SHARED_DATA_DIR;
+  const std::string data = FERRO_DATA_DIR;
   fc::WheelRailPairParams params;
   params.track_gauge = 1.435;
   params.flange_back_distance = 1.360;
