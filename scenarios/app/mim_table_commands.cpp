@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "ferro/contact/mim_table.hpp"
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 
 namespace ferro::cli {
 

@@ -5,7 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 
 namespace ferro::cli {
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "ferro/contact/mim/mim.hpp"
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 
 namespace ferro::cli {
 

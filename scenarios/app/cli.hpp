@@ -1,5 +1,5 @@
 #pragma once
-// The ferrodyn command line. Each verb group (one file in scenarios/src/cli/) registers its
+// The ferrodyn command line. Each verb group (one file in scenarios/app/) registers its
 // subcommands on the root app; the chosen subcommand stores its handler, which run_main calls.
 //
 // Error convention for handlers: throw std::invalid_argument for bad user input (the message

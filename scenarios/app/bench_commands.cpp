@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
 #include "ferro/scenarios/plotting.hpp"
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/run.hpp"

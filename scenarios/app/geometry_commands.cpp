@@ -24,7 +24,7 @@
 
 #include "ferro/contact/geometry/contact_table.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 #include "ferro/scenarios/plotting.hpp"
 
 namespace ferro::cli {

@@ -21,7 +21,7 @@
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/contact/tangential_model.hpp"
-#include "ferro/scenarios/cli.hpp"
+#include "cli.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 
