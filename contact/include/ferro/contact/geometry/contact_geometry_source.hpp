@@ -1,0 +1,54 @@
+#pragma once
+// Where the dynamics gets its wheel-rail contact points from, behind one interface: a
+// precomputed multi-point table (every contact point per wheel, tread and flange, indexed by
+// lateral shift and roll, yaw optional, penetration computed online), the online 3D search, or a
+// one-point table imported from another tool. All of them answer in the contact layer's track
+// frame (x forward, y right, z down; see wheel_rail_geometry.hpp) for a wheelset pose given
+// relative to the two rails.
+//
+// References: see wheel_rail_geometry.hpp (search), contact_table.hpp (tables).
+// Known deviations: see each implementation.
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+
+namespace ferro::contact {
+
+/// One penetrating contact point as the dynamics needs it. Track frame of the contact layer.
+struct WheelRailContact {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  Side side = Side::right;
+  double x = 0.0, y = 0.0, z = 0.0;  ///< point on the rail surface, track frame [m]
+  /// Contact angle [rad], + when the normal leans towards the track centre (flange ~ +70 deg).
+  double contact_angle = 0.0;
+  double rolling_radius = 0.0;  ///< wheel radius at the point [m]
+  double penetration = 0.0;     ///< elastic approach along the normal, > 0 [m]
+  double curvature_a = kNaN;    ///< A, longitudinal relative curvature [1/m]
+  double curvature_b = kNaN;    ///< B, lateral relative curvature [1/m]
+  /// Imported tables give the Hertz state at a reference approach instead of curvatures:
+  /// F_n = ref_normal_force (penetration / ref_penetration)^1.5, semi-axes scale as F_n^(1/3).
+  double ref_normal_force = kNaN;  ///< [N]
+  double ref_penetration = kNaN;   ///< [m]
+  double ref_semi_axis_a = kNaN;   ///< [m]
+  double ref_semi_axis_b = kNaN;   ///< [m]
+  /// Kalker coefficients when the source provides them (imported tables); NaN: from a/b.
+  double c11 = kNaN, c22 = kNaN, c23 = kNaN;
+  [[nodiscard]] bool has_reference_state() const { return ref_normal_force == ref_normal_force; }
+};
+
+class ContactGeometrySource {
+ public:
+  virtual ~ContactGeometrySource() = default;
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  /// Every penetrating contact point of both wheels at `pose` (relative to the rails), left
+  /// wheel first, appended to `out` after clearing it. Must be thread-safe (const, no shared
+  /// mutable state) and must not allocate once `out` has grown to its working size.
+  virtual void contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out) const = 0;
+};
+
+}  // namespace ferro::contact
