@@ -20,14 +20,14 @@ namespace fs = std::filesystem;
 using scenarios::Scene;
 
 struct RunArgs {
-  std::string scene, output, plot_dir, integrator;
+  std::string scene, output, plot_dir, integrator, tangential;
   std::vector<std::string> csv;
   double t_end = NAN, speed = NAN, pace = 0.0;
   bool no_plots = false, quiet = false;
 };
 
 struct EigArgs {
-  std::string scene, output;
+  std::string scene, output, tangential;
   double speed_min = NAN, speed_max = NAN;
   int points = 0;
   bool no_plots = false;
@@ -66,6 +66,7 @@ int do_run(const RunArgs& a) {
       throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", a.speed));
     scene.simulation.speed = a.speed;
   }
+  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
   if (!a.integrator.empty()) {
     scene.solver.method = a.integrator;
     scene.solver.validate("--integrator");
@@ -138,6 +139,7 @@ int do_run(const RunArgs& a) {
 
 int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
+  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
   if (!std::isnan(a.speed_min)) scene.eigen.speed_min = a.speed_min;
   if (!std::isnan(a.speed_max)) scene.eigen.speed_max = a.speed_max;
   if (a.points > 0) scene.eigen.points = a.points;
@@ -233,6 +235,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
+  run->add_option("--tangential", run_args->tangential,
+                  "Override the scene's tangential contact model (vehicle scenes)");
   run->add_option("--pace", run_args->pace,
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
   run->add_option("--plot-dir", run_args->plot_dir,
@@ -250,6 +254,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("--speed-min", eig_args->speed_min, "Lowest speed [m/s]");
   eig->add_option("--speed-max", eig_args->speed_max, "Highest speed [m/s]");
   eig->add_option("--points", eig_args->points, "Number of speeds in the sweep");
+  eig->add_option("--tangential", eig_args->tangential,
+                  "Override the scene's tangential contact model (vehicle scenes)");
   eig->add_flag("--no-plots", eig_args->no_plots, "Do not draw plots");
   eig->callback([&handler, eig_args] { handler = [eig_args] { return do_eig(*eig_args); }; });
 
