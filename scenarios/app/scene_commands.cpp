@@ -89,10 +89,13 @@ int do_run(const RunArgs& a) {
   const double v = scene.simulation.speed;
   fmt::print("ferrodyn run: {} ({})\n", scene.name, scene.path);
   fmt::print("  model     {}, V = {:.3f} m/s ({:.1f} km/h)\n", scene.model.type, v, v * 3.6);
-  {
+  if (scene.model.type == "vehicle") {
+    fmt::print("  vehicle   {} (scope {}), contact {} geometry, {} creep forces\n",
+               scene.model.vehicle.name, scene.model.selection.scope,
+               scene.model.vehicle.wheel_rail.geometry, scene.model.vehicle.wheel_rail.tangential_model);
+  } else {
     const auto sys = scenarios::build_system(scene, v);
-    const std::vector<double> x_eq(sys->size(), 0.0);
-    const auto modes = vehicle::linear_modes(*sys, 0.0, x_eq);
+    const auto modes = vehicle::linear_modes(*sys, 0.0, scenarios::equilibrium_state(scene, *sys));
     if (!modes.empty()) {
       fmt::print("  linear    least damped mode at V: damping ratio {:+.4f}, {:.3f} Hz ({})\n",
                  modes.front().damping_ratio, modes.front().frequency_hz,
@@ -106,7 +109,21 @@ int do_run(const RunArgs& a) {
              s.wall_seconds > 0 ? s.t_reached / s.wall_seconds : 0.0);
   if (!s.message.empty()) fmt::print("  cause     {}\n", s.message);
   fmt::print("  {:<30} {:<6} {:>12} {:>12}\n", "signal", "unit", "peak |x|", "final");
+  // A vehicle has many channels: the summary shows wheel forces, wheelset displacements and
+  // car-body acceleration (the HDF5 file has them all).
+  const auto shown = [&](const std::string& name) {
+    if (scene.model.type != "vehicle") return true;
+    for (const char* end : {".Y", ".Q", ".points", "ay"}) {
+      const std::string e(end);
+      if (name.size() >= e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
+        return true;
+    }
+    return name.rfind("wheelset_", 0) == 0 &&
+           (name.size() > 2 && (name.substr(name.size() - 2) == ".y" ||
+                                (name.size() > 4 && name.substr(name.size() - 4) == ".yaw")));
+  };
   for (std::size_t i = 0; i < s.channels.size(); ++i) {
+    if (!shown(s.channels[i].name)) continue;
     fmt::print("  {:<30} {:<6} {:>12.5g} {:>12.5g}\n", s.channels[i].name, s.channels[i].unit,
                s.peak_abs[i], s.final_values[i]);
   }
@@ -115,7 +132,7 @@ int do_run(const RunArgs& a) {
     const std::string dir = a.plot_dir.empty() ? default_plot_dir(s.output_file) : a.plot_dir;
     std::vector<std::string> signals = scene.output.plots;
     if (signals.empty()) {
-      for (const auto& name : scenarios::state_names(scene.model)) signals.push_back(name);
+      for (std::size_t i = 0; i < s.state_count; ++i) signals.push_back(s.channels[i].name);
     }
     const int rc = make_plots("timeseries", s.output_file, signals, dir, "png,svg");
     if (rc == 0) {
