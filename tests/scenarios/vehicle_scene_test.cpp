@@ -1,0 +1,65 @@
+// Vehicle scenes: the scene's contact and track parts override the vehicle file's wheel-rail
+// block key by key, the model selection and speed ramp are read, and --tangential replaces the
+// creep model. Oracle: the values written in tests/scenarios/data/vehicle_overrides.yaml and in
+// scenarios/vehicles/manchester_vehicle1.yaml.
+#include <gtest/gtest.h>
+
+#include "ferro/scenarios/scene.hpp"
+
+namespace ferro::scenarios {
+namespace {
+
+const std::string kScene = "tests/scenarios/data/vehicle_overrides.yaml";
+
+TEST(VehicleScene, contact_and_track_parts_override_the_vehicle_file) {
+  const Scene s = load_scene(kScene);
+  ASSERT_EQ(s.model.type, "vehicle");
+  EXPECT_EQ(s.model.vehicle.name, "manchester_vehicle1");
+  const auto& w = s.model.vehicle.wheel_rail;
+  EXPECT_EQ(w.geometry, "search");
+  EXPECT_EQ(w.friction, 0.4);
+  EXPECT_EQ(w.tangential_model, "fastsim");
+  EXPECT_EQ(w.tangential_options.at("mx"), "12");
+  EXPECT_EQ(w.reduction[0], 0.5);
+  EXPECT_EQ(w.reduction[1], 0.6);
+  EXPECT_EQ(w.reduction[2], 1.0);
+  EXPECT_EQ(w.regularisation_speed, 0.5);
+  EXPECT_EQ(w.track_gauge, 1.445);       // from the track part
+  EXPECT_EQ(s.track.design.gauge, 1.445);
+  EXPECT_EQ(w.rail_inclination, 0.025);  // from the track part
+  EXPECT_EQ(w.shear_modulus, 82.0e9);    // kept from the vehicle file
+  EXPECT_EQ(w.flange_back_distance, 1.360);
+  EXPECT_EQ(s.model.selection.scope, "bogie");
+  EXPECT_EQ(s.model.selection.index, 1);
+  EXPECT_EQ(s.model.selection.frozen, (std::vector<std::string>{"wheelset_3.roll", "z"}));
+  EXPECT_EQ(s.simulation.speed, 0.0);
+  EXPECT_EQ(s.simulation.acceleration, 1.5);
+  EXPECT_EQ(s.simulation.start_position, 20.0);
+  EXPECT_EQ(s.simulation.initial.at("wheelset_3.y"), 1.0e-3);
+  EXPECT_EQ(s.simulation.initial_position.at("wheelset_3.y").first, 26);  // its line
+  // The included vehicle file is kept in the scene text written to the output.
+  EXPECT_NE(s.text.find("included: "), std::string::npos);
+  EXPECT_NE(s.text.find("Manchester benchmark vehicle 1"), std::string::npos);
+}
+
+TEST(VehicleScene, tangential_override) {
+  Scene s = load_scene(kScene);
+  override_tangential(s, "fastsim", "--tangential");  // same model: options kept
+  EXPECT_EQ(s.model.vehicle.wheel_rail.tangential_options.size(), 2u);
+  override_tangential(s, "chopaya", "--tangential");
+  EXPECT_EQ(s.model.vehicle.wheel_rail.tangential_model, "chopaya");
+  EXPECT_TRUE(s.model.vehicle.wheel_rail.tangential_options.empty());
+  try {
+    override_tangential(s, "chopya", "--tangential");
+    FAIL() << "accepted an unknown model";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--tangential: unknown tangential model 'chopya'"),
+              std::string::npos)
+        << e.what();
+  }
+  Scene legacy = load_scene("scenarios/scenes/wheelset_hunting.yaml");
+  EXPECT_THROW(override_tangential(legacy, "fastsim", "--tangential"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ferro::scenarios
