@@ -100,7 +100,6 @@ VehicleModelInputs single_wheelset(const WheelsetCase& c, double speed, LinearCr
   g.curvature_a = c.A;
   g.curvature_b = c.B;
   g.rail_raise = lc.penetration;  // the frozen vertical position carries the wheel load
-  g.kinematic = true;
   in.geometry = std::make_shared<ConicalTestSource>(g);
   in.speed.initial = speed;
   return in;
@@ -209,7 +208,6 @@ VehicleModelInputs bogie_inputs(const BogieData& b, double speed, LinearCreep& l
   g.curvature_a = b.A;
   g.curvature_b = b.B;
   g.rail_raise = lc.penetration;
-  g.kinematic = true;
   in.geometry = std::make_shared<ConicalTestSource>(g);
   in.speed.initial = speed;
   return in;

@@ -14,6 +14,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/profile.hpp"
 #include "vehicle_model_impl.hpp"
 
 namespace ferro::vehicle {
@@ -588,9 +590,11 @@ std::vector<double> VehicleModel::static_equilibrium(double t) const {
   // Unknowns: positions, spin perturbations and series-damper deflections; residuals: the
   // accelerations of those positions and the rates of the other two.
   std::vector<int> unknown, residual;
+  // The longitudinal position of the whole vehicle is neutral (no longitudinal stiffness to the
+  // ground at zero velocity): the car body's x stays at its rest value and defines it.
   for (const BodyData& b : m.bodies) {
     for (std::size_t d = 0; d < 6; ++d) {
-      if (b.q[d] >= 0) {
+      if (b.q[d] >= 0 && !(d == 0 && b.kind == BodyKind::car_body)) {
         unknown.push_back(b.q[d]);
         residual.push_back(b.v[d]);
       }
@@ -655,11 +659,43 @@ std::vector<double> VehicleModel::static_equilibrium(double t) const {
 // ---------------------------------------------------------------------------------------------
 
 std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
-    const WheelRailSpec& spec, const std::string& /*base_dir*/) {
+    const WheelRailSpec& spec, const std::string& base_dir) {
+  const auto resolve = [&base_dir](const std::string& path) {
+    if (path.empty() || path.front() == '/' || base_dir.empty()) return path;
+    return base_dir + "/" + path;
+  };
+  require(finite_positive(spec.nominal_radius),
+          "wheel_rail.nominal_radius: the wheels' nominal rolling radius must be > 0 m");
+  if (spec.geometry == "conical") {
+    contact::ConicalContactParams p;
+    p.conicity = spec.conicity;
+    p.contact_half_distance = spec.contact_half_distance;
+    p.nominal_radius = spec.nominal_radius;
+    p.curvature_a = spec.conical_curvature_a;
+    p.curvature_b = spec.conical_curvature_b;
+    try {
+      p.validate();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(fmt::format("wheel_rail (geometry conical): {}", e.what()));
+    }
+    return std::make_shared<contact::ConicalContactSource>(p);
+  }
+  if (spec.geometry == "search") {
+    require(!spec.wheel_profile.empty(), "wheel_rail.wheel_profile: required by geometry search");
+    require(!spec.rail_profile.empty(), "wheel_rail.rail_profile: required by geometry search");
+    contact::WheelRailPairParams p;
+    p.track_gauge = spec.track_gauge;
+    p.flange_back_distance = spec.flange_back_distance;
+    p.flange_back_y = spec.flange_back_y;
+    p.nominal_radius = spec.nominal_radius;
+    p.rail_inclination = spec.rail_inclination;
+    auto pair = std::make_shared<const contact::WheelRailPair>(
+        contact::read_simpack_profile(resolve(spec.wheel_profile)),
+        contact::read_simpack_profile(resolve(spec.rail_profile)), p);
+    return std::make_shared<contact::SearchContactSource>(std::move(pair));
+  }
   throw std::invalid_argument(fmt::format(
-      "wheel_rail.geometry: '{}' cannot be built: the contact geometry sources (table, search, "
-      "imported, conical) are not part of this build yet",
-      spec.geometry));
+      "wheel_rail.geometry: '{}' is not available; allowed: search, conical", spec.geometry));
 }
 
 }  // namespace ferro::vehicle

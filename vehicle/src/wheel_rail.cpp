@@ -1,6 +1,6 @@
 // Wheel-rail coupling of one wheelset at every contact point the geometry source returns:
 // pose relative to the rails (with track irregularities), normal force from the penetration
-// (Hertz), exact creepages from the body and track-frame kinematics, tangential forces from the
+// (the contact layer's one Hertz entry point), exact creepages from the body and track-frame kinematics, tangential forces from the
 // registered model, forces and moments on the wheelset.
 //
 // References: Toumi (2016) eqs. (5)-(13) (Hertz), (24)-(27) (creepages as rigid slip over the
@@ -15,40 +15,11 @@
 #include <cmath>
 
 #include "ferro/contact/contact_patch.hpp"
-#include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/geometry/contact_sources.hpp"
 #include "ferro/vehicle/frames.hpp"
 #include "vehicle_model_impl.hpp"
 
 namespace ferro::vehicle {
-namespace {
-
-/// Normal force and Hertz patch of a contact from its penetration (curvatures, or the
-/// reference state of imported tables). normal_force = 0 when the point carries no load.
-contact::ContactPatch patch_from_penetration(const contact::WheelRailContact& c,
-                                             double contact_modulus) {
-  contact::ContactPatch patch;
-  patch.normal_force = 0.0;
-  if (!(c.penetration > 0.0)) return patch;
-  if (c.has_reference_state()) {
-    const double ratio = c.penetration / c.ref_penetration;
-    const double fn = c.ref_normal_force * ratio * std::sqrt(ratio);
-    const double scale = std::cbrt(fn / c.ref_normal_force);
-    patch = contact::elliptic_patch(c.ref_semi_axis_a * scale, c.ref_semi_axis_b * scale, fn);
-    patch.approach = c.penetration;
-    return patch;
-  }
-  const double a_curv = c.curvature_a;
-  const double b_curv = std::max(c.curvature_b, 1e-3 * a_curv);  // conformal floor as Hertz load
-  const double fn =
-      contact::hertz_load_from_approach(a_curv, b_curv, contact_modulus, c.penetration);
-  if (!(fn > 0.0)) return patch;
-  return contact::hertz_patch(contact::hertz_solve(a_curv, b_curv, fn, contact_modulus), a_curv,
-                              b_curv);
-}
-
-}  // namespace
-
 void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, BodyKinematics& k,
                       WheelResult* left_right) {
   thread_local std::vector<contact::WheelRailContact> points;
@@ -81,7 +52,8 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
   const Eigen::Vector3d rails_origin(0.0, irr.lateral, irr.vertical);
 
   for (const contact::WheelRailContact& c : points) {
-    const contact::ContactPatch patch = patch_from_penetration(c, model.contact_modulus);
+    const contact::ContactPatch patch =
+        contact::hertz_patch_from_penetration(c, model.contact_modulus);
     if (!(patch.normal_force > 0.0)) continue;  // wheel lift: no tangential model call
 
     const Eigen::Vector3d p = rails_origin + roll_rail(from_contact_frame(c.x, c.y, c.z));

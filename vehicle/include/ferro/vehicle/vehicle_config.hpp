@@ -86,9 +86,17 @@ struct WheelRailSpec {
   std::string imported_table; ///< CSV file for geometry "imported"
   double track_gauge = 1.435;           ///< [m]
   double flange_back_distance = 1.360;  ///< [m]
+  /// Flange-back position in wheel-profile coordinates [m]; NaN: the profile's smallest y
+  /// (EN 13715 / S1002 profiles: -0.070).
+  double flange_back_y = kNaN;
   double rail_inclination = 0.0;        ///< applied to the rail profile as read [rad]
   double conicity = kNaN;               ///< geometry "conical" [-]
   double contact_half_distance = kNaN;  ///< e, geometry "conical" [m]
+  double conical_curvature_a = kNaN;    ///< A, geometry "conical" [1/m]
+  double conical_curvature_b = kNaN;    ///< B, geometry "conical" [1/m]
+  /// Nominal rolling radius r0 of the wheels the geometry is built for [m] (the wheelsets'
+  /// nominal_rolling_radius; required by every geometry).
+  double nominal_radius = kNaN;
   double friction = 0.3;                ///< mu [-]
   double shear_modulus = 82.0e9;        ///< wheel and rail G [Pa]
   double poisson = 0.28;                ///< wheel and rail nu [-]

@@ -141,7 +141,8 @@ class VehicleModel final : public OdeSystem {
   /// Static (steady, at the speed and track position of time t) equilibrium: damped Newton on
   /// the accelerations, spin accelerations and series-damper rates with every velocity zero,
   /// from rest_state() with the wheelsets lowered onto the rails. Numerical Jacobian, minimum-norm
-  /// steps (neutral directions, e.g. the longitudinal position at V = 0, stay put). Throws
+  /// steps (weakly determined directions stay near rest); the car body's x is held at rest (it
+  /// defines the neutral longitudinal position of the whole vehicle). Throws
   /// std::runtime_error when it does not converge.
   [[nodiscard]] std::vector<double> static_equilibrium(double t = 0.0) const;
 
