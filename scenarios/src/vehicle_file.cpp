@@ -255,8 +255,8 @@ void check_bump_stop_table(MapReader& r, const SuspensionElementSpec& s, const s
 const std::vector<std::string>& wheel_rail_keys() {
   static const std::vector<std::string> keys = {
       "geometry",     "wheel_profile", "rail_profile",       "imported_table",
-      "track_gauge",  "flange_back_distance", "rail_inclination", "conicity",
-      "contact_half_distance", "friction", "shear_modulus", "poisson",
+      "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
+      "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
       "reduction_table", "regularisation_speed"};
   return keys;
@@ -278,9 +278,12 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   }
   w.track_gauge = r.number_or("track_gauge", w.track_gauge);
   w.flange_back_distance = r.number_or("flange_back_distance", w.flange_back_distance);
+  w.flange_back_y = r.number_or("flange_back_y", w.flange_back_y);
   w.rail_inclination = r.number_or("rail_inclination", w.rail_inclination);
   w.conicity = r.number_or("conicity", w.conicity);
   w.contact_half_distance = r.number_or("contact_half_distance", w.contact_half_distance);
+  w.conical_curvature_a = r.number_or("conical_curvature_a", w.conical_curvature_a);
+  w.conical_curvature_b = r.number_or("conical_curvature_b", w.conical_curvature_b);
   w.friction = r.number_or("friction", w.friction);
   if (!(w.friction > 0.0 && w.friction <= 2.0))
     r.fail("friction", fmt::format("must lie in (0, 2], got {}", w.friction));
@@ -353,6 +356,10 @@ void check_wheel_rail(const MapReader& r, const vehicle::WheelRailSpec& w) {
     need(w.conicity > 0.0, "conicity", "the equivalent conicity (> 0)");
     need(w.contact_half_distance > 0.0, "contact_half_distance",
          "half the lateral distance between the contact points (> 0 m)");
+    need(w.conical_curvature_a > 0.0, "conical_curvature_a",
+         "the longitudinal relative curvature A of the Hertz contact (> 0 1/m)");
+    need(w.conical_curvature_b > 0.0, "conical_curvature_b",
+         "the lateral relative curvature B of the Hertz contact (> 0 1/m)");
   }
   if (!(w.track_gauge > 1.0 && w.track_gauge < 2.0))
     r.fail("track_gauge", fmt::format("must lie in (1, 2) m, got {}", w.track_gauge));
@@ -382,6 +389,7 @@ VehicleConfig read_vehicle(MapReader& r) {
   v.wheel_rail.track_gauge = g.number_or("track_gauge", v.wheel_rail.track_gauge);
   if (!std::isnan(wheelset.flange_back_distance))
     v.wheel_rail.flange_back_distance = wheelset.flange_back_distance;
+  v.wheel_rail.nominal_radius = wheelset.rolling_radius;
 
   // Bodies: car body at the vehicle reference point, bogies and wheelsets front first.
   v.bodies.push_back(
