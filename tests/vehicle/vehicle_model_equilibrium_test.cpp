@@ -3,7 +3,9 @@
 // speed the lateral wheel forces sum to zero and the wheel loads stay equal.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "ferro/contact/geometry/contact_sources.hpp"
@@ -52,12 +54,15 @@ void expect_equal_loads(const VehicleModel& m, double t, const std::vector<doubl
   // Wheel loads are normal to the track plane: the weight share scaled by the specific force
   // normal to that plane (g on straight track, g / cos(phi) at balance in a canted curve).
   const double share = ManchesterMasses::total() * normal_specific_force / 8.0;
+  double worst = 0.0;
   for (int w = 1; w <= 4; ++w) {
     for (const char* side : {"left", "right"}) {
       const std::string name = "wheelset_" + std::to_string(w) + "." + side + ".Q";
       EXPECT_NEAR(signal(m, s, name) / share, 1.0, rel_tol) << name;
+      worst = std::max(worst, std::abs(signal(m, s, name) / share - 1.0));
     }
   }
+  std::printf("largest wheel-load error against the weight share: %.2e\n", worst);
 }
 
 TEST(VehicleModelEquilibrium, straight_track_wheel_loads_equal_the_weight_share) {
@@ -109,9 +114,12 @@ TEST(VehicleModelEquilibrium, canted_curve_at_balance_speed) {
     sum_lateral += -signal(m, s, p + ".left.Y") + signal(m, s, p + ".right.Y");
     const double load = signal(m, s, p + ".left.Q") + signal(m, s, p + ".right.Q");
     EXPECT_NEAR(load / (2.0 * share), 1.0, kLoadTol) << p;
+    std::printf("%s: load / share - 1 = %.2e\n", p.c_str(), load / (2.0 * share) - 1.0);
   }
   const double weight = ManchesterMasses::total() * kG;
   EXPECT_LT(std::abs(sum_lateral) / weight, kLateralTol) << "sum Y = " << sum_lateral;
+  std::printf("balance speed %.3f m/s: sum of lateral wheel forces / weight = %.2e\n", v_bal,
+              sum_lateral / weight);
 }
 
 }  // namespace

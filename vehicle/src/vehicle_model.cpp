@@ -603,9 +603,20 @@ std::vector<double> VehicleModel::static_equilibrium(double t) const {
       unknown.push_back(b.spin);
       residual.push_back(b.spin);
     }
-    // Lower a wheelset onto the rails by a typical Hertz approach so that Newton starts with
+    // Lower a wheelset onto the rails (touching height of the centred pose, found by bisection
+    // on the source's contacts, then a typical Hertz approach) so that Newton starts with
     // contact stiffness.
-    if (b.has_contact && b.q[2] >= 0) x[static_cast<std::size_t>(b.q[2])] = -1.0e-4;
+    if (b.has_contact && b.q[2] >= 0) {
+      std::vector<contact::WheelRailContact> points;
+      double lifted = -0.02, penetrating = 0.02;  // pose.vertical bracket [m]
+      for (int it = 0; it < 40; ++it) {
+        contact::WheelsetPose pose;
+        pose.vertical = 0.5 * (lifted + penetrating);
+        m.in.geometry->contacts(pose, points);
+        (points.empty() ? lifted : penetrating) = pose.vertical;
+      }
+      x[static_cast<std::size_t>(b.q[2])] = -(penetrating + 1.0e-4);
+    }
   }
   for (const ElementData& e : m.elements) {
     if (e.state >= 0) {

@@ -1,0 +1,73 @@
+// The multibody vehicle: one right-hand side and one simulated second of Manchester vehicle 1
+// at 55 m/s on straight track (2 mm initial lateral offset of the leading wheelset), CVODE BDF
+// with the band solver, rtol 1e-4, atol 1e-6. The CPU column of "second" is the CPU time per
+// simulated second.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "../tests/vehicle/manchester_config.hpp"
+#include "ferro/vehicle/integrator.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
+
+namespace {
+
+using namespace ferro::vehicle;
+
+std::unique_ptr<VehicleModel> manchester(const std::string& tangential) {
+  VehicleModelInputs in;
+  in.config = testing::manchester_vehicle1(9.81);
+  WheelRailSpec& wr = in.config.wheel_rail;
+  wr.geometry = "conical";
+  wr.nominal_radius = 0.46;
+  wr.conicity = 0.1;
+  wr.contact_half_distance = 0.75;
+  wr.conical_curvature_a = 1.0 / 0.92;
+  wr.conical_curvature_b = 1.0 / 0.6;
+  wr.tangential_model = tangential;
+  in.geometry = make_geometry_source(wr, FERRO_DATA_DIR);
+  in.speed.initial = 55.0;
+  return std::make_unique<VehicleModel>(std::move(in));
+}
+
+void BM_vehicle_rhs(benchmark::State& state, const std::string& tangential) {
+  const auto m = manchester(tangential);
+  const auto x = m->static_equilibrium();
+  std::vector<double> xdot(x.size());
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(m->rhs(0.0, x, xdot));
+  }
+}
+
+void BM_vehicle_second(benchmark::State& state, const std::string& tangential) {
+  const auto m = manchester(tangential);
+  auto x0 = m->static_equilibrium();
+  x0[static_cast<std::size_t>(m->state_index("wheelset_1", Dof::y))] += 0.002;
+  IntegratorSettings s;
+  s.method = "cvode_bdf";
+  s.linear_solver = "band";
+  s.rtol = 1e-4;
+  s.atol = 1e-6;
+  s.max_step = 0.01;
+  const auto grid = output_grid(0.0, 1.0, 0.01);
+  for (auto _ : state) {
+    auto integrator = make_integrator(s);
+    const auto r = integrator->integrate(*m, x0, grid, [](double, auto) { return true; });
+    if (r.status != IntegrationResult::Status::kCompleted) state.SkipWithError(r.message.c_str());
+    state.counters["steps"] = static_cast<double>(r.steps);
+    state.counters["rhs"] = static_cast<double>(r.rhs_evaluations);
+  }
+}
+
+BENCHMARK_CAPTURE(BM_vehicle_rhs, chopaya, std::string("chopaya"));
+BENCHMARK_CAPTURE(BM_vehicle_rhs, fastsim, std::string("fastsim"));
+BENCHMARK_CAPTURE(BM_vehicle_second, chopaya, std::string("chopaya"))
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_vehicle_second, fastsim, std::string("fastsim"))
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,167 @@
+// Hard cases of the multibody vehicle stay bounded and run without stalling: a wheelset
+// dropped onto the rails (both wheels lifted, Fn = 0), a severe twist defect (a wheel lifts),
+// and friction 0.05 and 0.7 through a lateral alignment defect. Crawling at 0.5 m/s is in
+// slow/ (about a minute of CPU).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "ferro/track/irregularity.hpp"
+#include "ferro/vehicle/integrator.hpp"
+#include "manchester_config.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
+
+namespace ferro::vehicle {
+namespace {
+
+constexpr double kG = 9.81;
+
+/// Manchester vehicle 1 on conical wheels (geometry "conical") or on S1002 / UIC60 profiles
+/// with the online contact search (geometry "search").
+VehicleModelInputs manchester(double speed, const std::string& geometry = "conical") {
+  VehicleModelInputs in;
+  in.config = testing::manchester_vehicle1(kG);
+  WheelRailSpec& wr = in.config.wheel_rail;
+  wr.geometry = geometry;
+  wr.nominal_radius = 0.46;
+  wr.conicity = 0.1;
+  wr.contact_half_distance = 0.75;
+  wr.conical_curvature_a = 1.0 / (2.0 * 0.46);
+  wr.conical_curvature_b = 1.0 / (2.0 * 0.3);
+  wr.wheel_profile = "profiles/MBench_S1002_v3.prw";
+  wr.rail_profile = "profiles/MBench_UIC60_v3.prr";
+  wr.flange_back_y = -0.070;
+  in.geometry = make_geometry_source(wr, FERRO_DATA_DIR);
+  in.speed.initial = speed;
+  return in;
+}
+
+std::shared_ptr<track::Track> straight_with(std::shared_ptr<const track::Irregularity> irr,
+                                            double cant = 0.0) {
+  track::TrackDesign design;
+  if (cant == 0.0) {
+    design.sections.push_back({track::SectionKind::kStraight, 500.0});
+  } else {
+    track::SectionSpec curve{track::SectionKind::kCurve, 500.0};
+    curve.radius = 300.0;
+    curve.cant = cant;
+    design.sections.push_back(curve);
+  }
+  return std::make_shared<track::Track>(track::Alignment(design), std::move(irr));
+}
+
+struct SimRun {
+  IntegrationResult result;
+  double max_abs_lateral = 0.0;      // largest |y| of any wheelset [m]
+  double min_wheel_normal = 1e300;   // smallest wheel normal force seen [N]
+  double max_wheel_normal = 0.0;
+};
+
+SimRun simulate(const VehicleModel& m, std::vector<double> x0, double t_end) {
+  IntegratorSettings s;
+  s.method = "cvode_bdf";
+  s.rtol = 1e-6;
+  s.atol = 1e-8;
+  s.max_step = 0.01;
+  s.linear_solver = "band";
+  auto integrator = make_integrator(s);
+  SimRun run;
+  const auto info = m.signal_info();
+  std::vector<double> sig(info.size());
+  const auto observer = [&](double t, std::span<const double> x) {
+    m.signals(t, x, sig);
+    for (std::size_t i = 0; i < info.size(); ++i) {
+      const std::string& n = info[i].name;
+      if (n.size() > 13 && n.compare(n.size() - 13, 13, ".normal_force") == 0) {
+        run.min_wheel_normal = std::min(run.min_wheel_normal, sig[i]);
+        run.max_wheel_normal = std::max(run.max_wheel_normal, sig[i]);
+      }
+    }
+    for (std::size_t w = 1; w <= 4; ++w) {
+      const int iy = m.state_index("wheelset_" + std::to_string(w), Dof::y);
+      if (iy >= 0) {
+        run.max_abs_lateral =
+            std::max(run.max_abs_lateral, std::abs(x[static_cast<std::size_t>(iy)]));
+      }
+    }
+    return true;
+  };
+  run.result = integrator->integrate(m, x0, output_grid(0.0, t_end, 0.01), observer);
+  return run;
+}
+
+// Static wheel load of the Manchester vehicle [N]; the bounds below are physical envelopes:
+// no wheel may carry more than twice its share in these mild cases, and lateral excursions
+// stay within the flangeway (~7 mm; the cone has no flange, so 10 mm means runaway).
+constexpr double kShare = testing::ManchesterMasses::total() * kG / 8.0;
+constexpr double kFlangeway = 0.010;
+
+TEST(VehicleModelHardCases, crawling_at_half_a_metre_per_second) {
+  const VehicleModel m(manchester(0.5));
+  const SimRun r = simulate(m, m.static_equilibrium(), 0.5);
+  ASSERT_EQ(r.result.status, IntegrationResult::Status::kCompleted) << r.result.message;
+  EXPECT_LT(r.max_abs_lateral, 1e-4);
+  EXPECT_GT(r.min_wheel_normal, 0.5 * kShare);
+  EXPECT_LT(r.max_wheel_normal, 2.0 * kShare);
+}
+
+TEST(VehicleModelHardCases, wheelset_dropped_onto_the_rails_lands_and_settles) {
+  // One wheelset, primary springs to the track frame, released 2 mm above the rails: both
+  // wheels lifted (Fn = 0, no tangential model call) until it lands.
+  VehicleModelInputs in = manchester(20.0);
+  in.selection.scope = "wheelset";
+  const VehicleModel m(std::move(in));
+  auto x0 = m.rest_state();
+  x0[static_cast<std::size_t>(m.state_index("wheelset_1", Dof::z))] = 0.002;
+  const SimRun r = simulate(m, x0, 1.0);
+  ASSERT_EQ(r.result.status, IntegrationResult::Status::kCompleted) << r.result.message;
+  EXPECT_EQ(r.min_wheel_normal, 0.0);  // it flew
+  EXPECT_LT(r.max_abs_lateral, 1e-3);
+  // Settled: the final height is the static one within 0.1 mm.
+  const auto eq = m.static_equilibrium();
+  const auto iz = static_cast<std::size_t>(m.state_index("wheelset_1", Dof::z));
+  EXPECT_NEAR(r.result.state[iz], eq[iz], 1e-4);
+}
+
+TEST(VehicleModelHardCases, severe_twist_lifts_a_wheel_without_stalling) {
+  // Cross-level defect of 100 mm over 5 m (twist up to 63 mm/m, far beyond EN 14363's limits)
+  // under the leading bogie at 10 m/s. Conical wheels have no flange: the lateral bound is the
+  // cone's own (the cross-level tilts the wheelsets and gravity pushes them sideways).
+  track::IsolatedDefectSpec d;
+  d.channel = track::IrregularityChannel::kCrossLevel;
+  d.amplitude = 0.100;
+  d.wavelength = 5.0;
+  d.start_s = 105.0;
+  VehicleModelInputs in = manchester(10.0);
+  in.track = straight_with(std::make_shared<track::IsolatedDefect>(d));
+  in.start_position = 90.0;
+  const VehicleModel m(std::move(in));
+  const SimRun r = simulate(m, m.static_equilibrium(), 2.0);
+  ASSERT_EQ(r.result.status, IntegrationResult::Status::kCompleted) << r.result.message;
+  EXPECT_EQ(r.min_wheel_normal, 0.0);  // a wheel lifted
+  EXPECT_LT(r.max_abs_lateral, 5.0 * kFlangeway);
+}
+
+TEST(VehicleModelHardCases, low_and_high_friction_through_an_alignment_defect) {
+  track::IsolatedDefectSpec d;
+  d.channel = track::IrregularityChannel::kLateral;
+  d.amplitude = 0.004;
+  d.wavelength = 10.0;
+  d.start_s = 110.0;
+  for (double mu : {0.05, 0.7}) {
+    VehicleModelInputs in = manchester(30.0);
+    in.config.wheel_rail.friction = mu;
+    in.track = straight_with(std::make_shared<track::IsolatedDefect>(d));
+    in.start_position = 100.0;
+    const VehicleModel m(std::move(in));
+    const SimRun r = simulate(m, m.static_equilibrium(), 1.5);
+    ASSERT_EQ(r.result.status, IntegrationResult::Status::kCompleted)
+        << "mu " << mu << ": " << r.result.message;
+    EXPECT_LT(r.max_abs_lateral, kFlangeway) << "mu " << mu;
+    EXPECT_GT(r.max_abs_lateral, 1e-4) << "mu " << mu << ": the defect must excite the vehicle";
+  }
+}
+
+}  // namespace
+}  // namespace ferro::vehicle
