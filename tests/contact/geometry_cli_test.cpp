@@ -63,7 +63,7 @@ TEST(geometry_cli, batch_csv_in_csv_out) {
   const std::string out = (dir / "ferro_geometry_batch_out.csv").string();
   std::ofstream(in)
       << "case,y_mm,roll_rad,yaw_rad,load_n\n1,0,0,0,20000\n11,5.0,-0.0003554,0.012,20000\n";
-  const CliRun r = run("geometry search " + kPair + " --batch " + in + " --out " + out);
+  const CliRun r = run("geometry search " + kPair + " --batch " + in + " -o " + out);
   ASSERT_EQ(r.code, 0) << r.out;
   std::ifstream f(out);
   std::string line;
@@ -97,8 +97,8 @@ TEST(geometry_cli, pair_yaml_writes_table_diagram_and_conicity) {
   const auto dir = std::filesystem::temp_directory_path() / "ferro_geometry_pair";
   std::filesystem::remove_all(dir);
   const CliRun r =
-      run("geometry " + std::string(FERRO_DATA_DIR) +
-          "/manchester_contact_benchmark_a22.yaml --no-plot --out-dir " + dir.string());
+      run("geometry pair " + std::string(FERRO_DATA_DIR) +
+          "/manchester_contact_benchmark_a22.yaml --no-plots -o " + dir.string());
   ASSERT_EQ(r.code, 0) << r.out;
   for (const char* f : {"contact_table.h5", "contact_points.csv", "conicity.csv", "profiles.csv"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
@@ -108,6 +108,6 @@ TEST(geometry_cli, pair_yaml_writes_table_diagram_and_conicity) {
   int rows = 0;
   while (std::getline(con, line)) ++rows;
   EXPECT_EQ(rows, 21);  // header + amplitudes 0.5 .. 10 mm
-  const CliRun bad = run("geometry /nonexistent/pair.yaml --no-plot");
+  const CliRun bad = run("geometry pair /nonexistent/pair.yaml --no-plots");
   EXPECT_EQ(bad.code, 2);
 }

@@ -108,7 +108,7 @@ TEST(contact_cli_curve, thesis_spheres_all_models) {
   const fs::path dir = scratch("contact_cli_curve");
   const std::string yaml =
       std::string(FERRO_SOURCE_DIR) + "/scenarios/cases/contact/thesis_spheres.yaml";
-  const CliRun out = run("contact curve '" + yaml + "' --out '" + dir.string() + "'");
+  const CliRun out = run("contact curve '" + yaml + "' -o '" + dir.string() + "'");
   if (out.code == 1 && out.out.find("no Python with matplotlib") != std::string::npos) {
     GTEST_SKIP() << "matplotlib unavailable: " << out.out;
   }
@@ -141,7 +141,7 @@ TEST(contact_cli_patch, spheres_and_two_lobes) {
   for (const char* name : {"thesis_spheres", "semi_hertz_two_lobes"}) {
     const std::string yaml =
         std::string(FERRO_SOURCE_DIR) + "/scenarios/cases/contact/" + name + ".yaml";
-    const CliRun out = run("contact patch '" + yaml + "' --no-png --out '" + dir.string() + "'");
+    const CliRun out = run("contact patch '" + yaml + "' --no-plots -o '" + dir.string() + "'");
     ASSERT_EQ(out.code, 0) << out.out;
     EXPECT_TRUE(fs::exists(dir / (std::string(name) + "_patch.csv")));
     const bool two = std::string(name) == "semi_hertz_two_lobes";
