@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <stdexcept>
 
 namespace ferro::contact {
@@ -106,6 +107,29 @@ ReductionFactors KijTable::at_patch(const ContactPatch& patch,
 }
 
 ReductionFactors KijTable::at(const std::vector<double>& point) const {
+  return interpolate(point, k11_, k22_, k23_, k33_);
+}
+
+void KijTable::set_first_pass(std::vector<double> k11, std::vector<double> k22,
+                              std::vector<double> k23, std::vector<double> k33) {
+  // Same checks as the main set: a table built from them must be valid.
+  const KijTable check(names_, axes_, k11, k22, k23, k33);
+  k11_first_ = std::move(k11);
+  k22_first_ = std::move(k22);
+  k23_first_ = std::move(k23);
+  k33_first_ = std::move(k33);
+}
+
+ReductionFactors KijTable::first_pass_at(const std::vector<double>& point) const {
+  if (!has_first_pass()) throw std::logic_error("K_ij table: no first-pass factors");
+  return interpolate(point, k11_first_, k22_first_, k23_first_, k33_first_);
+}
+
+ReductionFactors KijTable::interpolate(const std::vector<double>& point,
+                                       const std::vector<double>& k11,
+                                       const std::vector<double>& k22,
+                                       const std::vector<double>& k23,
+                                       const std::vector<double>& k33) const {
   const std::size_t n = axes_.size();
   if (point.size() != n) {
     throw std::invalid_argument(
@@ -156,10 +180,10 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
       index += (lower[i] + (upper ? 1 : 0)) * stride[i];
     }
     if (w == 0.0) continue;
-    out.k11 += w * k11_[index];
-    out.k22 += w * k22_[index];
-    out.k23 += w * k23_[index];
-    out.k33 += w * (k33_.empty() ? 1.0 : k33_[index]);
+    out.k11 += w * k11[index];
+    out.k22 += w * k22[index];
+    out.k23 += w * k23[index];
+    out.k33 += w * (k33.empty() ? 1.0 : k33[index]);
   }
   return out;
 }
@@ -211,9 +235,9 @@ KijTable KijTable::read_hdf5(const std::string& path) {
     if (attr.id < 0 || H5Aread(attr.id, H5T_NATIVE_INT, &version) < 0) {
       throw std::invalid_argument(fmt::format("{}: missing root attribute 'schema_version'", path));
     }
-    if (version != 1) {
-      throw std::invalid_argument(
-          fmt::format("{}: schema_version {} not supported (expected 1)", path, version));
+    if (version != 1 && version != kSchemaVersion) {
+      throw std::invalid_argument(fmt::format(
+          "{}: schema_version {} not supported (expected 1 or {})", path, version, kSchemaVersion));
     }
   }
   Handle group(H5Gopen2(file.id, "axes", H5P_DEFAULT), H5Gclose);
@@ -265,8 +289,44 @@ KijTable KijTable::read_hdf5(const std::string& path) {
     }
     return v;
   };
-  return KijTable(names, axes, read_k("K11", false), read_k("K22", false), read_k("K23", false),
-                  read_k("K33", true));
+  KijTable table(names, axes, read_k("K11", false), read_k("K22", false), read_k("K23", false),
+                 read_k("K33", true));
+  // Version 2 additions (absent in version 1 files).
+  if (H5Lexists(file.id, "K11_first_pass", H5P_DEFAULT) > 0) {
+    table.set_first_pass(read_k("K11_first_pass", false), read_k("K22_first_pass", false),
+                         read_k("K23_first_pass", false), read_k("K33_first_pass", true));
+  }
+  if (H5Lexists(file.id, "provenance", H5P_DEFAULT) > 0) {
+    Handle prov(H5Gopen2(file.id, "provenance", H5P_DEFAULT), H5Gclose);
+    if (prov.id < 0) {
+      throw std::invalid_argument(fmt::format("{}: cannot open group '/provenance'", path));
+    }
+    std::vector<std::string> keys;
+    auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+      static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+      return 0;
+    };
+    hsize_t idx = 0;
+    H5Aiterate2(prov.id, H5_INDEX_NAME, H5_ITER_INC, &idx, collect, &keys);
+    std::map<std::string, std::string> entries;
+    for (const std::string& key : keys) {
+      Handle attr(H5Aopen(prov.id, key.c_str(), H5P_DEFAULT), H5Aclose);
+      Handle type(H5Aget_type(attr.id), H5Tclose);
+      if (H5Tget_class(type.id) != H5T_STRING || H5Tis_variable_str(type.id) > 0) {
+        throw std::invalid_argument(fmt::format(
+            "{}: '/provenance' attribute '{}' must be a fixed-length string", path, key));
+      }
+      std::string value(H5Tget_size(type.id), '\0');
+      if (H5Aread(attr.id, type.id, value.data()) < 0) {
+        throw std::invalid_argument(
+            fmt::format("{}: cannot read '/provenance' attribute '{}'", path, key));
+      }
+      value = value.substr(0, value.find('\0'));
+      entries[key] = value;
+    }
+    table.set_provenance(std::move(entries));
+  }
+  return table;
 }
 
 void KijTable::write_hdf5(const std::string& path) const {
@@ -278,7 +338,7 @@ void KijTable::write_hdf5(const std::string& path) const {
     Handle attr(
         H5Acreate2(file.id, "schema_version", H5T_NATIVE_INT, space.id, H5P_DEFAULT, H5P_DEFAULT),
         H5Aclose);
-    const int version = 1;
+    const int version = kSchemaVersion;
     H5Awrite(attr.id, H5T_NATIVE_INT, &version);
   }
   Handle group(H5Gcreate2(file.id, "axes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -306,6 +366,27 @@ void KijTable::write_hdf5(const std::string& path) const {
   Handle d22(write(file.id, "K22", k22_, dims), H5Dclose);
   Handle d23(write(file.id, "K23", k23_, dims), H5Dclose);
   if (!k33_.empty()) Handle d33(write(file.id, "K33", k33_, dims), H5Dclose);
+  if (has_first_pass()) {
+    Handle f11(write(file.id, "K11_first_pass", k11_first_, dims), H5Dclose);
+    Handle f22(write(file.id, "K22_first_pass", k22_first_, dims), H5Dclose);
+    Handle f23(write(file.id, "K23_first_pass", k23_first_, dims), H5Dclose);
+    if (!k33_first_.empty()) Handle f33(write(file.id, "K33_first_pass", k33_first_, dims), H5Dclose);
+  }
+  Handle prov(H5Gcreate2(file.id, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (prov.id < 0) throw std::runtime_error(fmt::format("{}: cannot create '/provenance'", path));
+  for (const auto& [key, value] : provenance_) {
+    Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type.id, std::max<std::size_t>(value.size(), 1));
+    H5Tset_strpad(type.id, H5T_STR_NULLPAD);
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    Handle attr(H5Acreate2(prov.id, key.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT),
+                H5Aclose);
+    const std::string stored = value.empty() ? std::string(1, '\0') : value;
+    if (attr.id < 0 || H5Awrite(attr.id, type.id, stored.data()) < 0) {
+      throw std::runtime_error(
+          fmt::format("{}: cannot write '/provenance' attribute '{}'", path, key));
+    }
+  }
 }
 
 }  // namespace ferro::contact
