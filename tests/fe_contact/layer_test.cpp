@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "ferro/contact/kalker_coefficients.hpp"
@@ -58,6 +59,8 @@ TEST(InterfaceLayer, k11_follows_series_estimate) {
     ASSERT_TRUE(r.converged);
     const double c11 = r.half_space.s11 / (g * a * b);
     const double estimate = layer_k11_estimate(g, c11, a, layer.thickness, layer.shear_modulus);
+    std::printf("h/G3 = %.2e m/Pa: C11(grid) %.3f, K11 %.4f, estimate %.4f (%+.1f %%)\n",
+                h_over_g3, c11, r.k.k11, estimate, 100.0 * (r.k.k11 / estimate - 1.0));
     EXPECT_NEAR(r.k.k11, estimate, kEstimateTolerance * estimate)
         << "h/G3 = " << h_over_g3 << " C11(grid) = " << c11;
     EXPECT_LT(r.k.k22, 1.0);
