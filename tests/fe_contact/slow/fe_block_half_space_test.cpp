@@ -27,9 +27,10 @@ const contact::Material kSteel = contact::Material::from_young(210.0e9, 0.28);
 // wider than the 2 % asked of a converged model (docs/VALIDATION.md, "FE reduction factors").
 constexpr double kSelfTolerance = 0.04;
 constexpr double kNeighbourTolerance = 0.12;
-// K_ij: a uniform far-field offset cancels in the rolling difference; what remains is the
-// near-field discretisation error of the tangential coefficients.
-constexpr double kKTolerance = 0.06;
+// K_ij: a uniform far-field offset cancels in the rolling difference and the near-field errors
+// of opposite sign largely cancel over the patch; bound: the 2 % asked of the half-space limit
+// (measured K11 = 1.017, K22 = 1.008 with this mesh).
+constexpr double kKTolerance = 0.02;
 
 TEST(FeBlock, boussinesq_cerruti_near_the_load) {
   fe_contact::FeBlockSpec s;
