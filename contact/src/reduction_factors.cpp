@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -107,6 +108,29 @@ ReductionFactors KijTable::at_patch(const ContactPatch& patch,
 }
 
 ReductionFactors KijTable::at(const std::vector<double>& point) const {
+  return interpolate(point, k11_, k22_, k23_, k33_);
+}
+
+void KijTable::set_first_pass(std::vector<double> k11, std::vector<double> k22,
+                              std::vector<double> k23, std::vector<double> k33) {
+  // Same checks as the main set: a table built from them must be valid.
+  const KijTable check(names_, axes_, k11, k22, k23, k33);
+  k11_first_ = std::move(k11);
+  k22_first_ = std::move(k22);
+  k23_first_ = std::move(k23);
+  k33_first_ = std::move(k33);
+}
+
+ReductionFactors KijTable::first_pass_at(const std::vector<double>& point) const {
+  if (!has_first_pass()) throw std::logic_error("K_ij table: no first-pass factors");
+  return interpolate(point, k11_first_, k22_first_, k23_first_, k33_first_);
+}
+
+ReductionFactors KijTable::interpolate(const std::vector<double>& point,
+                                       const std::vector<double>& k11,
+                                       const std::vector<double>& k22,
+                                       const std::vector<double>& k23,
+                                       const std::vector<double>& k33) const {
   const std::size_t n = axes_.size();
   if (point.size() != n) {
     throw std::invalid_argument(
@@ -157,10 +181,10 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
       index += (lower[i] + (upper ? 1 : 0)) * stride[i];
     }
     if (w == 0.0) continue;
-    out.k11 += w * k11_[index];
-    out.k22 += w * k22_[index];
-    out.k23 += w * k23_[index];
-    out.k33 += w * (k33_.empty() ? 1.0 : k33_[index]);
+    out.k11 += w * k11[index];
+    out.k22 += w * k22[index];
+    out.k23 += w * k23[index];
+    out.k33 += w * (k33.empty() ? 1.0 : k33[index]);
   }
   return out;
 }
@@ -196,9 +220,9 @@ KijTable KijTable::read_hdf5(const std::string& path) {
   const auto version = integer("/", "schema_version");
   if (!version)
     throw std::invalid_argument(fmt::format("{}: missing root attribute 'schema_version'", path));
-  if (*version != 1) {
-    throw std::invalid_argument(
-        fmt::format("{}: schema_version {} not supported (expected 1)", path, *version));
+  if (*version != 1 && *version != kSchemaVersion) {
+    throw std::invalid_argument(fmt::format(
+        "{}: schema_version {} not supported (expected 1 or {})", path, *version, kSchemaVersion));
   }
   if (!file.exists("/axes"))
     throw std::invalid_argument(fmt::format("{}: missing group '/axes'", path));
@@ -241,13 +265,31 @@ KijTable KijTable::read_hdf5(const std::string& path) {
     }
     return v;
   };
-  return KijTable(names, axes, read_k("K11", false), read_k("K22", false), read_k("K23", false),
-                  read_k("K33", true));
+  KijTable table(names, axes, read_k("K11", false), read_k("K22", false), read_k("K23", false),
+                 read_k("K33", true));
+  // Version 2 additions (absent in version 1 files).
+  if (file.exists("K11_first_pass")) {
+    table.set_first_pass(read_k("K11_first_pass", false), read_k("K22_first_pass", false),
+                         read_k("K23_first_pass", false), read_k("K33_first_pass", true));
+  }
+  if (file.exists("/provenance")) {
+    std::map<std::string, std::string> entries;
+    try {
+      for (const std::string& key : file.attribute_names("/provenance")) {
+        entries[key] = file.string_attribute("/provenance", key);
+      }
+    } catch (const io::Hdf5Error& e) {
+      throw std::invalid_argument(fmt::format(
+          "{}: '/provenance' attributes must be fixed-length strings ({})", path, e.what()));
+    }
+    table.set_provenance(std::move(entries));
+  }
+  return table;
 }
 
 void KijTable::write_hdf5(const std::string& path) const {
   io::H5File file = io::H5File::create(path);
-  file.set_attribute("/", "schema_version", 1);
+  file.set_attribute("/", "schema_version", kSchemaVersion);
   file.ensure_group("/axes");
   io::Dims dims;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
@@ -260,6 +302,14 @@ void KijTable::write_hdf5(const std::string& path) const {
   file.write_array("/K22", k22_, dims);
   file.write_array("/K23", k23_, dims);
   if (!k33_.empty()) file.write_array("/K33", k33_, dims);
+  if (has_first_pass()) {
+    file.write_array("/K11_first_pass", k11_first_, dims);
+    file.write_array("/K22_first_pass", k22_first_, dims);
+    file.write_array("/K23_first_pass", k23_first_, dims);
+    if (!k33_first_.empty()) file.write_array("/K33_first_pass", k33_first_, dims);
+  }
+  file.ensure_group("/provenance");
+  for (const auto& [key, value] : provenance_) file.set_attribute("/provenance", key, value);
   file.close();
 }
 

@@ -50,6 +50,7 @@ void add_mim_commands(CLI::App& app, VerbHandler& handler);
 /// After add_contact_commands: contact mim-table.
 void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
+void add_fe_kij_commands(CLI::App& app, VerbHandler& handler);   // fe-kij
 
 }  // namespace ferro::cli
 

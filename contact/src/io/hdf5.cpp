@@ -202,6 +202,19 @@ std::vector<std::string> H5File::members(const std::string& group) const {
   return out;
 }
 
+std::vector<std::string> H5File::attribute_names(const std::string& object) const {
+  const std::string what = "list attributes of " + object;
+  Id obj(check_id(H5Oopen(id_, object.c_str(), H5P_DEFAULT), what, path_), H5Oclose);
+  std::vector<std::string> out;
+  const auto collect = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+    return 0;
+  };
+  hsize_t index = 0;
+  check(H5Aiterate2(obj.get(), H5_INDEX_NAME, H5_ITER_INC, &index, collect, &out), what, path_);
+  return out;
+}
+
 namespace {
 
 void put_attribute(hid_t file, const std::string& path, const std::string& object,

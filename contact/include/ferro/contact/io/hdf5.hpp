@@ -59,6 +59,8 @@ class H5File {
   void ensure_group(const std::string& group);
   /// Names of the links in `group`, in name order.
   [[nodiscard]] std::vector<std::string> members(const std::string& group) const;
+  /// Names of the attributes of `object`, in name order.
+  [[nodiscard]] std::vector<std::string> attribute_names(const std::string& object) const;
 
   /// Scalar attributes on an object (group or dataset; "/" for the root), replacing any of the
   /// same name. File types: UTF-8 string, float64, int64, int32.
