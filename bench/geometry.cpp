@@ -3,11 +3,15 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "ferro/contact/geometry/contact_sources.hpp"
 #include "ferro/contact/geometry/contact_table.hpp"
+#include "ferro/contact/hertz.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 
 namespace fc = ferro::contact;
@@ -115,6 +119,141 @@ void BM_GeometryVerticalLoadSolve(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_GeometryVerticalLoadSolve)->Unit(benchmark::kMicrosecond);
+
+// Normal patch of one contact point from its penetration (the dynamics' Hertz entry point):
+// arg 0 = curvatures (tabulated exact Hertz relation), 1 = reference state (imported tables).
+// Baseline: the exact load-driven Hertz solve (Newton on the elliptic integrals) in the same run.
+void BM_HertzPatchFromPenetration(benchmark::State& state) {
+  const double estar = 2.0 * 82e9 * 1.28 / (2.0 * (1.0 - 0.28 * 0.28));
+  std::vector<fc::WheelRailContact> pts(1024);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (auto& c : pts) {
+    c.curvature_a = 1.0 + u(rng);
+    c.curvature_b = std::exp(8.0 * u(rng) - 2.0);
+    c.penetration = 10e-6 + 100e-6 * u(rng);
+    if (state.range(0) == 1) {
+      c.ref_normal_force = 60e3;
+      c.ref_penetration = 80e-6;
+      c.ref_semi_axis_a = 6e-3;
+      c.ref_semi_axis_b = 4e-3;
+    }
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fc::hertz_patch_from_penetration(pts[i++ & 1023], estar));
+  }
+}
+BENCHMARK(BM_HertzPatchFromPenetration)->Arg(0)->Arg(1);
+
+void BM_HertzSolveExact(benchmark::State& state) {
+  const double estar = 2.0 * 82e9 * 1.28 / (2.0 * (1.0 - 0.28 * 0.28));
+  std::vector<double> b(1024);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (auto& v : b) v = std::exp(8.0 * u(rng) - 2.0);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(fc::hertz_solve(1.3, b[i++ & 1023], 5e4, estar));
+  }
+}
+BENCHMARK(BM_HertzSolveExact);
+
+// Both wheels of the analytic conical source (allocation-free after the first call).
+void BM_ConicalSource(benchmark::State& state) {
+  fc::ConicalContactParams q;
+  q.conicity = 0.2;
+  q.contact_half_distance = 0.7465;
+  q.nominal_radius = 0.46;
+  q.curvature_a = 1.087;
+  q.curvature_b = 1.67;
+  const fc::ConicalContactSource src(q);
+  const auto ys = random_shifts(1024);
+  std::vector<fc::WheelRailContact> out;
+  out.reserve(4);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    src.contacts(fc::WheelsetPose{0.1 * ys[i++ & 1023], 1e-4, 0.0, 0.0}, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_ConicalSource);
+
+// Multi-point table over lateral shift and roll (the default grid: +-12 mm by 0.1 mm, +-12 mrad
+// by 1 mrad, 6025 nodes), S1002 / UIC60 1:40: one build, then look-ups of both wheels at random
+// off-grid poses with 20-120 um penetration.
+const fc::MultiPointContactTable& a22_multi_point_table() {
+  static const fc::MultiPointContactTable t =
+      fc::MultiPointContactTable::build(a22_pair(), fc::MultiPointTableParams{});
+  return t;
+}
+
+void BM_MultiPointTableBuild(benchmark::State& state) {
+  for (auto _ : state) {
+    const fc::MultiPointContactTable t =
+        fc::MultiPointContactTable::build(a22_pair(), fc::MultiPointTableParams{});
+    state.counters["nodes"] = static_cast<double>(t.node_count());
+    state.counters["candidates"] = static_cast<double>(t.candidate_count());
+  }
+}
+BENCHMARK(BM_MultiPointTableBuild)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_MultiPointTableLookup(benchmark::State& state) {
+  const fc::MultiPointContactTable& t = a22_multi_point_table();
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> lat(-0.0115, 0.0115), roll(-0.0115, 0.0115),
+      depth(20e-6, 120e-6);
+  std::vector<fc::WheelsetPose> poses(256);
+  for (auto& p : poses) {
+    p = fc::touching_pose(a22_pair(), fc::WheelsetPose{lat(rng), 0.0, roll(rng), 0.0});
+    p.vertical += depth(rng);
+  }
+  std::vector<fc::WheelRailContact> out;
+  out.reserve(2 * fc::MultiPointContactTable::kMaxPointsPerWheel);
+  std::size_t i = 0, n = 0;
+  for (auto _ : state) {
+    t.contacts(poses[i++ & 255], out);
+    n += out.size();
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["points"] = static_cast<double>(n) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_MultiPointTableLookup);
+
+// The same poses through the online search (baseline for the table).
+void BM_SearchSourceLookup(benchmark::State& state) {
+  const fc::SearchContactSource src(std::make_shared<const fc::WheelRailPair>(a22_pair()));
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> lat(-0.0115, 0.0115), roll(-0.0115, 0.0115),
+      depth(20e-6, 120e-6);
+  std::vector<fc::WheelsetPose> poses(256);
+  for (auto& p : poses) {
+    p = fc::touching_pose(a22_pair(), fc::WheelsetPose{lat(rng), 0.0, roll(rng), 0.0});
+    p.vertical += depth(rng);
+  }
+  std::vector<fc::WheelRailContact> out;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    src.contacts(poses[i++ & 255], out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_SearchSourceLookup)->Unit(benchmark::kMicrosecond);
+
+// Imported one-point table (Cooperrider wagon CSV): both wheels, natural splines of 11 columns.
+void BM_ImportedTableLookup(benchmark::State& state) {
+  static const fc::ImportedContactTable t(std::string(FERRO_DATA_DIR) +
+                                          "/cooperrider_wagon/contact_table_s1002_uic60_1in40.csv");
+  const auto ys = random_shifts(1024);
+  std::vector<fc::WheelRailContact> out;
+  out.reserve(2);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    t.contacts(fc::WheelsetPose{ys[i++ & 1023], 5e-6, 1e-3, 0.0}, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_ImportedTableLookup);
 
 }  // namespace
 

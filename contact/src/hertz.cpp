@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -121,16 +122,24 @@ HertzCoefficients hertz_coefficients(double theta) {
   return out;
 }
 
-HertzSolution hertz_solve(double curvature_x, double curvature_y, double normal_force,
+HertzCurvatures hertz_curvatures(double curvature_x, double curvature_y, const char* where) {
+  if (std::isnan(curvature_x) || std::isnan(curvature_y) ||
+      !(std::max(curvature_x, curvature_y) > 0.0) ||
+      !std::isfinite(std::min(curvature_x, curvature_y))) {
+    throw std::invalid_argument(fmt::format(
+        "{}: relative curvatures A = {}, B = {} [1/m]: both must be finite and the larger > 0",
+        where, curvature_x, curvature_y));
+  }
+  double ax = std::min(curvature_x, kHertzMaxCurvature);
+  double ay = std::min(curvature_y, kHertzMaxCurvature);
+  const double floor = kHertzMinCurvatureRatio * std::max(ax, ay);
+  return HertzCurvatures{std::max(ax, floor), std::max(ay, floor)};
+}
+
+HertzSolution hertz_solve(double curvature_x_in, double curvature_y_in, double normal_force,
                           double contact_modulus) {
-  if (!(curvature_x > 0.0) || !std::isfinite(curvature_x)) {
-    throw std::invalid_argument(fmt::format(
-        "hertz_solve: curvature_x (A) must be finite and > 0 [1/m], got {}", curvature_x));
-  }
-  if (!(curvature_y > 0.0) || !std::isfinite(curvature_y)) {
-    throw std::invalid_argument(fmt::format(
-        "hertz_solve: curvature_y (B) must be finite and > 0 [1/m], got {}", curvature_y));
-  }
+  const HertzCurvatures cv = hertz_curvatures(curvature_x_in, curvature_y_in, "hertz_solve");
+  const double curvature_x = cv.x, curvature_y = cv.y;
   if (!(normal_force >= 0.0) || !std::isfinite(normal_force)) {
     throw std::invalid_argument(
         fmt::format("hertz_solve: normal_force must be finite and >= 0 [N], got {}", normal_force));
@@ -164,6 +173,107 @@ HertzSolution hertz_solve(double curvature_x, double curvature_y, double normal_
     s.approach = 0.0;
     s.peak_pressure = 0.0;
   }
+  return s;
+}
+
+namespace {
+
+// The Hertz relation at a given approach, as functions of u = ln(rho), rho = larger/smaller
+// curvature: k = minor/major, g1 = sqrt(E/(k^2 K)), g2 = (2 pi/3) sqrt(E)/(k K^1.5), so that
+// with S = A + B: major = g1 sqrt(delta/S), F = E* g2 delta^1.5 / sqrt(S) (from Johnson (3.64)-
+// (3.72): delta = a^2 k^2 S K / E, F = 2 pi E* k^2 S a^3 / (3 E)). All three are analytic in u
+// >= 0 (e^2 is analytic in rho - 1), so the stencil at u = 0 is closed by a ghost node
+// extrapolated quadratically (not by symmetry: k(|u|) has a kink at u = 0).
+class ApproachRelation {
+ public:
+  static constexpr int kNodes = 4096;
+  static constexpr double kUMax = 13.815510557964274;  // ln(1e6)
+  ApproachRelation() {
+    h_ = kUMax / (kNodes - 1);
+    inv_h_ = 1.0 / h_;
+    for (int i = 0; i < kNodes + 2; ++i) exact(i * h_, lnk_[i], lng1_[i], lng2_[i]);
+  }
+  static void exact(double u, double& lnk, double& lng1, double& lng2) {
+    const double k = hertz_axis_ratio(std::exp(u));
+    double kk = 0.5 * kPi, ee = 0.5 * kPi;
+    if (k < 1.0) {
+      const EllipticKE ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
+      kk = ke.first;
+      ee = ke.second;
+    }
+    lnk = std::log(k);
+    lng1 = 0.5 * (std::log(ee) - 2.0 * std::log(k) - std::log(kk));
+    lng2 = std::log(2.0 * kPi / 3.0) + 0.5 * std::log(ee) - std::log(k) - 1.5 * std::log(kk);
+  }
+  // Catmull-Rom cubic on the uniform grid; exact evaluation beyond the table.
+  void eval(double u, double& lnk, double& lng1, double& lng2) const {
+    if (!(u < kUMax)) {
+      exact(u, lnk, lng1, lng2);
+      return;
+    }
+    const double s = u * inv_h_;
+    const int i = static_cast<int>(s);
+    const double t = s - i;
+    const double t2 = t * t, t3 = t2 * t;
+    const double w0 = -0.5 * t3 + t2 - 0.5 * t;
+    const double w1 = 1.5 * t3 - 2.5 * t2 + 1.0;
+    const double w2 = -1.5 * t3 + 2.0 * t2 + 0.5 * t;
+    const double w3 = 0.5 * t3 - 0.5 * t2;
+    auto at = [&](const std::array<double, kNodes + 2>& f) {
+      const double before = i == 0 ? 3.0 * f[0] - 3.0 * f[1] + f[2] : f[i - 1];
+      return w0 * before + w1 * f[i] + w2 * f[i + 1] + w3 * f[i + 2];
+    };
+    lnk = at(lnk_);
+    lng1 = at(lng1_);
+    lng2 = at(lng2_);
+  }
+
+ private:
+  double h_ = 0.0, inv_h_ = 0.0;
+  std::array<double, kNodes + 2> lnk_{}, lng1_{}, lng2_{};
+};
+
+const ApproachRelation& approach_relation() {
+  static const ApproachRelation relation;
+  return relation;
+}
+
+}  // namespace
+
+HertzSolution hertz_solve_from_approach(double curvature_x_in, double curvature_y_in,
+                                        double approach, double contact_modulus) {
+  const HertzCurvatures cv =
+      hertz_curvatures(curvature_x_in, curvature_y_in, "hertz_solve_from_approach");
+  if (!(contact_modulus > 0.0) || !std::isfinite(contact_modulus)) {
+    throw std::invalid_argument(
+        fmt::format("hertz_solve_from_approach: contact_modulus must be finite and > 0 [Pa], "
+                    "got {}",
+                    contact_modulus));
+  }
+  if (std::isnan(approach) || std::isinf(approach)) {
+    throw std::invalid_argument(
+        fmt::format("hertz_solve_from_approach: approach must be finite [m], got {}", approach));
+  }
+  HertzSolution s;
+  if (!(approach > 0.0)) {
+    s.semi_axis_x = s.semi_axis_y = 0.0;
+    s.approach = 0.0;
+    s.peak_pressure = 0.0;
+    s.normal_force = 0.0;
+    return s;
+  }
+  const double small = std::min(cv.x, cv.y), large = std::max(cv.x, cv.y);
+  double lnk, lng1, lng2;
+  approach_relation().eval(std::log(large / small), lnk, lng1, lng2);
+  const double sum = cv.x + cv.y;
+  const double root = std::sqrt(approach / sum);
+  const double major = std::exp(lng1) * root;
+  const double minor = std::exp(lnk) * major;
+  s.normal_force = contact_modulus * std::exp(lng2) * approach * root;
+  s.semi_axis_x = cv.x <= cv.y ? major : minor;
+  s.semi_axis_y = cv.x <= cv.y ? minor : major;
+  s.approach = approach;
+  s.peak_pressure = 3.0 * s.normal_force / (2.0 * kPi * major * minor);
   return s;
 }
 

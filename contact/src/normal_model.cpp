@@ -34,9 +34,10 @@ class HertzModel final : public NormalContactModel {
     const CombinedMaterial m = combine(problem.body1, problem.body2);
     const HertzSolution h = hertz_solve(problem.curvature_x, problem.curvature_y,
                                         problem.normal_force, m.contact_modulus);
+    const HertzCurvatures cv = hertz_curvatures(problem.curvature_x, problem.curvature_y);
     NormalSolution s;
     s.approach = h.approach;
-    s.patches.push_back(hertz_patch(h, problem.curvature_x, problem.curvature_y));
+    s.patches.push_back(hertz_patch(h, cv.x, cv.y));
     return s;
   }
 };

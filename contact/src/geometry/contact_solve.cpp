@@ -6,7 +6,7 @@
 // Toumi (2016) eqs. (1), (5)-(13) (gap z = z1 - z2, Hertz); EN 15302 (rigid wheelset for the
 // rolling-radius difference: both wheels touching, roll free).
 // Known deviations: the vertical equilibrium ignores tangential forces (sum N cos(gamma) = load);
-// conformal points (B <= 0) get B floored at 1e-3 A for the stiffness only.
+// conformal points (B <= 0) are treated as hertz_curvatures() documents.
 
 #include <fmt/format.h>
 
@@ -21,44 +21,13 @@
 namespace ferro::contact {
 namespace {
 
-// Curvatures of sampled profiles can be unbounded at a kink; a radius below 10 um is treated as
-// 10 um, so a corner contact stays a (very stiff) point contact instead of failing.
-constexpr double kMaxCurvature = 1e5;  // [1/m]
-
-// Hertz stiffness c of F = c delta^(3/2) [N/m^1.5], from the exact solution under a unit load.
-// B <= 0 (conformal) is floored at 1e-3 A.
+// Hertz stiffness c of F = c delta^(3/2) [N/m^1.5], from the exact solution under a unit load
+// (curvatures treated by hertz_curvatures(): conformal floor, kink cap).
 double hertz_stiffness(double ca, double cb, double estar) {
-  ca = std::min(ca, kMaxCurvature);
-  cb = std::min(cb, kMaxCurvature);
-  const double delta1 = hertz_solve(ca, std::max(cb, 1e-3 * ca), 1.0, estar).approach;
-  return std::pow(delta1, -1.5);
+  return std::pow(hertz_solve(ca, cb, 1.0, estar).approach, -1.5);
 }
 
 }  // namespace
-
-double hertz_load_from_approach(double ca, double cb, double estar, double approach) {
-  if (!(ca > 0.0) || !(estar > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "hertz_load_from_approach: need A > 0 and E* > 0, got A = {}, E* = {}", ca, estar));
-  }
-  if (!(approach > 0.0)) return 0.0;
-  return hertz_stiffness(ca, cb, estar) * std::pow(approach, 1.5);
-}
-
-HertzEllipse hertz_ellipse(double ca, double cb, double estar, double load) {
-  if (!(ca > 0.0) || !(cb > 0.0) || !(estar > 0.0) || !(load > 0.0)) {
-    throw std::invalid_argument(fmt::format(
-        "hertz_ellipse: need A, B, E*, load > 0, got {}, {}, {}, {}", ca, cb, estar, load));
-  }
-  const HertzSolution hs =
-      hertz_solve(std::min(ca, kMaxCurvature), std::min(cb, kMaxCurvature), load, estar);
-  HertzEllipse h;
-  h.semi_axis_x = hs.semi_axis_x;
-  h.semi_axis_y = hs.semi_axis_y;
-  h.approach = hs.approach;
-  h.max_pressure = hs.peak_pressure;
-  return h;
-}
 
 LoadedWheelset solve_vertical_load(const WheelRailPair& pair, const WheelsetPose& pose,
                                    double total_load, double estar) {

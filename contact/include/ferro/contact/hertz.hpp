@@ -31,10 +31,37 @@ struct HertzCoefficients {
   double r = 0.0;
 };
 
-/// Hertz solution for the gap z = A x^2 + B y^2 (A = curvature_x, B = curvature_y [1/m], both
-/// > 0), normal force F_n >= 0 [N] and contact modulus E* [Pa] (see combine() in material.hpp).
+/// Relative curvatures A (x), B (y) [1/m] as the Hertz solution uses them. This is the one
+/// treatment of curvatures outside Hertz's assumptions, applied by every Hertz function here:
+/// - conformal or negative curvature (B <= 0, e.g. a hollow wheel on a flat-topped rail, or the
+///   throat of a flange root): the smaller curvature is raised to kHertzMinCurvatureRatio times the
+///   larger one, so the patch stays a (very elongated) ellipse instead of failing; the result is
+///   the Hertz solution of that nearly cylindrical contact, a stiffness bound, not a conformal
+///   solution (use semi-Hertz or MIM where conformity matters);
+/// - kinks of sampled profiles (unbounded curvature): each curvature is capped at
+///   kHertzMaxCurvature (10 um radius), a very stiff point contact.
+/// The larger of A, B must be finite and > 0 (otherwise std::invalid_argument naming `where`).
+struct HertzCurvatures {
+  double x = 0.0;  ///< A used [1/m]
+  double y = 0.0;  ///< B used [1/m]
+};
+inline constexpr double kHertzMinCurvatureRatio = 1e-3;  ///< smaller >= 1e-3 larger [-]
+inline constexpr double kHertzMaxCurvature = 1e5;        ///< [1/m]
+[[nodiscard]] HertzCurvatures hertz_curvatures(double curvature_x, double curvature_y,
+                                               const char* where = "hertz");
+
+/// Hertz solution for the gap z = A x^2 + B y^2 (A = curvature_x, B = curvature_y [1/m], treated
+/// by hertz_curvatures()), normal force F_n >= 0 [N] and contact modulus E* [Pa] (see combine()
+/// in material.hpp). Exact: solves the eccentricity by Newton on the elliptic integrals.
 [[nodiscard]] HertzSolution hertz_solve(double curvature_x, double curvature_y, double normal_force,
                                         double contact_modulus);
+
+/// The same Hertz solution given the normal approach delta [m] instead of the load (delta <= 0:
+/// no contact, F_n = 0, semi-axes 0). The eccentricity comes from a relation tabulated once per
+/// process over ln(curvature ratio) in [0, ln 1e6] (cubic interpolation of the exact values,
+/// relative error < 1e-8; exact Newton beyond); no allocation, < 0.1 us.
+[[nodiscard]] HertzSolution hertz_solve_from_approach(double curvature_x, double curvature_y,
+                                                      double approach, double contact_modulus);
 
 /// m, n, r for the angle theta of eq. (13), cos(theta) = |A - B| / (A + B), theta in (0, pi/2].
 [[nodiscard]] HertzCoefficients hertz_coefficients(double theta);

@@ -38,6 +38,11 @@ struct WheelRailContact {
   double ref_semi_axis_b = kNaN;   ///< [m]
   /// Kalker coefficients when the source provides them (imported tables); NaN: from a/b.
   double c11 = kNaN, c22 = kNaN, c23 = kNaN;
+  /// Where the point lies on the profiles (sources with profiles; NaN otherwise) [m].
+  double wheel_y = kNaN, rail_y = kNaN;
+  /// Vertical separation at the pose, < 0 here (penetration = -vertical_gap cos(contact_angle)
+  /// for the profile-based sources) [m].
+  double vertical_gap = kNaN;
   [[nodiscard]] bool has_reference_state() const { return ref_normal_force == ref_normal_force; }
 };
 

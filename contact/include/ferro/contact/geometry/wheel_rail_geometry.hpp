@@ -22,6 +22,8 @@
 // (gap, Hertz, curvatures A = cos(gamma)/(2 r) and B from the transverse radii); Johnson,
 // "Contact Mechanics" (1985) eq. (4.39) (Hertz approach with complete elliptic integrals);
 // Shackleton & Iwnicki, VSD 46 (2008) (Manchester benchmark conventions).
+// Hertz's solution (normal load from the approach, ellipse) is hertz.hpp's, with its one treatment
+// of conformal/negative curvature (hertz_curvatures()).
 // Known deviations: penetration is measured vertically per section and converted to the normal
 // by cos(gamma) (the usual "vertical interpenetration" approximation, good while the penetration
 // is small against the profile radii); the wheel's longitudinal curvature ignores yaw (A uses
@@ -141,24 +143,6 @@ struct ContactPoint {
 /// Smallest vertical gap of one wheel at `pose` [m] (negative: interpenetration).
 [[nodiscard]] double min_vertical_gap(const WheelRailPair& pair, const WheelsetPose& pose,
                                       Side side);
-
-/// Hertz: normal load carried at normal approach `approach` [m] by an elliptic contact with
-/// relative curvatures A, B [1/m] and contact modulus E* [Pa] (Johnson eq. 4.39, exact with
-/// complete elliptic integrals). B <= 0 (conformal) is floored at 1e-3 A.
-[[nodiscard]] double hertz_load_from_approach(double curvature_a, double curvature_b,
-                                              double contact_modulus, double approach);
-
-/// Hertz contact ellipse for relative curvatures A (x, rolling) and B (y, lateral) [1/m],
-/// contact modulus E* [Pa] and normal load [N] (Johnson eq. 4.39, exact). Used to size patches
-/// from the geometry; the normal-contact models live elsewhere.
-struct HertzEllipse {
-  double semi_axis_x = 0.0;   ///< a, along the rolling direction [m]
-  double semi_axis_y = 0.0;   ///< b, lateral [m]
-  double approach = 0.0;      ///< delta [m]
-  double max_pressure = 0.0;  ///< p0 = 3 F / (2 pi a b) [Pa]
-};
-[[nodiscard]] HertzEllipse hertz_ellipse(double curvature_a, double curvature_b,
-                                         double contact_modulus, double load);
 
 /// Result of a vertical-load solve.
 struct LoadedWheelset {

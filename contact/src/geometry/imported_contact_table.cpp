@@ -1,0 +1,232 @@
+// One-point contact table imported from CSV (data/cooperrider_wagon/ layout): strict reader with
+// located errors, natural cubic spline per column, frame conversion, normal-law state.
+//
+// References: see ImportedContactTable in contact_sources.hpp.
+// Known deviations: see ImportedContactTable in contact_sources.hpp.
+
+#include <fmt/format.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ferro/contact/geometry/contact_sources.hpp"
+#include "param_spline.hpp"
+
+namespace ferro::contact {
+namespace {
+
+constexpr std::array<const char*, ImportedContactTable::kColumns> kHeader{
+    "lateral_displacement_m",
+    "normal_force_N",
+    "contact_angle_rad",
+    "semi_axis_a_longitudinal_m",
+    "semi_axis_b_lateral_m",
+    "wheel_contact_lateral_position_m",
+    "rolling_radius_m",
+    "kalker_c11",
+    "kalker_c22",
+    "kalker_c23",
+    "rail_contact_vertical_position_m",
+    "penetration_m",
+    "rail_contact_lateral_position_m"};
+
+enum Column {
+  kLat = 0,
+  kNormalForce,
+  kAngle,
+  kSemiA,
+  kSemiB,
+  kLever,
+  kRadius,
+  kC11,
+  kC22,
+  kC23,
+  kRailZ,
+  kPenetration,
+  kRailY
+};
+
+// Splits one CSV line at commas (no quoting: the layout has none); strips a trailing '\r'.
+std::vector<std::string_view> split(std::string_view line) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos
+                                                                      : comma - start));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+struct ImportedContactTable::Data {
+  std::vector<double> lateral;
+  std::array<std::vector<double>, kColumns> values;
+  std::array<detail::CubicSpline1, kColumns> splines;
+};
+
+ImportedContactTable::ImportedContactTable(const std::string& csv_path) : path_(csv_path) {
+  std::ifstream in(csv_path);
+  if (!in) {
+    throw std::invalid_argument(fmt::format("{}: cannot open the contact table", csv_path));
+  }
+  auto data = std::make_shared<Data>();
+  std::string line;
+  int line_no = 0;
+  auto fail = [&](const std::string& what) {
+    throw std::invalid_argument(fmt::format("{}:{}: {}", csv_path, line_no, what));
+  };
+  // Header: exactly the expected names, in order.
+  ++line_no;
+  if (!std::getline(in, line)) fail("empty file, expected the header row");
+  const std::vector<std::string_view> head = split(line);
+  if (head.size() != kColumns) {
+    fail(fmt::format("header has {} columns, expected {}: {}", head.size(), kColumns,
+                     fmt::join(kHeader, ",")));
+  }
+  for (int c = 0; c < kColumns; ++c) {
+    if (head[static_cast<std::size_t>(c)] != kHeader[static_cast<std::size_t>(c)]) {
+      fail(fmt::format("column {}: header '{}', expected '{}'", c + 1,
+                       head[static_cast<std::size_t>(c)], kHeader[static_cast<std::size_t>(c)]));
+    }
+  }
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::vector<std::string_view> f = split(line);
+    if (f.size() != kColumns) {
+      fail(fmt::format("{} fields, expected {}", f.size(), kColumns));
+    }
+    for (int c = 0; c < kColumns; ++c) {
+      const std::string_view t = f[static_cast<std::size_t>(c)];
+      double v = 0.0;
+      const char* end = t.data() + t.size();
+      // from_chars does not take a leading '+'; the layout never writes one.
+      const auto res = std::from_chars(t.data(), end, v);
+      if (t.empty() || res.ec != std::errc() || res.ptr != end || !std::isfinite(v)) {
+        fail(fmt::format("column {} ({}): '{}' is not a finite number", c + 1,
+                         kHeader[static_cast<std::size_t>(c)], t));
+      }
+      if (c == kLat) {
+        if (!data->lateral.empty() && !(v > data->lateral.back())) {
+          fail(fmt::format("column 1 ({}): {} does not increase (previous {})", kHeader[0], v,
+                           data->lateral.back()));
+        }
+        data->lateral.push_back(v);
+      }
+      data->values[static_cast<std::size_t>(c)].push_back(v);
+    }
+    const auto& v = data->values;
+    const auto at = [&](int c) { return v[static_cast<std::size_t>(c)].back(); };
+    if (!(at(kNormalForce) > 0.0) || !(at(kPenetration) > 0.0) || !(at(kSemiA) > 0.0) ||
+        !(at(kSemiB) > 0.0) || !(at(kRadius) > 0.0) || !(at(kLever) > 0.0)) {
+      fail(fmt::format("columns {} must be > 0",
+                       "normal_force_N, penetration_m, semi_axis_a_longitudinal_m, "
+                       "semi_axis_b_lateral_m, rolling_radius_m, wheel_contact_lateral_position_m"));
+    }
+  }
+  if (data->lateral.size() < 4) {
+    throw std::invalid_argument(
+        fmt::format("{}: {} data rows, need at least 4", csv_path, data->lateral.size()));
+  }
+  if (!(data->lateral.front() < 0.0 && data->lateral.back() > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "{}: lateral_displacement_m must span y = 0 (got [{}, {}])", csv_path,
+        data->lateral.front(), data->lateral.back()));
+  }
+  for (int c = 1; c < kColumns; ++c) {
+    data->splines[static_cast<std::size_t>(c)] =
+        detail::CubicSpline1(data->lateral, data->values[static_cast<std::size_t>(c)]);
+  }
+  // The source tool's limit: the magnitude of the first value, applied to |y|, both wheels.
+  limit_ = std::min(-data->lateral.front(), data->lateral.back());
+  data_ = std::move(data);
+}
+
+const std::vector<double>& ImportedContactTable::lateral() const { return data_->lateral; }
+
+const std::vector<double>& ImportedContactTable::column_values(int column) const {
+  if (column < 0 || column >= kColumns) {
+    throw std::invalid_argument(fmt::format("ImportedContactTable: column {} outside [0, {})",
+                                            column, kColumns));
+  }
+  return data_->values[static_cast<std::size_t>(column)];
+}
+
+double ImportedContactTable::column(int column, double y_file) const {
+  if (column < 1 || column >= kColumns) {
+    throw std::invalid_argument(
+        fmt::format("ImportedContactTable: column {} outside [1, {})", column, kColumns));
+  }
+  const detail::CubicSpline1& s = data_->splines[static_cast<std::size_t>(column)];
+  double f, df, ddf;
+  s.eval(s.segment(y_file), y_file, f, df, ddf);
+  return f;
+}
+
+WheelRailContact ImportedContactTable::wheel_point(const WheelsetPose& pose, Side side) const {
+  if (!(std::abs(pose.lateral) <= limit_)) {
+    throw std::out_of_range(fmt::format(
+        "{}: wheelset lateral shift {} m outside the table's |y| <= {} m (the source tool stops "
+        "the run as a derailment there)",
+        path_, pose.lateral, limit_));
+  }
+  // File frame: y left, z up; the left wheel reads +y_file, the right wheel -y_file.
+  const double y_file = -pose.lateral;
+  const double y = side == Side::left ? y_file : -y_file;
+  const std::size_t seg = data_->splines[kNormalForce].segment(y);
+  auto col = [&](int c) {
+    double f, df, ddf;
+    data_->splines[static_cast<std::size_t>(c)].eval(seg, y, f, df, ddf);
+    return f;
+  };
+  const double n0 = col(kNormalForce), delta = col(kAngle), a0 = col(kSemiA), b0 = col(kSemiB);
+  const double lever = col(kLever), radius = col(kRadius), q0 = col(kPenetration);
+  const double phi = pose.roll, z = -pose.vertical;
+  const double sp = std::sin(phi), cp = std::cos(phi), tp = sp / cp;
+  double dq = 0.0, angle = 0.0;
+  if (side == Side::left) {
+    const double e = (radius - lever * tp) * sp + lever / cp - lever - radius * phi;
+    angle = delta + phi;
+    dq = -e * std::sin(angle) - (z + lever * phi) * std::cos(angle);
+  } else {
+    const double e = (radius + lever * tp) * sp - lever / cp + lever - radius * phi;
+    angle = delta - phi;
+    dq = e * std::sin(angle) - (z - lever * phi) * std::cos(angle);
+  }
+  WheelRailContact c;
+  c.side = side;
+  c.x = 0.0;
+  c.y = pose.lateral + (side == Side::left ? -lever : lever);
+  c.z = -col(kRailZ);
+  c.contact_angle = angle;
+  c.rolling_radius = radius;
+  c.penetration = q0 + dq;
+  c.ref_normal_force = n0;
+  c.ref_penetration = q0;
+  c.ref_semi_axis_a = a0;
+  c.ref_semi_axis_b = b0;
+  c.c11 = col(kC11);
+  c.c22 = col(kC22);
+  c.c23 = col(kC23);
+  return c;
+}
+
+void ImportedContactTable::contacts(const WheelsetPose& pose,
+                                    std::vector<WheelRailContact>& out) const {
+  out.clear();
+  for (const Side side : {Side::left, Side::right}) {
+    const WheelRailContact c = wheel_point(pose, side);
+    if (c.penetration > 0.0) out.push_back(c);
+  }
+}
+
+}  // namespace ferro::contact
