@@ -1,4 +1,4 @@
-// Cost per evaluation of the contact models (issue 3 targets: linear + CHOPAYA <= 0.2 us,
+// Cost per evaluation of the contact models (targets: linear + CHOPAYA <= 0.2 us,
 // Hertz <= 1 us, FASTSIM 20 x 20 <= 5 us). Run: ./build/bench/ferro_bench_contact_models
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
 // Cost of evaluating the design track frame and the irregularities at one arc length.
-// Figures go to docs/reports/track.md. Run:
+// Figures go to docs/PERFORMANCE.md. Run:
 //   ./build/bench/ferro_bench_track --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true
 

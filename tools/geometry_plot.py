@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of `ferrodyn geometry PAIR.yaml` outputs.
+"""Plots of `ferrodyn geometry pair PAIR.yaml` outputs.
 
 Usage: geometry_plot.py OUT_DIR [IMG_DIR]
 

@@ -5,8 +5,9 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libsundials-dev libboost-dev libyaml-cpp-dev libhdf5-dev libfftw3-dev
-  libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
+  libgetfem-dev libsuitesparse-dev
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

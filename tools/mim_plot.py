@@ -3,7 +3,7 @@
 
   mim_plot.py fields RESULT.h5 OUT.png [--title TEXT]
       pressure map, traction vectors over |tau|, adhesion/slip areas of a file written by
-      `ferrodyn mim --out` (contact::mim::write_hdf5).
+      `ferrodyn contact mim -o` (contact::mim::write_hdf5).
   mim_plot.py timing BENCH.json OUT.png
       time against number of elements from `ferro_bench_mim --benchmark_out=BENCH.json`, with an
       N log N guide and the thesis's Table 2.1 (Toumi 2016) for comparison.
@@ -92,7 +92,7 @@ def timing(args):
         ax.loglog([n * n for n in table], list(table.values()), "x-", label=label)
     for n, lim in ((50, 0.02), (100, 0.2), (200, 1.5)):
         ax.plot([n * n], [lim], "rv")
-    ax.plot([], [], "rv", label="issue #4 targets")
+    ax.plot([], [], "rv", label="speed targets")
     ax.set_xlabel("elements N")
     ax.set_ylabel("normal + steady rolling solve [s]")
     ax.set_title("Sphere case, xi_x = 3 per mille, one core")

@@ -181,8 +181,9 @@ namespace {
 // The Hertz relation at a given approach, as functions of u = ln(rho), rho = larger/smaller
 // curvature: k = minor/major, g1 = sqrt(E/(k^2 K)), g2 = (2 pi/3) sqrt(E)/(k K^1.5), so that
 // with S = A + B: major = g1 sqrt(delta/S), F = E* g2 delta^1.5 / sqrt(S) (from Johnson (3.64)-
-// (3.72): delta = a^2 k^2 S K / E, F = 2 pi E* k^2 S a^3 / (3 E)). All three are even in u
-// (rho and 1/rho give the same ellipse), which closes the stencil at u = 0.
+// (3.72): delta = a^2 k^2 S K / E, F = 2 pi E* k^2 S a^3 / (3 E)). All three are analytic in u
+// >= 0 (e^2 is analytic in rho - 1), so the stencil at u = 0 is closed by a ghost node
+// extrapolated quadratically (not by symmetry: k(|u|) has a kink at u = 0).
 class ApproachRelation {
  public:
   static constexpr int kNodes = 4096;
@@ -213,15 +214,18 @@ class ApproachRelation {
     const double s = u * inv_h_;
     const int i = static_cast<int>(s);
     const double t = s - i;
-    const int im = i == 0 ? 1 : i - 1;  // even functions: f(-h) = f(h)
     const double t2 = t * t, t3 = t2 * t;
     const double w0 = -0.5 * t3 + t2 - 0.5 * t;
     const double w1 = 1.5 * t3 - 2.5 * t2 + 1.0;
     const double w2 = -1.5 * t3 + 2.0 * t2 + 0.5 * t;
     const double w3 = 0.5 * t3 - 0.5 * t2;
-    lnk = w0 * lnk_[im] + w1 * lnk_[i] + w2 * lnk_[i + 1] + w3 * lnk_[i + 2];
-    lng1 = w0 * lng1_[im] + w1 * lng1_[i] + w2 * lng1_[i + 1] + w3 * lng1_[i + 2];
-    lng2 = w0 * lng2_[im] + w1 * lng2_[i] + w2 * lng2_[i + 1] + w3 * lng2_[i + 2];
+    auto at = [&](const std::array<double, kNodes + 2>& f) {
+      const double before = i == 0 ? 3.0 * f[0] - 3.0 * f[1] + f[2] : f[i - 1];
+      return w0 * before + w1 * f[i] + w2 * f[i + 1] + w3 * f[i + 2];
+    };
+    lnk = at(lnk_);
+    lng1 = at(lng1_);
+    lng2 = at(lng2_);
   }
 
  private:

@@ -1,4 +1,4 @@
-// Tabulated MIM creep forces: build (MIM solves), HDF5 I/O (HDF5 C API), tensor-product cubic
+// Tabulated MIM creep forces: build (MIM solves), HDF5 I/O (the io layer), tensor-product cubic
 // Hermite interpolation, and the tangential model "mim_table".
 //
 // References: see mim_table.hpp (Toumi 2016 ch. 2, eqs. 38-40, annex A.2; Kalker 1990 ch. 2).
@@ -6,7 +6,6 @@
 #include "ferro/contact/mim_table.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <atomic>
@@ -17,9 +16,9 @@
 #include <stdexcept>
 #include <thread>
 
+#include "ferro/contact/io/hdf5.hpp"
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/mim.hpp"
-#include "quiet_hdf5.hpp"
 
 namespace ferro::contact {
 
@@ -96,71 +95,6 @@ AxisWeights axis_weights(const std::vector<double>& t, double q) {
   derivative(i + 1, j0, c);
   for (int k = 0; k < 3; ++k) add(j0 + k, h11 * h * c[k]);
   return out;
-}
-
-// HDF5 helpers (C API).
-struct H5Handle {
-  hid_t id = -1;
-  herr_t (*close)(hid_t) = nullptr;
-  H5Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
-  ~H5Handle() {
-    if (id >= 0 && close) close(id);
-  }
-  H5Handle(const H5Handle&) = delete;
-  H5Handle& operator=(const H5Handle&) = delete;
-};
-
-void write_dataset(hid_t file, const std::string& name, const std::vector<double>& v,
-                   const std::vector<hsize_t>& dims) {
-  H5Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-  H5Handle set(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT,
-                          H5P_DEFAULT),
-               H5Dclose);
-  if (set.id < 0 || H5Dwrite(set.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                             v.data()) < 0) {
-    throw std::runtime_error(fmt::format("mim table: cannot write dataset '{}'", name));
-  }
-}
-
-std::vector<double> read_dataset(hid_t file, const std::string& path, const std::string& name,
-                                 std::vector<hsize_t>* dims_out = nullptr) {
-  if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) {
-    throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));
-  }
-  H5Handle set(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
-  H5Handle space(H5Dget_space(set.id), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(space.id);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
-  H5Sget_simple_extent_dims(space.id, dims.data(), nullptr);
-  std::size_t n = 1;
-  for (hsize_t d : dims) n *= d;
-  std::vector<double> v(n);
-  if (H5Dread(set.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
-    throw std::runtime_error(fmt::format("{}: cannot read dataset '{}'", path, name));
-  }
-  if (dims_out) *dims_out = dims;
-  return v;
-}
-
-void write_attribute(hid_t file, const char* name, double value) {
-  H5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-  H5Handle attr(H5Acreate2(file, name, H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT),
-                H5Aclose);
-  if (attr.id < 0 || H5Awrite(attr.id, H5T_NATIVE_DOUBLE, &value) < 0) {
-    throw std::runtime_error(fmt::format("mim table: cannot write attribute '{}'", name));
-  }
-}
-
-double read_attribute(hid_t file, const std::string& path, const char* name) {
-  if (H5Aexists(file, name) <= 0) {
-    throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));
-  }
-  H5Handle attr(H5Aopen(file, name, H5P_DEFAULT), H5Aclose);
-  double v = 0.0;
-  if (H5Aread(attr.id, H5T_NATIVE_DOUBLE, &v) < 0) {
-    throw std::runtime_error(fmt::format("{}: cannot read attribute '{}'", path, name));
-  }
-  return v;
 }
 
 // Scales of a Hertzian problem: s = mu F_n, c = sqrt(ab), and the normalisation factors.
@@ -289,54 +223,60 @@ MimTable MimTable::build(const MimTableSpec& spec) {
 }
 
 void MimTable::write_hdf5(const std::string& path) const {
-  H5Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-  if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
-  write_attribute(file.id, "format_version", kFormatVersion);
-  write_attribute(file.id, "poisson", spec_.poisson);
-  write_attribute(file.id, "elements", spec_.elements);
+  io::H5File file = io::H5File::create(path);
+  file.set_attribute("/", "format_version", static_cast<double>(kFormatVersion));
+  file.set_attribute("/", "poisson", spec_.poisson);
+  file.set_attribute("/", "elements", static_cast<double>(spec_.elements));
   const auto axis = [&](const char* name, const std::vector<double>& v) {
-    write_dataset(file.id, name, v, {static_cast<hsize_t>(v.size())});
+    file.write_array(name, v, {v.size()});
   };
-  axis("ratio", spec_.ratio);
-  axis("xi_x", spec_.xi_x);
-  axis("xi_y", spec_.xi_y);
-  axis("spin", spec_.spin);
-  const std::vector<hsize_t> dims = {spec_.ratio.size(), spec_.xi_x.size(), spec_.xi_y.size(),
-                                     spec_.spin.size()};
-  write_dataset(file.id, "f_x", fx_, dims);
-  write_dataset(file.id, "f_y", fy_, dims);
-  write_dataset(file.id, "m_z", mz_, dims);
+  axis("/ratio", spec_.ratio);
+  axis("/xi_x", spec_.xi_x);
+  axis("/xi_y", spec_.xi_y);
+  axis("/spin", spec_.spin);
+  const io::Dims dims = {spec_.ratio.size(), spec_.xi_x.size(), spec_.xi_y.size(),
+                         spec_.spin.size()};
+  file.write_array("/f_x", fx_, dims);
+  file.write_array("/f_y", fy_, dims);
+  file.write_array("/m_z", mz_, dims);
+  file.close();
 }
 
 MimTable MimTable::read_hdf5(const std::string& path) {
-  H5Handle file = [&] {
-    const detail::QuietHdf5 quiet;
-    return H5Handle(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  }();
-  if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot open HDF5 file", path));
-  const double version = read_attribute(file.id, path, "format_version");
+  const io::H5File file = io::H5File::open_read(path);
+  const auto attribute = [&](const char* name) {
+    if (!file.has_attribute("/", name))
+      throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));
+    return file.number_attribute("/", name);
+  };
+  const auto dataset = [&](const std::string& name, io::Dims* dims = nullptr) {
+    if (!file.exists(name))
+      throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));
+    return file.read_array(name, dims);
+  };
+  const double version = attribute("format_version");
   if (version != kFormatVersion) {
     throw std::invalid_argument(fmt::format("{}: format_version {} (expected {})", path, version,
                                             kFormatVersion));
   }
   MimTable t;
-  t.spec_.poisson = read_attribute(file.id, path, "poisson");
-  t.spec_.elements = static_cast<int>(read_attribute(file.id, path, "elements"));
-  t.spec_.ratio = read_dataset(file.id, path, "ratio");
-  t.spec_.xi_x = read_dataset(file.id, path, "xi_x");
-  t.spec_.xi_y = read_dataset(file.id, path, "xi_y");
-  t.spec_.spin = read_dataset(file.id, path, "spin");
+  t.spec_.poisson = attribute("poisson");
+  t.spec_.elements = static_cast<int>(attribute("elements"));
+  t.spec_.ratio = dataset("ratio");
+  t.spec_.xi_x = dataset("xi_x");
+  t.spec_.xi_y = dataset("xi_y");
+  t.spec_.spin = dataset("spin");
   try {
     t.spec_.validate();
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("{}: {}", path, e.what()));
   }
   for (double r : t.spec_.ratio) t.log_ratio_.push_back(std::log(r));
-  const std::vector<hsize_t> expect = {t.spec_.ratio.size(), t.spec_.xi_x.size(),
-                                       t.spec_.xi_y.size(), t.spec_.spin.size()};
+  const io::Dims expect = {t.spec_.ratio.size(), t.spec_.xi_x.size(), t.spec_.xi_y.size(),
+                           t.spec_.spin.size()};
   for (const char* name : {"f_x", "f_y", "m_z"}) {
-    std::vector<hsize_t> dims;
-    std::vector<double> v = read_dataset(file.id, path, name, &dims);
+    io::Dims dims;
+    std::vector<double> v = dataset(name, &dims);
     if (dims != expect) {
       throw std::invalid_argument(fmt::format(
           "{}: dataset '{}' must have dims [ratio][xi_x][xi_y][spin] = [{}][{}][{}][{}]", path,

@@ -3,14 +3,16 @@
 // References: Toumi (2016) eq. (156).
 // Known deviations: multilinear interpolation, clamped at the axis ends.
 #include "ferro/contact/reduction_factors.hpp"
-#include "quiet_hdf5.hpp"
+
+#include "ferro/contact/io/hdf5.hpp"
 
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace ferro::contact {
@@ -106,6 +108,29 @@ ReductionFactors KijTable::at_patch(const ContactPatch& patch,
 }
 
 ReductionFactors KijTable::at(const std::vector<double>& point) const {
+  return interpolate(point, k11_, k22_, k23_, k33_);
+}
+
+void KijTable::set_first_pass(std::vector<double> k11, std::vector<double> k22,
+                              std::vector<double> k23, std::vector<double> k33) {
+  // Same checks as the main set: a table built from them must be valid.
+  const KijTable check(names_, axes_, k11, k22, k23, k33);
+  k11_first_ = std::move(k11);
+  k22_first_ = std::move(k22);
+  k23_first_ = std::move(k23);
+  k33_first_ = std::move(k33);
+}
+
+ReductionFactors KijTable::first_pass_at(const std::vector<double>& point) const {
+  if (!has_first_pass()) throw std::logic_error("K_ij table: no first-pass factors");
+  return interpolate(point, k11_first_, k22_first_, k23_first_, k33_first_);
+}
+
+ReductionFactors KijTable::interpolate(const std::vector<double>& point,
+                                       const std::vector<double>& k11,
+                                       const std::vector<double>& k22,
+                                       const std::vector<double>& k23,
+                                       const std::vector<double>& k33) const {
   const std::size_t n = axes_.size();
   if (point.size() != n) {
     throw std::invalid_argument(
@@ -156,105 +181,80 @@ ReductionFactors KijTable::at(const std::vector<double>& point) const {
       index += (lower[i] + (upper ? 1 : 0)) * stride[i];
     }
     if (w == 0.0) continue;
-    out.k11 += w * k11_[index];
-    out.k22 += w * k22_[index];
-    out.k23 += w * k23_[index];
-    out.k33 += w * (k33_.empty() ? 1.0 : k33_[index]);
+    out.k11 += w * k11[index];
+    out.k22 += w * k22[index];
+    out.k23 += w * k23[index];
+    out.k33 += w * (k33.empty() ? 1.0 : k33[index]);
   }
   return out;
 }
 
-namespace {
-
-using detail::QuietHdf5;
-
-struct Handle {
-  hid_t id = -1;
-  herr_t (*close)(hid_t) = nullptr;
-  Handle(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
-  ~Handle() {
-    if (id >= 0 && close) close(id);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-};
-
-std::vector<double> read_dataset(hid_t file, const std::string& path, const std::string& name,
-                                 std::vector<hsize_t>* dims_out) {
-  Handle d(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (d.id < 0) throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));
-  Handle sp(H5Dget_space(d.id), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(sp.id);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
-  if (rank > 0) H5Sget_simple_extent_dims(sp.id, dims.data(), nullptr);
-  std::size_t count = 1;
-  for (hsize_t v : dims) count *= static_cast<std::size_t>(v);
-  std::vector<double> values(count);
-  if (H5Dread(d.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
-    throw std::invalid_argument(fmt::format("{}: cannot read dataset '{}' as float64", path, name));
-  }
-  if (dims_out) *dims_out = dims;
-  return values;
-}
-
-}  // namespace
-
 KijTable KijTable::read_hdf5(const std::string& path) {
-  QuietHdf5 quiet;
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (file.id < 0)
-    throw std::invalid_argument(fmt::format("{}: cannot open as an HDF5 file", path));
-  // Schema version.
-  {
-    Handle attr(H5Aopen(file.id, "schema_version", H5P_DEFAULT), H5Aclose);
-    int version = 0;
-    if (attr.id < 0 || H5Aread(attr.id, H5T_NATIVE_INT, &version) < 0) {
-      throw std::invalid_argument(fmt::format("{}: missing root attribute 'schema_version'", path));
+  const io::H5File file = [&] {
+    try {
+      return io::H5File::open_read(path);
+    } catch (const io::Hdf5Error& e) {
+      throw std::invalid_argument(fmt::format("{}: cannot open as an HDF5 file ({})", path,
+                                              e.what()));
     }
-    if (version != 1) {
+  }();
+  const auto dataset = [&](const std::string& name, io::Dims* dims) {
+    if (!file.exists(name))
+      throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));
+    try {
+      return file.read_array(name, dims);
+    } catch (const io::Hdf5Error&) {
       throw std::invalid_argument(
-          fmt::format("{}: schema_version {} not supported (expected 1)", path, version));
+          fmt::format("{}: cannot read dataset '{}' as float64", path, name));
     }
+  };
+  const auto integer = [&](const std::string& object, const char* name) -> std::optional<long> {
+    if (!file.has_attribute(object, name)) return std::nullopt;
+    try {
+      return file.integer_attribute(object, name);
+    } catch (const io::Hdf5Error&) {
+      return std::nullopt;
+    }
+  };
+  // Schema version.
+  const auto version = integer("/", "schema_version");
+  if (!version)
+    throw std::invalid_argument(fmt::format("{}: missing root attribute 'schema_version'", path));
+  if (*version != 1 && *version != kSchemaVersion) {
+    throw std::invalid_argument(fmt::format(
+        "{}: schema_version {} not supported (expected 1 or {})", path, *version, kSchemaVersion));
   }
-  Handle group(H5Gopen2(file.id, "axes", H5P_DEFAULT), H5Gclose);
-  if (group.id < 0) throw std::invalid_argument(fmt::format("{}: missing group '/axes'", path));
-  H5G_info_t info;
-  H5Gget_info(group.id, &info);
-  const auto n = static_cast<std::size_t>(info.nlinks);
+  if (!file.exists("/axes"))
+    throw std::invalid_argument(fmt::format("{}: missing group '/axes'", path));
+  const std::vector<std::string> members = file.members("/axes");
+  const std::size_t n = members.size();
   if (n == 0) throw std::invalid_argument(fmt::format("{}: group '/axes' is empty", path));
   std::vector<std::string> names(n);
   std::vector<std::vector<double>> axes(n);
   std::vector<bool> seen(n, false);
-  for (hsize_t i = 0; i < info.nlinks; ++i) {
-    const ssize_t len =
-        H5Lget_name_by_idx(group.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-    std::string name(static_cast<std::size_t>(len), '\0');
-    H5Lget_name_by_idx(group.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(),
-                       static_cast<std::size_t>(len) + 1, H5P_DEFAULT);
+  for (const std::string& name : members) {
     const std::string dpath = "axes/" + name;
-    std::vector<hsize_t> dims;
-    std::vector<double> values = read_dataset(file.id, path, dpath, &dims);
-    Handle d(H5Dopen2(file.id, dpath.c_str(), H5P_DEFAULT), H5Dclose);
-    Handle attr(H5Aopen(d.id, "index", H5P_DEFAULT), H5Aclose);
-    int index = -1;
-    if (attr.id < 0 || H5Aread(attr.id, H5T_NATIVE_INT, &index) < 0) {
+    io::Dims dims;
+    std::vector<double> values = dataset(dpath, &dims);
+    const auto index = integer(dpath, "index");
+    if (!index) {
       throw std::invalid_argument(
           fmt::format("{}: dataset '/{}' has no integer attribute 'index'", path, dpath));
     }
-    if (index < 0 || static_cast<std::size_t>(index) >= n ||
-        seen[static_cast<std::size_t>(index)]) {
+    if (*index < 0 || static_cast<std::size_t>(*index) >= n ||
+        seen[static_cast<std::size_t>(*index)]) {
       throw std::invalid_argument(fmt::format(
           "{}: dataset '/{}' attribute 'index' = {} is out of range or repeated (0..{})", path,
-          dpath, index, n - 1));
+          dpath, *index, n - 1));
     }
-    seen[static_cast<std::size_t>(index)] = true;
-    names[static_cast<std::size_t>(index)] = name;
-    axes[static_cast<std::size_t>(index)] = std::move(values);
+    seen[static_cast<std::size_t>(*index)] = true;
+    names[static_cast<std::size_t>(*index)] = name;
+    axes[static_cast<std::size_t>(*index)] = std::move(values);
   }
   auto read_k = [&](const char* name, bool optional) -> std::vector<double> {
-    if (optional && H5Lexists(file.id, name, H5P_DEFAULT) <= 0) return {};
-    std::vector<hsize_t> dims;
-    std::vector<double> v = read_dataset(file.id, path, name, &dims);
+    if (optional && !file.exists(name)) return {};
+    io::Dims dims;
+    std::vector<double> v = dataset(name, &dims);
     bool ok = dims.size() == n;
     for (std::size_t i = 0; ok && i < n; ++i) ok = dims[i] == axes[i].size();
     if (!ok) {
@@ -265,47 +265,52 @@ KijTable KijTable::read_hdf5(const std::string& path) {
     }
     return v;
   };
-  return KijTable(names, axes, read_k("K11", false), read_k("K22", false), read_k("K23", false),
-                  read_k("K33", true));
+  KijTable table(names, axes, read_k("K11", false), read_k("K22", false), read_k("K23", false),
+                 read_k("K33", true));
+  // Version 2 additions (absent in version 1 files).
+  if (file.exists("K11_first_pass")) {
+    table.set_first_pass(read_k("K11_first_pass", false), read_k("K22_first_pass", false),
+                         read_k("K23_first_pass", false), read_k("K33_first_pass", true));
+  }
+  if (file.exists("/provenance")) {
+    std::map<std::string, std::string> entries;
+    try {
+      for (const std::string& key : file.attribute_names("/provenance")) {
+        entries[key] = file.string_attribute("/provenance", key);
+      }
+    } catch (const io::Hdf5Error& e) {
+      throw std::invalid_argument(fmt::format(
+          "{}: '/provenance' attributes must be fixed-length strings ({})", path, e.what()));
+    }
+    table.set_provenance(std::move(entries));
+  }
+  return table;
 }
 
 void KijTable::write_hdf5(const std::string& path) const {
-  QuietHdf5 quiet;
-  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-  if (file.id < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
-  {
-    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Handle attr(
-        H5Acreate2(file.id, "schema_version", H5T_NATIVE_INT, space.id, H5P_DEFAULT, H5P_DEFAULT),
-        H5Aclose);
-    const int version = 1;
-    H5Awrite(attr.id, H5T_NATIVE_INT, &version);
-  }
-  Handle group(H5Gcreate2(file.id, "axes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-  auto write = [&](hid_t where, const std::string& name, const std::vector<double>& v,
-                   const std::vector<hsize_t>& dims) -> hid_t {
-    Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-    const hid_t d = H5Dcreate2(where, name.c_str(), H5T_IEEE_F64LE, space.id, H5P_DEFAULT,
-                               H5P_DEFAULT, H5P_DEFAULT);
-    if (d < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0) {
-      throw std::runtime_error(fmt::format("{}: cannot write dataset '{}'", path, name));
-    }
-    return d;
-  };
-  std::vector<hsize_t> dims;
+  io::H5File file = io::H5File::create(path);
+  file.set_attribute("/", "schema_version", kSchemaVersion);
+  file.ensure_group("/axes");
+  io::Dims dims;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
-    Handle d(write(group.id, names_[i], axes_[i], {axes_[i].size()}), H5Dclose);
-    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Handle attr(H5Acreate2(d.id, "index", H5T_NATIVE_INT, space.id, H5P_DEFAULT, H5P_DEFAULT),
-                H5Aclose);
-    const int index = static_cast<int>(i);
-    H5Awrite(attr.id, H5T_NATIVE_INT, &index);
+    const std::string name = "/axes/" + names_[i];
+    file.write_array(name, axes_[i], {axes_[i].size()});
+    file.set_attribute(name, "index", static_cast<int>(i));
     dims.push_back(axes_[i].size());
   }
-  Handle d11(write(file.id, "K11", k11_, dims), H5Dclose);
-  Handle d22(write(file.id, "K22", k22_, dims), H5Dclose);
-  Handle d23(write(file.id, "K23", k23_, dims), H5Dclose);
-  if (!k33_.empty()) Handle d33(write(file.id, "K33", k33_, dims), H5Dclose);
+  file.write_array("/K11", k11_, dims);
+  file.write_array("/K22", k22_, dims);
+  file.write_array("/K23", k23_, dims);
+  if (!k33_.empty()) file.write_array("/K33", k33_, dims);
+  if (has_first_pass()) {
+    file.write_array("/K11_first_pass", k11_first_, dims);
+    file.write_array("/K22_first_pass", k22_first_, dims);
+    file.write_array("/K23_first_pass", k23_first_, dims);
+    if (!k33_first_.empty()) file.write_array("/K33_first_pass", k33_first_, dims);
+  }
+  file.ensure_group("/provenance");
+  for (const auto& [key, value] : provenance_) file.set_attribute("/provenance", key, value);
+  file.close();
 }
 
 }  // namespace ferro::contact

@@ -24,7 +24,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       "Every tangential model over 90 Hertzian cases (a/b 0.2-5; pure and combined creepage and "
       "spin; micro-slip to full slip) against fine-grid MIM: us per evaluation and mean / 95th "
       "percentile / max error in units of mu Fn; writes bench_contact.csv and bench_contact.png");
-  contact->add_option("--out", *out, "output directory")->capture_default_str();
+  add_output_option(contact, *out, "output folder", {"--out"})->capture_default_str();
   contact->add_option("--reference-elements", opt->reference_elements,
                       "reference MIM: elements across the shorter axis")
       ->capture_default_str();
@@ -33,7 +33,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
   contact->add_option("--min-time", opt->min_time_s, "timing: minimum CPU seconds per model")
       ->capture_default_str();
   contact->add_flag("--quick", opt->quick, "15 cases, coarse reference and table (smoke test)");
-  contact->add_flag("--no-png", *no_png, "skip the Pareto picture");
+  add_no_plots_flag(contact, *no_png, {"--no-png"});
   contact->callback([&handler, opt, out, no_png] {
     handler = [opt, out, no_png] {
       if (opt->reference_elements < 8) {
@@ -56,7 +56,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
         const std::string png = (std::filesystem::path(*out) / "bench_contact.png").string();
         if (scenarios::run_python_tool("bench_contact_plot.py", {csv, png}) != 0) {
           throw std::runtime_error(fmt::format(
-              "bench_contact_plot.py failed (python {} with matplotlib needed; --no-png skips)",
+              "bench_contact_plot.py failed (python {} with matplotlib needed; --no-plots skips)",
               scenarios::python_program()));
         }
         fmt::print("wrote {}\n", png);

@@ -7,9 +7,12 @@
 // std::runtime_error for a failed run -> exit code 1. Handlers return their own exit code.
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace ferro::cli {
@@ -22,6 +25,18 @@ inline constexpr int kExitRunFailure = 1;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitInterrupted = 130;
 
+// Flags that every verb spells the same way. Old spellings stay accepted, hidden from the help,
+// for one release.
+/// The output (file or folder) of a verb: -o/--output.
+CLI::Option* add_output_option(CLI::App* cmd, std::string& target, const std::string& help,
+                               const std::vector<std::string>& old_names = {});
+/// The switch that skips pictures: --no-plots.
+void add_no_plots_flag(CLI::App* cmd, bool& target,
+                       const std::vector<std::string>& old_names = {});
+/// A hidden alias of an option that takes a value.
+template <class T>
+void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target);
+
 /// Parses argv, runs the chosen verb, returns the process exit code.
 int run_main(int argc, char** argv);
 
@@ -29,10 +44,21 @@ int run_main(int argc, char** argv);
 // `handler` to the work to do once parsing has finished.
 void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, plot, validate
 void add_contact_commands(CLI::App& app, VerbHandler& handler);  // contact eval, curve, patch
-void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry search, PAIR.yaml
-void add_mim_commands(CLI::App& app, VerbHandler& handler);      // mim
+void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry search, pair
+/// After add_contact_commands: contact mim (and the hidden top-level mim).
+void add_mim_commands(CLI::App& app, VerbHandler& handler);
 /// After add_contact_commands: contact mim-table.
 void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
+void add_fe_kij_commands(CLI::App& app, VerbHandler& handler);   // fe-kij
 
+}  // namespace ferro::cli
+
+#include <CLI/CLI.hpp>
+
+namespace ferro::cli {
+template <class T>
+void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target) {
+  cmd->add_option(old_name, target)->group("");
+}
 }  // namespace ferro::cli

@@ -6,11 +6,13 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +24,7 @@
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/contact/tangential_model.hpp"
 #include "cli.hpp"
+#include "ferro/scenarios/csv_batch.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 
@@ -119,45 +122,30 @@ fc::ModelOptions parse_options(const std::vector<std::string>& items) {
   return o;
 }
 
-std::string json_number(double v) {
-  return std::isfinite(v) ? fmt::format("{:.10g}", v) : "null";
-}
-
 void print_json(const EvalInput& in, const EvalOutput& out) {
-  fmt::print(
-      "{{\"model\": \"{}\", \"semi_axis_x\": {}, \"semi_axis_y\": {}, \"normal_force\": {}, "
-      "\"peak_pressure\": {}, \"force_x\": {}, \"force_y\": {}, \"moment_z\": {}, "
-      "\"adhesion_fraction\": {}, \"c11\": {}, \"c22\": {}, \"c23\": {}, \"c33\": {}, "
-      "\"units\": \"SI (m, N, Pa, N m)\", "
-      "\"convention\": \"forces and moment on the wheel from the rail\"}}\n",
-      in.model, json_number(out.patch.semi_axis_x), json_number(out.patch.semi_axis_y),
-      json_number(out.patch.normal_force), json_number(out.patch.peak_pressure),
-      json_number(out.forces.force_x), json_number(out.forces.force_y),
-      json_number(out.forces.moment_z), json_number(out.forces.adhesion_fraction),
-      json_number(out.c.c11), json_number(out.c.c22), json_number(out.c.c23),
-      json_number(out.c.c33));
-}
-
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  std::istringstream ss(line);
-  while (std::getline(ss, cell, ',')) {
-    while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
-    while (!cell.empty() && cell.front() == ' ') cell.erase(cell.begin());
-    out.push_back(cell);
-  }
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
+  nlohmann::ordered_json j;
+  j["model"] = in.model;
+  j["semi_axis_x"] = out.patch.semi_axis_x;
+  j["semi_axis_y"] = out.patch.semi_axis_y;
+  j["normal_force"] = out.patch.normal_force;
+  j["peak_pressure"] = out.patch.peak_pressure;
+  j["force_x"] = out.forces.force_x;
+  j["force_y"] = out.forces.force_y;
+  j["moment_z"] = out.forces.moment_z;
+  j["adhesion_fraction"] = out.forces.adhesion_fraction;
+  j["c11"] = out.c.c11;
+  j["c22"] = out.c.c22;
+  j["c23"] = out.c.c23;
+  j["c33"] = out.c.c33;
+  j["units"] = "SI (m, N, Pa, N m)";
+  j["convention"] = "forces and moment on the wheel from the rail";
+  fmt::print("{}\n", j.dump(2));
 }
 
 // --batch: CSV with a header on stdin; each row overrides the command-line values.
 int run_batch(const EvalInput& defaults, const fc::ModelOptions& options,
               fc::CoefficientSource source) {
-  std::string line;
-  if (!std::getline(std::cin, line))
-    throw std::invalid_argument("--batch: empty standard input (expected a CSV header)");
-  const std::vector<std::string> header = split_csv(line);
+  scenarios::CsvBatchReader reader(std::cin, "--batch: stdin");
   const std::map<std::string, double EvalInput::*> numeric = {
       {"a", &EvalInput::a},
       {"b", &EvalInput::b},
@@ -172,31 +160,22 @@ int run_batch(const EvalInput& defaults, const fc::ModelOptions& options,
       {"xi_x", &EvalInput::xi_x},
       {"xi_y", &EvalInput::xi_y},
       {"phi", &EvalInput::phi},
+      {"spin", &EvalInput::phi},
       {"k11", &EvalInput::k11},
       {"k22", &EvalInput::k22},
       {"k23", &EvalInput::k23},
       {"k33", &EvalInput::k33}};
-  for (const std::string& h : header) {
-    if (h != "model" && numeric.find(h) == numeric.end()) {
-      throw std::invalid_argument(fmt::format(
-          "--batch: unknown CSV column '{}'; allowed: a, b, curvature_x, curvature_y, fn, g1, nu1, "
-          "g2, nu2, mu, xi_x, xi_y, phi, k11, k22, k23, k33, model",
-          h));
-    }
-  }
+  std::set<std::string> allowed = {"model"};
+  for (const auto& kv : numeric) allowed.insert(kv.first);
+  reader.require_known_columns(allowed);
+  const std::vector<std::string>& header = reader.header();
   std::map<std::string, std::unique_ptr<fc::TangentialModel>> models;
   fmt::print(
       "row,model,semi_axis_x,semi_axis_y,peak_pressure,force_x,force_y,moment_z,adhesion_"
       "fraction\n");
-  int row = 0, line_no = 1;
-  while (std::getline(std::cin, line)) {
-    ++line_no;
-    if (line.find_first_not_of(" \r\t") == std::string::npos) continue;
-    const std::vector<std::string> cells = split_csv(line);
-    if (cells.size() != header.size()) {
-      throw std::invalid_argument(fmt::format("--batch: stdin line {}: {} cells, header has {}",
-                                              line_no, cells.size(), header.size()));
-    }
+  int row = 0;
+  std::vector<std::string> cells;
+  while (reader.next(cells)) {
     EvalInput in = defaults;
     for (std::size_t i = 0; i < cells.size(); ++i) {
       if (cells[i].empty()) continue;
@@ -204,27 +183,19 @@ int run_batch(const EvalInput& defaults, const fc::ModelOptions& options,
         in.model = cells[i];
         continue;
       }
-      try {
-        std::size_t used = 0;
-        in.*(numeric.at(header[i])) = std::stod(cells[i], &used);
-        if (used != cells[i].size()) throw std::invalid_argument("trailing");
-      } catch (const std::exception&) {
-        throw std::invalid_argument(
-            fmt::format("--batch: stdin line {}, column '{}': not a number: '{}'", line_no,
-                        header[i], cells[i]));
-      }
+      in.*(numeric.at(header[i])) = reader.number(cells, i);
     }
-    auto it = models.find(in.model);
-    if (it == models.end())
-      it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
     try {
+      auto it = models.find(in.model);
+      if (it == models.end())
+        it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
       const EvalOutput out = evaluate(in, *it->second, source);
       fmt::print("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row, in.model,
                  out.patch.semi_axis_x, out.patch.semi_axis_y, out.patch.peak_pressure,
                  out.forces.force_x, out.forces.force_y, out.forces.moment_z,
                  out.forces.adhesion_fraction);
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(fmt::format("--batch: stdin line {}: {}", line_no, e.what()));
+      throw std::invalid_argument(reader.located(e.what()));
     }
     ++row;
   }
@@ -265,7 +236,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   eval->add_option("--mu", in->mu, "friction coefficient");
   eval->add_option("--xi-x", in->xi_x, "longitudinal creepage [-]");
   eval->add_option("--xi-y", in->xi_y, "lateral creepage [-]");
-  eval->add_option("--phi", in->phi, "spin creepage [1/m]");
+  eval->add_option("--spin", in->phi, "spin creepage [1/m]");
+  add_hidden_alias(eval, "--phi", in->phi);
   eval->add_option("--model", in->model,
                    "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
                    "chopaya, polach, fastsim, mim")
@@ -316,8 +288,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       "curve", "Creep curves of every model of a case: CSV, HDF5 and one PNG overlay");
   curve->add_option("case", *curve_case, "contact case YAML (scenarios/cases/contact/)")
       ->required();
-  curve->add_option("--out", *curve_out, "output directory")->capture_default_str();
-  curve->add_flag("--no-png", *no_png, "skip the picture");
+  add_output_option(curve, *curve_out, "output folder", {"--out"})->capture_default_str();
+  add_no_plots_flag(curve, *no_png, {"--no-png"});
   curve->callback([&handler, curve_case, curve_out, no_png] {
     handler = [curve_case, curve_out, no_png] {
       scenarios::ContactCase c = scenarios::load_contact_case(*curve_case);
@@ -353,8 +325,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   CLI::App* patch = contact->add_subcommand(
       "patch", "Patch picture of a case: pressure, traction vectors, adhesion/slip (CSV + PNG)");
   patch->add_option("case", *patch_case, "contact case YAML")->required();
-  patch->add_option("--out", *patch_out, "output directory")->capture_default_str();
-  patch->add_flag("--no-png", *patch_no_png, "skip the picture");
+  add_output_option(patch, *patch_out, "output folder", {"--out"})->capture_default_str();
+  add_no_plots_flag(patch, *patch_no_png, {"--no-png"});
   patch->callback([&handler, patch_case, patch_out, patch_no_png] {
     handler = [patch_case, patch_out, patch_no_png] {
       scenarios::ContactCase c = scenarios::load_contact_case(*patch_case);
@@ -362,19 +334,23 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       const scenarios::PatchPicture pic = scenarios::compute_patch_picture(c, normal);
       const std::string csv = output_path(*patch_out, c.name, "_patch.csv");
       scenarios::write_patch_csv(csv, pic);
-      std::string summary = "[";
+      nlohmann::ordered_json summary = nlohmann::ordered_json::array();
       for (std::size_t k = 0; k < normal.patches.size(); ++k) {
         const fc::ContactPatch& p = normal.patches[k];
-        summary += fmt::format(
-            "{}{{\"patch\": {}, \"y_center\": {:.6g}, \"semi_axis_x\": {:.6g}, \"semi_axis_y\": "
-            "{:.6g}, "
-            "\"normal_force\": {:.6g}, \"peak_pressure\": {:.6g}, \"force_x\": {:.6g}, "
-            "\"force_y\": {:.6g}, \"moment_z\": {:.6g}, \"adhesion_fraction\": {:.4g}}}",
-            k ? ", " : "", k, p.y_center, p.semi_axis_x, p.semi_axis_y, p.normal_force,
-            p.peak_pressure, pic.forces[k].force_x, pic.forces[k].force_y, pic.forces[k].moment_z,
-            pic.forces[k].adhesion_fraction);
+        nlohmann::ordered_json j;
+        j["patch"] = k;
+        j["y_center"] = p.y_center;
+        j["semi_axis_x"] = p.semi_axis_x;
+        j["semi_axis_y"] = p.semi_axis_y;
+        j["normal_force"] = p.normal_force;
+        j["peak_pressure"] = p.peak_pressure;
+        j["force_x"] = pic.forces[k].force_x;
+        j["force_y"] = pic.forces[k].force_y;
+        j["moment_z"] = pic.forces[k].moment_z;
+        j["adhesion_fraction"] = pic.forces[k].adhesion_fraction;
+        summary.push_back(std::move(j));
       }
-      fmt::print("{}]\n{}\n", summary, csv);
+      fmt::print("{}\n{}\n", summary.dump(2), csv);
       if (!*patch_no_png) {
         const std::string png = output_path(*patch_out, c.name, "_patch.png");
         scenarios::run_plot_script(

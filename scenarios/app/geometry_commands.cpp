@@ -9,22 +9,27 @@
 #include <yaml-cpp/yaml.h>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "ferro/contact/geometry/contact_table.hpp"
+#include "ferro/contact/io/text_writer.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 #include "cli.hpp"
+#include "ferro/scenarios/csv_batch.hpp"
 #include "ferro/scenarios/plotting.hpp"
 
 namespace ferro::cli {
@@ -132,99 +137,76 @@ std::string point_csv(const fc::WheelRailPair& pair, const fc::WheelsetPose& pos
 }
 
 std::string result_json(const fc::WheelRailPair& pair, const PoseResult& r) {
-  std::ostringstream os;
-  os << fmt::format(
-      "{{\n  \"pose\": {{\"y_mm\": {:.6f}, \"height_mm\": {:.6f}, \"roll_rad\": {:.9g}, "
-      "\"yaw_rad\": {:.9g}}},\n  \"points\": [",
-      r.pose.lateral * 1e3, r.pose.vertical * 1e3, r.pose.roll, r.pose.yaw);
-  for (std::size_t i = 0; i < r.points.size(); ++i) {
-    const fc::ContactPoint& p = r.points[i];
-    os << (i ? ",\n" : "\n")
-       << fmt::format(
-              "    {{\"side\": \"{}\", \"wheel_y_mm\": {:.6f}, \"rail_y_mm\": {:.6f}, "
-              "\"track_x_mm\": {:.6f}, \"track_y_mm\": {:.6f}, \"track_z_mm\": {:.6f}, "
-              "\"lead_mm\": {:.6f}, "
-              "\"contact_angle_deg\": {:.6f}, \"rolling_radius_mm\": {:.6f}, "
-              "\"curvature_a_per_m\": {:.6g}, \"curvature_b_per_m\": {:.6g}, "
-              "\"penetration_mm\": {:.6e}, \"vertical_gap_mm\": {:.6e}, "
-              "\"normal_force_n\": {:.3f}, \"flange\": {}}}",
-              p.side == fc::Side::left ? "left" : "right", p.wheel_y * 1e3, p.rail_y * 1e3,
-              p.x * 1e3, p.y * 1e3, p.z * 1e3, lead_of(pair, r.pose, p) * 1e3,
-              p.contact_angle * 180.0 / std::numbers::pi, p.rolling_radius * 1e3, p.curvature_a,
-              p.curvature_b, p.penetration * 1e3, p.vertical_gap * 1e3, p.normal_force,
-              p.on_flange() ? "true" : "false");
+  nlohmann::ordered_json j;
+  j["pose"] = {{"y_mm", r.pose.lateral * 1e3},
+               {"height_mm", r.pose.vertical * 1e3},
+               {"roll_rad", r.pose.roll},
+               {"yaw_rad", r.pose.yaw}};
+  j["points"] = nlohmann::ordered_json::array();
+  for (const fc::ContactPoint& p : r.points) {
+    nlohmann::ordered_json q;
+    q["side"] = p.side == fc::Side::left ? "left" : "right";
+    q["wheel_y_mm"] = p.wheel_y * 1e3;
+    q["rail_y_mm"] = p.rail_y * 1e3;
+    q["track_x_mm"] = p.x * 1e3;
+    q["track_y_mm"] = p.y * 1e3;
+    q["track_z_mm"] = p.z * 1e3;
+    q["lead_mm"] = lead_of(pair, r.pose, p) * 1e3;
+    q["contact_angle_deg"] = p.contact_angle * 180.0 / std::numbers::pi;
+    q["rolling_radius_mm"] = p.rolling_radius * 1e3;
+    q["curvature_a_per_m"] = p.curvature_a;
+    q["curvature_b_per_m"] = p.curvature_b;
+    q["penetration_mm"] = p.penetration * 1e3;
+    q["vertical_gap_mm"] = p.vertical_gap * 1e3;
+    q["normal_force_n"] = p.normal_force;
+    q["flange"] = p.on_flange();
+    j["points"].push_back(std::move(q));
   }
-  os << "\n  ]\n}\n";
-  return os.str();
-}
-
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) {
-    const auto b = cell.find_first_not_of(" \t\r");
-    const auto e = cell.find_last_not_of(" \t\r");
-    out.push_back(b == std::string::npos ? "" : cell.substr(b, e - b + 1));
-  }
-  return out;
+  return j.dump(2) + "\n";
 }
 
 int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
               const std::string& out_path, const PoseInput& defaults, double estar) {
   std::ifstream in(in_path);
   if (!in) throw std::invalid_argument(fmt::format("--batch: cannot open '{}'", in_path));
-  std::string line;
-  int line_no = 0;
-  std::vector<std::string> header;
-  while (header.empty() && std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line[0] != '#') header = split_csv(line);
-  }
+  scenarios::CsvBatchReader reader(in, in_path);
+  const std::vector<std::string>& header = reader.header();
   const std::map<std::string, double PoseInput::*> known{{"y_mm", &PoseInput::y_mm},
                                                          {"roll_rad", &PoseInput::roll_rad},
                                                          {"yaw_rad", &PoseInput::yaw_rad},
                                                          {"height_mm", &PoseInput::height_mm},
                                                          {"load_n", &PoseInput::load_n}};
   std::vector<double PoseInput::*> cols;
-  bool has_y = false;
   for (const auto& h : header) {
     const auto it = known.find(h);
     cols.push_back(it == known.end() ? nullptr : it->second);
-    has_y = has_y || h == "y_mm";
   }
-  if (!has_y) {
-    throw std::invalid_argument(fmt::format(
-        "{}:{}: header needs a 'y_mm' column (known: y_mm, roll_rad, yaw_rad, height_mm, "
-        "load_n; other columns are copied to the output)",
-        in_path, line_no));
+  if (!reader.has_column("y_mm")) {
+    throw std::invalid_argument(reader.located(
+        "header needs a 'y_mm' column (known: y_mm, roll_rad, yaw_rad, height_mm, load_n; other "
+        "columns are copied to the output)"));
   }
-  std::ofstream out_file;
-  if (out_path != "-") {
-    out_file.open(out_path);
-    if (!out_file) throw std::runtime_error(fmt::format("--out: cannot write '{}'", out_path));
-  }
-  std::ostream& out = out_path == "-" ? std::cout : out_file;
+  std::optional<io::TextWriter> out_file;
+  if (out_path != "-") out_file.emplace(out_path);
+  std::ostringstream out;  // one output row at a time
+  const auto emit = [&] {
+    if (out_file) {
+      out_file->write(out.str());
+    } else {
+      std::cout << out.str();
+      if (!std::cout) throw std::runtime_error("cannot write the standard output");
+    }
+    out.str("");
+  };
   std::string echo_header;
   for (const auto& h : header) echo_header += h + ",";
   out << echo_header << "solved_height_mm,solved_roll_rad," << kCsvPointHeader << "\n";
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty() || line[0] == '#') continue;
-    const auto cells = split_csv(line);
-    if (cells.size() != header.size()) {
-      throw std::invalid_argument(fmt::format("{}:{}: expected {} columns, got {}", in_path,
-                                              line_no, header.size(), cells.size()));
-    }
+  emit();
+  std::vector<std::string> cells;
+  while (reader.next(cells)) {
     PoseInput pin = defaults;
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (!cols[c]) continue;
-      try {
-        pin.*cols[c] = std::stod(cells[c]);
-      } catch (const std::exception&) {
-        throw std::invalid_argument(fmt::format("{}:{}: column '{}': '{}' is not a number", in_path,
-                                                line_no, header[c], cells[c]));
-      }
+      if (cols[c]) pin.*cols[c] = reader.number(cells, c);
     }
     const PoseResult r = solve_pose(pair, pin, estar);
     std::string echo;
@@ -232,7 +214,10 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
     const std::string solved = fmt::format("{:.6f},{:.9g},", r.pose.vertical * 1e3, r.pose.roll);
     if (r.points.empty()) out << echo << solved << "none" << std::string(14, ',') << "\n";
     for (const auto& p : r.points) out << echo << solved << point_csv(pair, r.pose, p) << "\n";
+    emit();
   }
+  if (out_file) out_file->close();
+  std::cout.flush();
   return kExitOk;
 }
 
@@ -280,37 +265,37 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
   table.save_hdf5((dir / "contact_table.h5").string());
 
   // Contact-point diagram and delta_r(y).
-  std::ofstream diag(dir / "contact_points.csv");
-  diag << "y_mm,delta_r_mm,roll_rad,left_wheel_y_mm,left_rail_y_mm,left_angle_deg,"
-          "right_wheel_y_mm,right_rail_y_mm,right_angle_deg,right_radius_mm,left_radius_mm\n";
+  io::TextWriter diag((dir / "contact_points.csv").string());
+  diag.write("y_mm,delta_r_mm,roll_rad,left_wheel_y_mm,left_rail_y_mm,left_angle_deg,"
+          "right_wheel_y_mm,right_rail_y_mm,right_angle_deg,right_radius_mm,left_radius_mm\n");
   std::vector<double> ys, dr;
   for (std::size_t i = 0; i < table.lateral().size(); ++i) {
     const double y = table.lateral()[i];
     const fc::ContactTableEntry e = table.lookup(y);
     ys.push_back(y);
     dr.push_back(e.delta_r);
-    diag << fmt::format(
+    diag.print(
         "{:.4f},{:.6f},{:.9g},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n", y * 1e3,
         e.delta_r * 1e3, e.roll, e.wheel_y[0] * 1e3, e.rail_y[0] * 1e3,
         e.contact_angle[0] * 180.0 / std::numbers::pi, e.wheel_y[1] * 1e3, e.rail_y[1] * 1e3,
         e.contact_angle[1] * 180.0 / std::numbers::pi, e.rolling_radius[1] * 1e3,
         e.rolling_radius[0] * 1e3);
   }
-  std::ofstream con(dir / "conicity.csv");
-  con << "amplitude_mm,equivalent_conicity\n";
+  io::TextWriter con((dir / "conicity.csv").string());
+  con.write("amplitude_mm,equivalent_conicity\n");
   for (int k = 1; k <= 20; ++k) {
     const double a = 0.5e-3 * k;
-    con << fmt::format("{:.2f},{:.6f}\n", a * 1e3, fc::equivalent_conicity(ys, dr, a));
+    con.print("{:.2f},{:.6f}\n", a * 1e3, fc::equivalent_conicity(ys, dr, a));
   }
   // Profiles in track coordinates for the diagram (right side).
-  std::ofstream prof(dir / "profiles.csv");
-  prof << "kind,y_mm,z_mm\n";
+  io::TextWriter prof((dir / "profiles.csv").string());
+  prof.write("kind,y_mm,z_mm\n");
   for (std::size_t i = 0; i < pair.wheel_profile().size(); ++i) {
-    prof << fmt::format("wheel,{:.5f},{:.5f}\n", pair.wheel_profile().y[i] * 1e3,
+    prof.print("wheel,{:.5f},{:.5f}\n", pair.wheel_profile().y[i] * 1e3,
                         pair.wheel_profile().z[i] * 1e3);
   }
   for (std::size_t i = 0; i < pair.rail_profile().size(); ++i) {
-    prof << fmt::format("rail,{:.5f},{:.5f}\n", pair.rail_profile().y[i] * 1e3,
+    prof.print("rail,{:.5f},{:.5f}\n", pair.rail_profile().y[i] * 1e3,
                         (pair.rail_profile().z[i] - pair.rail_reference().top_z) * 1e3);
   }
   diag.close();
@@ -332,20 +317,31 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
 }  // namespace
 
 void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
-  CLI::App* geo =
-      app.add_subcommand("geometry",
-                         "Wheel-rail contact geometry: 'geometry PAIR.yaml' (tables, diagram, "
-                         "conicity, plots) or 'geometry search'");
+  CLI::App* geo = app.add_subcommand(
+      "geometry", "Wheel-rail contact geometry: 'geometry pair' (tables, diagram, conicity, "
+                  "plots) or 'geometry search' (contact points of one position)");
   geo->require_subcommand(0, 1);
+  const char* pair_help =
+      "PAIR.yaml (track: gauge, gauge_height, rail_profile, [rail_inclination]; wheelset: "
+      "wheel_profile, flange_back_distance, flange_back_position, nominal_radius; mm; the "
+      "Manchester benchmark file works as is)";
   auto pair_yaml = std::make_shared<std::string>();
   auto out_dir = std::make_shared<std::string>("geometry_out");
   auto no_plot = std::make_shared<bool>(false);
-  geo->add_option("pair", *pair_yaml,
-                  "PAIR.yaml (track: gauge, gauge_height, rail_profile, [rail_inclination]; "
-                  "wheelset: wheel_profile, flange_back_distance, flange_back_position, "
-                  "nominal_radius; mm; the Manchester benchmark file works as is)");
-  geo->add_option("--out-dir", *out_dir, "output directory")->capture_default_str();
-  geo->add_flag("--no-plot", *no_plot, "write the data files only");
+  CLI::App* pair_cmd = geo->add_subcommand(
+      "pair", "Contact table (HDF5), contact-point diagram data, conicity and plots of a pair");
+  pair_cmd->add_option("pair", *pair_yaml, pair_help)->required();
+  add_output_option(pair_cmd, *out_dir, "output folder", {"--out-dir"})->capture_default_str();
+  add_no_plots_flag(pair_cmd, *no_plot, {"--no-plot"});
+  pair_cmd->callback([&handler, pair_yaml, out_dir, no_plot] {
+    handler = [pair_yaml, out_dir, no_plot] {
+      return run_pair_report(*pair_yaml, *out_dir, !*no_plot);
+    };
+  });
+  // The former spelling 'geometry PAIR.yaml --out-dir D --no-plot', hidden, for one release.
+  geo->add_option("pair", *pair_yaml, pair_help)->group("");
+  add_hidden_alias(geo, "--out-dir", *out_dir);
+  geo->add_flag("--no-plot", *no_plot)->group("");
 
   CLI::App* search = geo->add_subcommand(
       "search", "Every wheel-rail contact point of one wheelset position, as JSON");
@@ -353,7 +349,8 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   auto pin = std::make_shared<PoseInput>();
   auto batch = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>("-");
-  auto shear_mpa = std::make_shared<double>(82000.0);
+  auto shear = std::make_shared<double>(82.0e9);
+  auto shear_mpa = std::make_shared<double>(std::numeric_limits<double>::quiet_NaN());
   auto poisson = std::make_shared<double>(0.28);
   search->add_option("--wheel", po->wheel, "wheel profile (.prw or two-column mm)")->required();
   search->add_option("--rail", po->rail, "rail profile (.prr or two-column mm)")->required();
@@ -381,16 +378,19 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
       search->add_option("--height-mm", pin->height_mm, "axle-centre drop below nominal (+ down)");
   search->add_option("--load-n", pin->load_n, "total vertical load: solve the height (Hertz)")
       ->excludes(h);
-  search->add_option("--shear-modulus-mpa", *shear_mpa, "for --load-n")->capture_default_str();
+  search->add_option("--shear-modulus", *shear, "for --load-n [Pa]")->capture_default_str();
+  add_hidden_alias(search, "--shear-modulus-mpa", *shear_mpa);
   search->add_option("--poisson", *poisson, "for --load-n")->capture_default_str();
   search->add_option("--batch", *batch,
                      "CSV in (header with y_mm and optional roll_rad, yaw_rad, height_mm, "
                      "load_n): one CSV row per contact point out");
-  search->add_option("--out", *out, "batch output CSV ('-' = stdout)")->capture_default_str();
+  add_output_option(search, *out, "batch output CSV ('-' = stdout)", {"--out"})
+      ->capture_default_str();
 
-  search->callback([&handler, po, pin, batch, out, shear_mpa, poisson] {
-    handler = [po, pin, batch, out, shear_mpa, poisson] {
-      const double e = 2.0 * (*shear_mpa) * 1e6 * (1.0 + *poisson);
+  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson] {
+    handler = [po, pin, batch, out, shear, shear_mpa, poisson] {
+      const double g = std::isnan(*shear_mpa) ? *shear : *shear_mpa * 1e6;
+      const double e = 2.0 * g * (1.0 + *poisson);
       const double estar = e / (2.0 * (1.0 - (*poisson) * (*poisson)));
       const fc::WheelRailPair pair = make_pair(*po);
       if (!batch->empty()) return run_batch(pair, *batch, *out, *pin, estar);
@@ -398,15 +398,14 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
       return kExitOk;
     };
   });
-  geo->callback([&handler, geo, search, pair_yaml, out_dir, no_plot] {
-    if (search->parsed()) return;
+  geo->callback([&handler, search, pair_cmd, pair_yaml, out_dir, no_plot] {
+    if (search->parsed() || pair_cmd->parsed()) return;
     if (pair_yaml->empty()) {
-      throw CLI::ValidationError("geometry", "give PAIR.yaml or the 'search' subcommand");
+      throw CLI::ValidationError("geometry", "give the 'pair' or the 'search' subcommand");
     }
     handler = [pair_yaml, out_dir, no_plot] {
       return run_pair_report(*pair_yaml, *out_dir, !*no_plot);
     };
-    (void)geo;
   });
 }
 

@@ -1,4 +1,4 @@
-// `ferrodyn mim`: one MIM (boundary-element) rolling-contact solve on a Hertzian patch.
+// `ferrodyn contact mim`: one MIM (boundary-element) rolling-contact solve on a Hertzian patch.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "ferro/contact/mim/mim.hpp"
@@ -15,28 +16,39 @@ namespace ferro::cli {
 
 namespace {
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 struct MimArgs {
-  double a_mm = std::numeric_limits<double>::quiet_NaN();
-  double b_mm = std::numeric_limits<double>::quiet_NaN();
+  double a = kNaN, b = kNaN;        // semi-axes [m]
+  double a_mm = kNaN, b_mm = kNaN;  // old spellings [mm]
   double normal_force = std::numeric_limits<double>::quiet_NaN();
   double creepage_x = 0.0;
   double creepage_y = 0.0;
   double spin_per_m = 0.0;
   double friction = 0.3;
-  double young_gpa = 210.0;
+  double young = 210.0e9;    // [Pa]
+  double young_gpa = kNaN;   // old spelling [GPa]
   double poisson = 0.28;
   int elements = 40;
   std::string out;
 };
 
+// The value given under the SI name, else under the old non-SI one (scaled), else an error.
+double si_value(double si, double old, double scale, const char* name) {
+  if (!std::isnan(si)) return si;
+  if (!std::isnan(old)) return old * scale;
+  throw std::invalid_argument(fmt::format("contact mim: {} is required", name));
+}
+
 int run_mim(const MimArgs& args) {
   contact::mim::HertzRollingInput in;
-  in.semi_axis_x = args.a_mm * 1.0e-3;
-  in.semi_axis_y = args.b_mm * 1.0e-3;
+  in.semi_axis_x = si_value(args.a, args.a_mm, 1.0e-3, "--a [m]");
+  in.semi_axis_y = si_value(args.b, args.b_mm, 1.0e-3, "--b [m]");
   in.normal_force = args.normal_force;
   in.rolling =
       contact::mim::RollingInput{args.creepage_x, args.creepage_y, args.spin_per_m, args.friction};
-  in.body1 = in.body2 = contact::Material::from_young(args.young_gpa * 1.0e9, args.poisson);
+  in.body1 = in.body2 = contact::Material::from_young(
+      std::isnan(args.young_gpa) ? args.young : args.young_gpa * 1.0e9, args.poisson);
   in.elements_minor = args.elements;
   const auto t0 = std::chrono::steady_clock::now();
   const contact::mim::MimResult r = contact::mim::solve_hertz_rolling(in);
@@ -68,20 +80,29 @@ int run_mim(const MimArgs& args) {
 
 void add_mim_commands(CLI::App& app, VerbHandler& handler) {
   auto args = std::make_shared<MimArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "mim", "MIM boundary-element rolling contact on a Hertz ellipse (normal + steady rolling)");
-  cmd->add_option("--a-mm", args->a_mm, "semi-axis along the rolling direction [mm]")->required();
-  cmd->add_option("--b-mm", args->b_mm, "lateral semi-axis [mm]")->required();
-  cmd->add_option("--fn", args->normal_force, "normal force [N]")->required();
-  cmd->add_option("--xi-x", args->creepage_x, "longitudinal creepage [-] (default 0)");
-  cmd->add_option("--xi-y", args->creepage_y, "lateral creepage [-] (default 0)");
-  cmd->add_option("--spin", args->spin_per_m, "spin creepage [1/m] (default 0)");
-  cmd->add_option("--mu", args->friction, "friction coefficient [-] (default 0.3)");
-  cmd->add_option("--young-gpa", args->young_gpa, "Young's modulus of both bodies [GPa] (210)");
-  cmd->add_option("--poisson", args->poisson, "Poisson's ratio of both bodies [-] (0.28)");
-  cmd->add_option("--elements", args->elements, "elements across the shorter axis (40)");
-  cmd->add_option("--out", args->out, "HDF5 file for the pressure, traction, slip fields");
-  cmd->callback([args, &handler] { handler = [args] { return run_mim(*args); }; });
+  const auto define = [&](CLI::App* cmd) {
+    cmd->add_option("--a", args->a, "semi-axis along the rolling direction [m]");
+    cmd->add_option("--b", args->b, "lateral semi-axis [m]");
+    cmd->add_option("--fn", args->normal_force, "normal force [N]")->required();
+    cmd->add_option("--xi-x", args->creepage_x, "longitudinal creepage [-] (default 0)");
+    cmd->add_option("--xi-y", args->creepage_y, "lateral creepage [-] (default 0)");
+    cmd->add_option("--spin", args->spin_per_m, "spin creepage [1/m] (default 0)");
+    cmd->add_option("--mu", args->friction, "friction coefficient [-] (default 0.3)");
+    cmd->add_option("--young", args->young, "Young's modulus of both bodies [Pa] (210e9)");
+    cmd->add_option("--poisson", args->poisson, "Poisson's ratio of both bodies [-] (0.28)");
+    cmd->add_option("--elements", args->elements, "elements across the shorter axis (40)");
+    add_output_option(cmd, args->out, "HDF5 file for the pressure, traction, slip fields",
+                      {"--out"});
+    add_hidden_alias(cmd, "--a-mm", args->a_mm);
+    add_hidden_alias(cmd, "--b-mm", args->b_mm);
+    add_hidden_alias(cmd, "--young-gpa", args->young_gpa);
+    cmd->callback([args, &handler] { handler = [args] { return run_mim(*args); }; });
+  };
+  const char* help =
+      "MIM boundary-element rolling contact on a Hertz ellipse (normal + steady rolling)";
+  define(app.get_subcommand("contact")->add_subcommand("mim", help));
+  // The former top-level spelling, hidden, for one release.
+  define(app.add_subcommand("mim", help)->group(""));
 }
 
 }  // namespace ferro::cli

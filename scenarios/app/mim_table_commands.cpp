@@ -20,8 +20,8 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
   CLI::App* cmd = contact->add_subcommand(
       "mim-table",
       "Precompute MIM creep forces over normalised creepages, spin and a/b into an HDF5 table "
-      "(model mim_table; layout in docs/reports/mim-integration.md)");
-  cmd->add_option("--out", *out, "HDF5 file to write")->required();
+      "(model mim_table; layout in docs/OUTPUT.md)");
+  add_output_option(cmd, *out, "HDF5 file to write (required)", {"--out"});
   cmd->add_option("--elements", spec->elements, "MIM elements across the shorter axis")
       ->capture_default_str();
   cmd->add_option("--threads", spec->threads, "build threads")->capture_default_str();
@@ -29,6 +29,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
       ->capture_default_str();
   cmd->callback([&handler, out, spec] {
     handler = [out, spec] {
+      if (out->empty()) throw std::invalid_argument("contact mim-table: -o/--output is required");
       const auto t0 = std::chrono::steady_clock::now();
       const contact::MimTable table = contact::MimTable::build(*spec);
       table.write_hdf5(*out);

@@ -60,6 +60,7 @@ int do_run(const RunArgs& a) {
     if (!(a.t_end > 0.0))
       throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", a.t_end));
     scene.simulation.t_end = a.t_end;
+    (void)scenarios::output_sample_count(a.t_end, scene.output.interval, "--t-end");
   }
   if (!std::isnan(a.speed)) {
     if (!(a.speed > 0.0))
@@ -78,7 +79,6 @@ int do_run(const RunArgs& a) {
   opt.pace = a.pace;
   if (!a.csv.empty()) opt.csv = a.csv;
   Progress progress(scene.simulation.t_end, stderr);
-  InterruptGuard guard;
   if (!a.quiet) opt.progress = [&](double t) { progress.update(t); };
   opt.should_stop = [] { return InterruptGuard::signal_received() != 0; };
   opt.stop_reason = "interrupted by signal";
@@ -258,9 +258,12 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
   run->add_option("--plot-dir", run_args->plot_dir,
                   "Folder for the plots (default: <output>_plots)");
-  run->add_flag("--no-plots", run_args->no_plots, "Do not draw plots");
+  add_no_plots_flag(run, run_args->no_plots);
   run->add_flag("-q,--quiet", run_args->quiet, "No progress display");
-  run->callback([&handler, run_args] { handler = [run_args] { return do_run(*run_args); }; });
+  run->callback([&handler, run_args] {
+    InterruptGuard::claim();
+    handler = [run_args] { return do_run(*run_args); };
+  });
 
   auto eig_args = std::make_shared<EigArgs>();
   auto* eig =
@@ -273,14 +276,14 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("--points", eig_args->points, "Number of speeds in the sweep");
   eig->add_option("--tangential", eig_args->tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
-  eig->add_flag("--no-plots", eig_args->no_plots, "Do not draw plots");
+  add_no_plots_flag(eig, eig_args->no_plots);
   eig->callback([&handler, eig_args] { handler = [eig_args] { return do_eig(*eig_args); }; });
 
   auto plot_args = std::make_shared<PlotArgs>();
   auto* plot = app.add_subcommand("plot", "Plot signals of a ferrodyn HDF5 file to PNG and SVG");
   plot->add_option("file", plot_args->file, "HDF5 file written by ferrodyn")->required();
   plot->add_option("signals", plot_args->signals, "Signals to plot (default: all)");
-  plot->add_option("-o,--out", plot_args->out_dir, "Output folder (default: <file>_plots)");
+  add_output_option(plot, plot_args->out_dir, "Output folder (default: <file>_plots)", {"--out"});
   plot->add_option("--format", plot_args->format, "png, svg or png,svg");
   plot->callback([&handler, plot_args] { handler = [plot_args] { return do_plot(*plot_args); }; });
 

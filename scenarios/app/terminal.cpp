@@ -9,6 +9,7 @@
 namespace ferro::cli {
 namespace {
 volatile std::sig_atomic_t g_signal = 0;
+bool g_claimed = false;
 extern "C" void on_signal(int sig) {
   g_signal = sig;
 }
@@ -64,12 +65,32 @@ InterruptGuard::InterruptGuard() {
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, &old_int_);
   sigaction(SIGTERM, &sa, &old_term_);
+  // A parent may start the program with these signals blocked: a signal sent meanwhile is
+  // pending, and is delivered to the handler now.
+  sigset_t stop;
+  sigemptyset(&stop);
+  sigaddset(&stop, SIGINT);
+  sigaddset(&stop, SIGTERM);
+  sigprocmask(SIG_UNBLOCK, &stop, nullptr);
 }
 
 InterruptGuard::~InterruptGuard() {
+  if (installed_) {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+}
+
+void InterruptGuard::release() {
+  if (!installed_) return;
+  installed_ = false;
   sigaction(SIGINT, &old_int_, nullptr);
   sigaction(SIGTERM, &old_term_, nullptr);
+  if (g_signal != 0) std::raise(g_signal);
 }
+
+void InterruptGuard::claim() { g_claimed = true; }
+bool InterruptGuard::claimed() { return g_claimed; }
 
 int InterruptGuard::signal_received() {
   return g_signal;

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <thread>
 
+#include "ferro/contact/io/text_writer.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 
@@ -78,6 +80,61 @@ std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
 
 }  // namespace
 
+std::uint64_t output_sample_count(double t_end, double interval, const std::string& where) {
+  if (!(interval > 0.0) || !std::isfinite(interval)) {
+    throw std::invalid_argument(
+        fmt::format("{}: must be a positive finite number of seconds, got {}", where, interval));
+  }
+  if (!(t_end >= 0.0) || !std::isfinite(t_end)) {
+    throw std::invalid_argument(fmt::format("{}: t_end must be finite and >= 0 s, got {}", where,
+                                            t_end));
+  }
+  const double n = std::floor(t_end / interval + 1e-9) + 1.0;
+  if (!(n <= kMaxOutputSamples)) {
+    throw std::invalid_argument(fmt::format(
+        "{}: {} s over t_end = {} s gives {:.3g} samples; at most {:.0e} are allowed (use an "
+        "interval of at least {:.3g} s)",
+        where, interval, t_end, n, kMaxOutputSamples, t_end / kMaxOutputSamples));
+  }
+  return static_cast<std::uint64_t>(n) + (t_end - (n - 1.0) * interval > 1e-9 * interval ? 1 : 0);
+}
+
+namespace {
+
+// Output times i * interval for i in [first, last], plus t_end after the last regular time when
+// it is not on the grid (the same times as vehicle::output_grid, produced block by block).
+std::vector<double> output_block(std::uint64_t first, std::uint64_t last, std::uint64_t regular,
+                                 double t_end, double interval) {
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(last - first + 1));
+  for (std::uint64_t i = first; i <= last; ++i) {
+    times.push_back(i < regular ? static_cast<double>(i) * interval : t_end);
+  }
+  return times;
+}
+
+// Waits until wall time `until`, returning early (false) when `should_stop` fires.
+bool pace_until(std::chrono::steady_clock::time_point until,
+                const std::function<bool()>& should_stop) {
+  constexpr auto kPoll = std::chrono::milliseconds(20);  // reaction time to a stop request
+  while (std::chrono::steady_clock::now() < until) {
+    if (should_stop && should_stop()) return false;
+    std::this_thread::sleep_until(std::min(until, std::chrono::steady_clock::now() + kPoll));
+  }
+  return true;
+}
+
+// The CSV file beside the HDF5 output; a device output (e.g. /dev/null) takes the CSV too.
+std::string csv_path_for(const std::string& output) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(output, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    return output;
+  return std::filesystem::path(output).replace_extension(".csv").string();
+}
+
+}  // namespace
+
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
   const auto x0 = initial_state(scene, *system);
@@ -102,7 +159,9 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   summary.peak_abs.assign(n_channels, 0.0);
   summary.final_values.assign(n_channels, 0.0);
 
-  const auto times = vehicle::output_grid(0.0, scene.simulation.t_end, scene.output.interval);
+  const double t_end = scene.simulation.t_end, interval = scene.output.interval;
+  const std::uint64_t n_times = output_sample_count(t_end, interval);
+  const std::uint64_t n_regular = static_cast<std::uint64_t>(std::floor(t_end / interval + 1e-9)) + 1;
   auto integrator = vehicle::make_integrator(scene.solver);
   const auto csv_names = resolve_csv(options.csv.value_or(scene.output.csv), summary.channels);
   std::vector<std::size_t> csv_index;
@@ -115,40 +174,44 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   H5File file = H5File::create(summary.output_file);
   write_metadata(file, scene, "time_simulation");
   set_status(file, "running", "", 0.0);
-  std::ofstream csv;
-  if (!csv_index.empty()) {
-    summary.csv_file =
-        std::filesystem::path(summary.output_file).replace_extension(".csv").string();
-    csv.open(summary.csv_file);
-    if (!csv)
-      throw std::runtime_error(fmt::format("cannot create CSV file '{}'", summary.csv_file));
-    csv << "time";
-    for (auto i : csv_index) csv << ',' << summary.channels[i].name;
-    csv << '\n';
-  }
 
   const auto wall_start = std::chrono::steady_clock::now();
   bool stopped_by_request = false;
   try {
+    std::optional<io::TextWriter> csv;
+    if (!csv_index.empty()) {
+      summary.csv_file = csv_path_for(summary.output_file);
+      // The CSV leaves the HDF5 writer's reserve free, so the HDF5 file can always be closed.
+      csv.emplace(summary.csv_file, TimeSeriesWriter::kCloseReserve);
+      csv->write("time");
+      for (auto i : csv_index) csv->print(",{}", summary.channels[i].name);
+      csv->write("\n");
+    }
     TimeSeriesWriter writer(file, summary.channels, scene.output.flush_seconds);
     std::vector<double> row(n_channels);
+    bool skip_first = false;  // each block after the first starts at the previous block's end
     const auto observer = [&](double t, std::span<const double> x) {
+      if (skip_first) {
+        skip_first = false;
+        return true;
+      }
       std::copy(x.begin(), x.end(), row.begin());
       system->signals(t, x, std::span<double>(row).subspan(n_states));
       writer.append(t, row);
+      summary.t_reached = t;
       for (std::size_t i = 0; i < n_channels; ++i)
         summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
       summary.final_values = row;
-      if (csv.is_open()) {
-        csv << fmt::format("{:.10g}", t);
-        for (auto i : csv_index) csv << fmt::format(",{:.10g}", row[i]);
-        csv << '\n';
+      if (csv) {
+        csv->print("{:.10g}", t);
+        for (auto i : csv_index) csv->print(",{:.10g}", row[i]);
+        csv->write("\n");
       }
       if (options.progress) options.progress(t);
       if (options.pace > 0.0) {
-        std::this_thread::sleep_until(
-            wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                             std::chrono::duration<double>(t / options.pace)));
+        pace_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                    std::chrono::duration<double>(t / options.pace)),
+                   options.should_stop);
       }
       if (options.should_stop && options.should_stop()) {
         stopped_by_request = true;
@@ -156,9 +219,30 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       }
       return true;
     };
-    const auto result = integrator->integrate(*system, x0, times, observer);
+    // The output times go to the integrator block by block, so memory does not grow with the
+    // number of samples; the integrator continues each block from the state the previous one
+    // reached.
+    constexpr std::uint64_t kBlock = 1u << 16;  // output times per block
+    vehicle::IntegrationResult result;
+    std::vector<double> x = x0;
+    for (std::uint64_t first = 0; first < n_times;) {
+      const std::uint64_t last = std::min(n_times - 1, first + kBlock);
+      const auto times = output_block(first, last, n_regular, t_end, interval);
+      skip_first = first > 0;
+      auto part = integrator->integrate(*system, x, times, observer);
+      result.steps += part.steps;
+      result.rhs_evaluations += part.rhs_evaluations;
+      result.status = part.status;
+      result.t_reached = part.t_reached;
+      result.message = part.message;
+      result.state = std::move(part.state);
+      if (result.status != vehicle::IntegrationResult::Status::kCompleted || last + 1 >= n_times)
+        break;
+      x = result.state;
+      first = last;
+    }
     writer.flush();
-    if (csv.is_open()) csv.flush();
+    if (csv) csv->close();
     summary.status = result.status;
     summary.status_text = vehicle::to_string(result.status);
     summary.t_reached = result.t_reached;
@@ -174,7 +258,12 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
                         "state at the failure time t_reached, in state order");
     }
   } catch (const std::exception& e) {
-    set_status(file, "error", e.what(), summary.t_reached);
+    // Record the failure in the file and close it; the original error is what the caller sees.
+    try {
+      set_status(file, "error", e.what(), summary.t_reached);
+      file.close();
+    } catch (const std::exception&) {
+    }
     throw;
   }
   summary.wall_seconds =
@@ -183,6 +272,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   file.set_attribute("/", "steps", summary.steps);
   file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
   set_status(file, summary.status_text, summary.message, summary.t_reached);
+  file.close();
   return summary;
 }
 

@@ -11,6 +11,7 @@
 
 #include "ferro/contact/tangential_model.hpp"
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/vehicle_file.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 #include "located.hpp"
@@ -295,6 +296,7 @@ Scene load_scene(const std::string& path) {
     v.file = o.string_or("file", v.file);
     v.interval = o.number_or("interval", v.interval);
     if (!(v.interval > 0.0)) o.fail("interval", fmt::format("must be > 0 s, got {}", v.interval));
+    validated(o, [&] { (void)output_sample_count(scene.simulation.t_end, v.interval, "interval"); });
     v.flush_seconds = o.number_or("flush_seconds", v.flush_seconds);
     if (!(v.flush_seconds > 0.0))
       o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));

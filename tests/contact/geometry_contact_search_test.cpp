@@ -135,7 +135,7 @@ TEST(geometry_contact_search, manchester_a22_all_cases_tread_to_flange_between_6
     EXPECT_NEAR(lw.vertical_load[0] + lw.vertical_load[1], 2.0 * kLoadPerWheel,
                 1e-6 * kLoadPerWheel);
     // Left wheel stays on its tread; right wheel: tread/flange root up to 6.0 mm, flange from
-    // 6.5 mm (issue 5 must-show 2). Threshold 30 deg (kFlangeAngle): the flange root at 6.0 mm
+    // 6.5 mm (Manchester benchmark ). Threshold 30 deg (kFlangeAngle): the flange root at 6.0 mm
     // is at ~24 deg, the flange flank contacts from 6.5 mm are at 45-67 deg (the point climbs
     // towards the flange tip as the prescribed roll grows).
     EXPECT_LT(max_angle[0], 5.0 * std::numbers::pi / 180.0) << "case " << k.id;

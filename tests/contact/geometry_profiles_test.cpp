@@ -74,7 +74,7 @@ TEST(geometry_profiles, shared_simpack_files_load_in_si) {
 }
 
 TEST(geometry_profiles, s1002_generator_matches_benchmark_file) {
-  // Issue 5 must-show 1: within 0.05 mm over tread and flange (normal distance, so the
+  // Within 0.05 mm over tread and flange (normal distance, so the
   // near-vertical flange back is measured fairly).
   constexpr double kTolerance = 0.05e-3;
   const fc::Profile file = fc::read_simpack_profile(kWheelFile);
@@ -215,7 +215,7 @@ TEST(geometry_profiles, conical_tread_has_its_conicity) {
 }
 
 TEST(geometry_profiles, uic60_generator_matches_benchmark_rail_after_1_40) {
-  // Issue 5 must-show 1: the 60E1 generator, inclined 1:40 like the file, matches the (already
+  // The 60E1 generator, inclined 1:40 like the file, matches the (already
   // inclined) .prr within 0.05 mm on the head (normal distance, depth <= 30 mm below the top).
   // The two arc-end abscissae are reconstructed from this same file (see profile.hpp), so this
   // checks the arc construction (radii, tangencies, 1:20 flanks) and the inclination; the

@@ -1,6 +1,5 @@
 // One-call MIM API (Hertz input as a tangential-model adapter gives it) and HDF5 output.
 #include <gtest/gtest.h>
-#include <hdf5.h>
 
 #include <cmath>
 #include <cstdio>
@@ -9,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/io/hdf5.hpp"
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/mim/mim.hpp"
@@ -68,21 +68,20 @@ TEST(MimApi, hdf5_round_trip) {
   const MimResult r = solve_hertz_rolling(in);
   const std::string path = std::string(FERRO_BINARY_DIR) + "/mim_api_test.h5";
   write_hdf5(r, path);
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  ASSERT_GE(file, 0);
-  const hid_t set = H5Dopen2(file, "traction_x_Pa", H5P_DEFAULT);
-  std::vector<double> tx(r.grid.size());
-  ASSERT_GE(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, tx.data()), 0);
-  H5Dclose(set);
-  const hid_t attr = H5Aopen(file, "force_x_N", H5P_DEFAULT);
+  std::vector<double> tx;
   double fx = 0.0;
-  ASSERT_GE(H5Aread(attr, H5T_NATIVE_DOUBLE, &fx), 0);
-  H5Aclose(attr);
-  H5Fclose(file);
+  {
+    const ferro::io::H5File file = ferro::io::H5File::open_read(path);
+    tx = file.read_array("/traction_x_Pa");
+    fx = file.number_attribute("/", "force_x_N");
+  }
+  ASSERT_EQ(tx.size(), r.grid.size());
   std::remove(path.c_str());
   EXPECT_EQ(fx, r.force_x);
   for (std::size_t i = 0; i < tx.size(); ++i) EXPECT_EQ(tx[i], r.traction_x[i]);
-  EXPECT_THROW(write_hdf5(r, "/nonexistent_dir/x.h5"), std::runtime_error);
+  // A folder that cannot exist (its parent is a file): the error names the file and the cause.
+  const std::string bad = std::string(FERRO_SOURCE_DIR) + "/README.md/x.h5";
+  EXPECT_THROW(write_hdf5(r, bad), std::runtime_error);
 }
 
 // The cached, unit-scaled solver must give the same physics as a direct SI solve on the same grid

@@ -43,8 +43,8 @@ using ferro::test::mim_creep_coefficients;
 
 // Circular contact: the initial slopes C11, C22, C23 against Kalker's table (annex A.2, nu =
 // 0.28 interpolated), Richardson-extrapolated from 40 and 80 elements across the patch (the
-// steady-rolling difference of eq. 113 is first order in h = dx). Tolerance 2 % (issue #4;
-// measured -0.4 %, 0.0 %, 0.0 %). The other ellipse ratios are in slow/mim_kalker_slow_test.cpp.
+// steady-rolling difference of eq. 113 is first order in h = dx). Tolerance 2 % (first-order
+// discretisation; measured -0.4 %, 0.0 %, 0.0 %). The other ellipse ratios are in slow/mim_kalker_slow_test.cpp.
 TEST(MimRolling, kalker_linear_theory_circle) {
   constexpr double kTol = 0.02;
   const double r = 6.0e-3;

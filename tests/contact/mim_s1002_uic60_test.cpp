@@ -85,7 +85,7 @@ int components(const fm::Grid& grid, const fm::Field& p) {
 
 }  // namespace
 
-// Approach within kTolApproach = 10 % of the thesis's 0.049 mm (issue 4 must-show 4: the thesis
+// Approach within kTolApproach = 10 % of the thesis's 0.049 mm (the thesis
 // gives 2 significant digits and its gap comes from its own profile processing), and two lobes:
 // the lateral line load q(s) = integral p dx has two local maxima, each a peak above
 // kProminence = 10 % of the largest, separated by a dip (one on the tread at s ~ 0, one towards

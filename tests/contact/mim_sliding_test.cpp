@@ -15,7 +15,7 @@ using namespace ferro::contact::mim;
 // shift delta_x from 0 to 0.09 mm. Reference: eq. (110),
 //   F_t = mu F_n - mu F_n (1 - 16 a G delta_t / (6 (2 - nu) mu F_n))^(3/2),
 // and the stick radius c = a (1 - F_t / mu F_n)^(1/3) (Johnson 1985, eq. 7.43).
-// Tolerances: F_t within 2 % (issue #4); stick radius within one element (dx), measured as the
+// Tolerances: F_t within 2 % (first-order discretisation); stick radius within one element (dx), measured as the
 // radius of the circle with the area of the stick elements.
 TEST(MimSliding, cattaneo_mindlin) {
   constexpr double kForceTol = 0.02;

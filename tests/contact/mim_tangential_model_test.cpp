@@ -31,8 +31,8 @@ fc::TangentialProblem problem(const fc::ContactPatch& patch, fc::Creepage c, dou
 
 // Kalker's linear theory (Toumi eqs. 38-40, annex A.2 at nu = 0.28): at a micro-creepage the
 // model must give C11, C22, C23 and the signs of kalker_linear. Tolerance 4 %: at 30 elements
-// across the short axis the MIM's first-order discretisation error is +1 ... +3 % (issue 4
-// report: -0.4 % only after Richardson extrapolation from 40/80 elements).
+// across the short axis the MIM's first-order discretisation error is +1 ... +3 % (-0.4 %
+// only after Richardson extrapolation from 40/80 elements).
 TEST(mim_tangential_model, kalker_linear_limit) {
   constexpr double kTolSlope = 0.04;
   const auto mim = fc::make_tangential_model("mim", {{"elements", "30"}});
@@ -57,7 +57,7 @@ TEST(mim_tangential_model, kalker_linear_limit) {
 }
 
 // Coulomb: beyond saturation |F_t| = mu F_n, opposite to the rigid slip (force on the wheel).
-// Tolerance 0.5 %: a few elements at the leading edge may still stick (issue 4 report: 0.02 %
+// Tolerance 0.5 %: a few elements at the leading edge may still stick (measured 0.02 %
 // at 20 per mille on the sphere case).
 TEST(mim_tangential_model, saturation_at_mu_fn) {
   constexpr double kTolCoulomb = 0.005;

@@ -1,5 +1,5 @@
 // Every tangential model against Kalker's linear theory (small creepage), Coulomb's limit
-// (large creepage), sign, continuity/monotonicity and the K_ij scaling (issue 3, item 4).
+// (large creepage), sign, continuity/monotonicity and the K_ij scaling.
 #include <gtest/gtest.h>
 
 #include <algorithm>

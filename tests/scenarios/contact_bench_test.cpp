@@ -1,4 +1,4 @@
-// `ferrodyn bench contact`: the case set covers what issue 4 asks, and a quick run orders the
+// `ferrodyn bench contact`: the case set covers the Hertzian range, and a quick run orders the
 // models as the theory says.
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 
 namespace fs = ferro::scenarios;
 
-// Issue 4: >= 50 Hertzian cases, a/b from 0.2 to 5, pure longitudinal, lateral, spin and
+// >= 50 Hertzian cases, a/b from 0.2 to 5, pure longitudinal, lateral, spin and
 // combinations, micro-slip to full slip (normalised creepage 0.3 to >= 3).
-TEST(contact_bench, case_set_covers_issue_4) {
+TEST(contact_bench, case_set_covers_the_hertzian_range) {
   const auto cases = fs::contact_bench_cases();
   EXPECT_GE(cases.size(), 50u);
   std::set<std::string> kinds;

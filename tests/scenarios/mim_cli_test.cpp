@@ -20,7 +20,7 @@ TEST(MimCli, solves_and_writes_hdf5) {
   const std::string out = std::string(FERRO_BINARY_DIR) + "/mim_cli_test.h5";
   std::remove(out.c_str());
   EXPECT_EQ(
-      run("mim --a-mm 4 --b-mm 3 --fn 30000 --xi-x 0.002 --spin 0.5 --mu 0.3 --elements 16 --out " +
+      run("contact mim --a 4e-3 --b 3e-3 --fn 30000 --xi-x 0.002 --spin 0.5 --mu 0.3 --elements 16 -o " +
           out),
       0);
   std::ifstream f(out, std::ios::binary);
@@ -31,6 +31,6 @@ TEST(MimCli, solves_and_writes_hdf5) {
 }
 
 TEST(MimCli, bad_input_exits_2) {
-  EXPECT_EQ(run("mim --a-mm -4 --b-mm 3 --fn 30000"), 2);
-  EXPECT_EQ(run("mim --a-mm 4 --b-mm 3"), 2);  // --fn missing
+  EXPECT_EQ(run("contact mim --a -4e-3 --b 3e-3 --fn 30000"), 2);
+  EXPECT_EQ(run("contact mim --a 4e-3 --b 3e-3"), 2);  // --fn missing
 }

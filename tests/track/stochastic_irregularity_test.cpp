@@ -122,7 +122,7 @@ BandCheck check_spectrum(TrackSpectrum spectrum, IrregularityChannel channel, in
   return out;
 }
 
-// Issue 5 must-show 4: a stochastic realisation's estimated spectrum matches its target within
+// A stochastic realisation's estimated spectrum matches its target within
 // 10 % over the band. 4 seeds x 40 km give ~300 Welch segments; the narrowest third-octave band
 // (lowest) spans ~3 bins, so the estimate's relative standard deviation there is ~3-4 %, and a
 // 10 % tolerance is ~2.5 sigma in the worst band (the others are far tighter). Observed worst

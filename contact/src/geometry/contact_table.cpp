@@ -7,8 +7,9 @@
 
 #include "ferro/contact/geometry/contact_table.hpp"
 
+#include "ferro/contact/io/hdf5.hpp"
+
 #include <fmt/format.h>
-#include <hdf5.h>
 
 #include <algorithm>
 #include <cmath>
@@ -204,82 +205,53 @@ double ContactTable::delta_r(double lateral, double yaw) const {
 }
 
 void ContactTable::save_hdf5(const std::string& path) const {
-  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
-  auto write = [&](const char* name, const std::vector<double>& v, int rank, hsize_t d0, hsize_t d1,
-                   const char* units) {
-    hsize_t dims[2] = {d0, d1};
-    const hid_t space = H5Screate_simple(rank, dims, nullptr);
-    const hid_t ds =
-        H5Dcreate2(file, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    herr_t st =
-        ds < 0 ? -1 : H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-    if (ds >= 0 && st >= 0) {
-      const hid_t atype = H5Tcopy(H5T_C_S1);
-      H5Tset_size(atype, std::char_traits<char>::length(units) + 1);
-      const hid_t aspace = H5Screate(H5S_SCALAR);
-      const hid_t attr = H5Acreate2(ds, "units", atype, aspace, H5P_DEFAULT, H5P_DEFAULT);
-      st = attr < 0 ? -1 : H5Awrite(attr, atype, units);
-      if (attr >= 0) H5Aclose(attr);
-      H5Sclose(aspace);
-      H5Tclose(atype);
-    }
-    if (ds >= 0) H5Dclose(ds);
-    H5Sclose(space);
-    if (st < 0) {
-      H5Fclose(file);
-      throw std::runtime_error(fmt::format("{}: cannot write dataset {}", path, name));
-    }
+  io::H5File file = io::H5File::create(path);
+  const auto write = [&](const std::string& name, const std::vector<double>& v,
+                         const io::Dims& dims, const char* units) {
+    file.write_array(name, v, dims);
+    file.set_attribute(name, "units", units);
   };
-  write("lateral", lateral_, 1, lateral_.size(), 1, "m");
-  write("yaw", yaw_, 1, yaw_.size(), 1, "rad");
+  write("/lateral", lateral_, {lateral_.size()}, "m");
+  write("/yaw", yaw_, {yaw_.size()}, "rad");
   static const std::array<const char*, kColumns> units{
       "m",   "rad", "m", "1", "m", "m", "rad", "rad", "1/m", "1/m", "1/m",
       "1/m", "m",   "m", "m", "m", "m", "m",   "m",   "m",   "1"};
   for (int c = 0; c < kColumns; ++c) {
     const std::string name = std::string("/") + column_names()[static_cast<std::size_t>(c)];
-    write(name.c_str(), data_[static_cast<std::size_t>(c)], 2, yaw_.size(), lateral_.size(),
+    write(name, data_[static_cast<std::size_t>(c)], {yaw_.size(), lateral_.size()},
           units[static_cast<std::size_t>(c)]);
   }
-  H5Fclose(file);
+  file.close();
 }
 
 ContactTable ContactTable::load_hdf5(const std::string& path) {
-  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0)
-    throw std::invalid_argument(fmt::format("{}: cannot open HDF5 contact table", path));
-  auto read = [&](const char* name, std::size_t expected) {
-    const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
-    if (ds < 0) {
-      H5Fclose(file);
+  const io::H5File file = [&] {
+    try {
+      return io::H5File::open_read(path);
+    } catch (const io::Hdf5Error& e) {
+      throw std::invalid_argument(fmt::format("{}: cannot open HDF5 contact table ({})", path,
+                                              e.what()));
+    }
+  }();
+  const auto read = [&](const std::string& name, std::size_t expected) {
+    if (!file.exists(name))
       throw std::invalid_argument(fmt::format("{}: dataset '{}' missing", path, name));
+    std::vector<double> v = file.read_array(name);
+    if (expected != 0 && v.size() != expected) {
+      throw std::invalid_argument(fmt::format("{}: dataset '{}' has {} values, expected {}", path,
+                                              name, v.size(), expected));
     }
-    const hid_t space = H5Dget_space(ds);
-    const auto count = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
-    H5Sclose(space);
-    if (expected != 0 && count != expected) {
-      H5Dclose(ds);
-      H5Fclose(file);
-      throw std::invalid_argument(
-          fmt::format("{}: dataset '{}' has {} values, expected {}", path, name, count, expected));
-    }
-    std::vector<double> v(count);
-    H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-    H5Dclose(ds);
     return v;
   };
   ContactTable t;
-  t.lateral_ = read("lateral", 0);
-  t.yaw_ = read("yaw", 0);
-  if (t.lateral_.size() < 2 || t.yaw_.empty()) {
-    H5Fclose(file);
+  t.lateral_ = read("/lateral", 0);
+  t.yaw_ = read("/yaw", 0);
+  if (t.lateral_.size() < 2 || t.yaw_.empty())
     throw std::invalid_argument(fmt::format("{}: table needs >= 2 lateral values", path));
-  }
   for (int c = 0; c < kColumns; ++c) {
     const std::string name = std::string("/") + column_names()[static_cast<std::size_t>(c)];
-    t.data_[static_cast<std::size_t>(c)] = read(name.c_str(), t.lateral_.size() * t.yaw_.size());
+    t.data_[static_cast<std::size_t>(c)] = read(name, t.lateral_.size() * t.yaw_.size());
   }
-  H5Fclose(file);
   t.finish_grid();
   return t;
 }

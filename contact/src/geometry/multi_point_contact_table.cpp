@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 #include "ferro/contact/geometry/contact_sources.hpp"
-#include "../hdf5_io.hpp"
+#include "ferro/contact/io/hdf5.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -493,8 +493,7 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
 }
 
 void MultiPointContactTable::save_hdf5(const std::string& path) const {
-  const detail::QuietHdf5 quiet;
-  detail::Hdf5File file = detail::Hdf5File::create(path);
+  io::H5File file = io::H5File::create(path);
   const std::array<std::pair<const char*, double>, 14> attrs{{
       {"format_version", kFormatVersion},
       {"lateral_min", axes_[0].min},
@@ -511,9 +510,9 @@ void MultiPointContactTable::save_hdf5(const std::string& path) const {
       {"fingerprint_high", static_cast<double>(fingerprint_ >> 32)},
       {"fingerprint_low", static_cast<double>(fingerprint_ & 0xffffffffULL)},
   }};
-  for (const auto& [name, value] : attrs) file.write_attribute(name, value);
+  for (const auto& [name, value] : attrs) file.set_attribute("/", name, value);
   std::vector<double> offsets(node_offset_.begin(), node_offset_.end());
-  file.write_dataset("node_offset", offsets, {offsets.size()});
+  file.write_array("/node_offset", offsets, {offsets.size()});
   std::vector<double> c;
   c.reserve(nodes_.size() * kFields);
   for (const Candidate& s : nodes_) {
@@ -534,13 +533,33 @@ void MultiPointContactTable::save_hdf5(const std::string& path) const {
                                  s.dgap_dyaw};
     c.insert(c.end(), row, row + kFields);
   }
-  file.write_dataset("candidates", c, {nodes_.size(), static_cast<std::size_t>(kFields)});
+  file.write_array("/candidates", c, {nodes_.size(), static_cast<std::uint64_t>(kFields)});
+  file.close();
 }
 
 MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path) {
-  const detail::QuietHdf5 quiet;
-  const detail::Hdf5File file = detail::Hdf5File::open(path);
-  if (file.read_attribute("format_version") != kFormatVersion) {
+  const io::H5File file = [&] {
+    try {
+      return io::H5File::open_read(path);
+    } catch (const io::Hdf5Error& e) {
+      throw std::invalid_argument(
+          fmt::format("{}: cannot open as an HDF5 file ({})", path, e.what()));
+    }
+  }();
+  const auto read_attribute = [&](const std::string& name) {
+    if (!file.has_attribute("/", name)) {
+      throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));
+    }
+    return file.number_attribute("/", name);
+  };
+  io::Dims dims;
+  const auto read_dataset = [&](const std::string& name) {
+    if (!file.exists(name)) {
+      throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));
+    }
+    return file.read_array(name, &dims);
+  };
+  if (read_attribute("format_version") != kFormatVersion) {
     throw std::invalid_argument(
         fmt::format("{}: multi-point contact table format_version must be {}", path,
                     kFormatVersion));
@@ -549,9 +568,9 @@ MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path
   const char* names[3] = {"lateral", "roll", "yaw"};
   for (int a = 0; a < 3; ++a) {
     const std::string n = names[a];
-    t.axes_[a].min = file.read_attribute((n + "_min").c_str());
-    t.axes_[a].step = file.read_attribute((n + "_step").c_str());
-    const double count = file.read_attribute((n + "_count").c_str());
+    t.axes_[a].min = read_attribute(n + "_min");
+    t.axes_[a].step = read_attribute(n + "_step");
+    const double count = read_attribute(n + "_count");
     if (!(count >= 1.0 && count <= 100001.0) || count != std::round(count) ||
         !(t.axes_[a].step > 0.0)) {
       throw std::invalid_argument(
@@ -570,19 +589,18 @@ MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path
   t.params_.yaw_step = t.axes_[2].step;
   t.params_.yaw_max = t.axes_[2].min + (t.axes_[2].n - 1) * t.axes_[2].step;
   t.params_.max_points_per_wheel =
-      static_cast<int>(file.read_attribute("max_points_per_wheel"));
-  t.params_.capture_depth = file.read_attribute("capture_depth");
-  t.fingerprint_ = (static_cast<std::uint64_t>(file.read_attribute("fingerprint_high")) << 32) |
-                   static_cast<std::uint64_t>(file.read_attribute("fingerprint_low"));
+      static_cast<int>(read_attribute("max_points_per_wheel"));
+  t.params_.capture_depth = read_attribute("capture_depth");
+  t.fingerprint_ = (static_cast<std::uint64_t>(read_attribute("fingerprint_high")) << 32) |
+                   static_cast<std::uint64_t>(read_attribute("fingerprint_low"));
   const std::size_t n_nodes = static_cast<std::size_t>(t.axes_[0].n) * t.axes_[1].n * t.axes_[2].n;
-  std::vector<std::size_t> dims;
-  const std::vector<double> offsets = file.read_dataset("node_offset", &dims);
+  const std::vector<double> offsets = read_dataset("node_offset");
   if (offsets.size() != n_nodes + 1) {
     throw std::invalid_argument(fmt::format("{}: dataset 'node_offset' has {} values, expected {}",
                                             path, offsets.size(), n_nodes + 1));
   }
-  const std::vector<double> c = file.read_dataset("candidates", &dims);
-  if (dims.size() != 2 || dims[1] != static_cast<std::size_t>(kFields)) {
+  const std::vector<double> c = read_dataset("candidates");
+  if (dims.size() != 2 || dims[1] != static_cast<std::uint64_t>(kFields)) {
     throw std::invalid_argument(
         fmt::format("{}: dataset 'candidates' must be [n x {}]", path, kFields));
   }

@@ -1,14 +1,18 @@
-// FFT convolution of the half-space influence kernels (DC-FFT with zero padding).
+// FFT convolution of the half-space influence kernels (DC-FFT with zero padding), optionally with
+// the local tangential compliance of an interfacial layer on the kernels' zero offset.
 //
 // References: Toumi (2016) eqs. (74)-(76), (117)-(120), annex B.3; Liu, Wang & Liu, Wear 243
-// (2000) 101-111 (discrete convolution and FFT).
-// Known deviations: none.
+// (2000) 101-111 (discrete convolution and FFT); Vollebregt, CONTACT user guide (interfacial
+// layer as a local tangential compliance).
+// Known deviations: the layer's normal compliance is not modelled (tangential only).
 
 #include "ferro/contact/mim/influence_operator.hpp"
 
 #include <fftw3.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <complex>
 #include <cstring>
 #include <mutex>
@@ -76,6 +80,7 @@ using Spectrum = std::vector<std::complex<double>>;
 struct InfluenceOperator::Impl {
   Grid grid;
   CombinedMaterial material;
+  double layer = 0.0;  // h / G3 [m/Pa]
   int px = 0;  // padded sizes
   int py = 0;
   std::size_t nreal = 0;
@@ -100,9 +105,10 @@ struct InfluenceOperator::Impl {
   std::unique_ptr<InfluenceOperator> coarse;
   bool measure = false;
 
-  Impl(const Grid& g, const CombinedMaterial& m, bool measure_plans)
+  Impl(const Grid& g, const CombinedMaterial& m, double layer_compliance, bool measure_plans)
       : grid(g),
         material(m),
+        layer(layer_compliance),
         px(fft_size(2 * g.nx)),
         py(fft_size(2 * g.ny)),
         nreal(static_cast<std::size_t>(px) * static_cast<std::size_t>(py)),
@@ -178,6 +184,11 @@ struct InfluenceOperator::Impl {
         table[static_cast<std::size_t>(oy + grid.ny - 1) * wx + (ox + grid.nx)] =
             influence_coefficients(ox * dx, oy * dy, dx, dy, material);
       }
+    }
+    {  // interfacial layer: local tangential compliance on the element itself
+      InfluenceCoefficients& self = table[static_cast<std::size_t>(grid.ny - 1) * wx + grid.nx];
+      self.xx += layer;
+      self.yy += layer;
     }
     self_zz = at(0, 0).zz;
     self_xx = at(0, 0).xx;
@@ -281,14 +292,23 @@ struct InfluenceOperator::Impl {
 };
 
 InfluenceOperator::InfluenceOperator(const Grid& grid, const CombinedMaterial& material,
-                                     bool measure_plans) {
+                                     bool measure_plans)
+    : InfluenceOperator(grid, material, 0.0, measure_plans) {}
+
+InfluenceOperator::InfluenceOperator(const Grid& grid, const CombinedMaterial& material,
+                                     double layer_compliance, bool measure_plans) {
   grid.validate("InfluenceOperator.grid");
+  if (!(layer_compliance >= 0.0) || !std::isfinite(layer_compliance)) {
+    throw std::invalid_argument(
+        "InfluenceOperator.layer_compliance: must be finite and >= 0 m/Pa, got " +
+        std::to_string(layer_compliance));
+  }
   if (!(material.shear_modulus > 0.0) || !(material.poisson >= 0.0 && material.poisson < 0.5)) {
     throw std::invalid_argument(
         "InfluenceOperator.material: combined shear_modulus must be > 0 Pa and poisson in "
         "[0, 0.5)");
   }
-  impl_ = std::make_unique<Impl>(grid, material, measure_plans);
+  impl_ = std::make_unique<Impl>(grid, material, layer_compliance, measure_plans);
 }
 
 InfluenceOperator::~InfluenceOperator() = default;
@@ -331,9 +351,14 @@ InfluenceOperator& InfluenceOperator::coarse() {
     c.dy = f.ny > 1 ? 2.0 * f.dy : f.dy;
     c.x0 = f.x0 + 0.5 * f.dx;
     c.y0 = f.ny > 1 ? f.y0 + 0.5 * f.dy : f.y0;
-    impl_->coarse = std::make_unique<InfluenceOperator>(c, impl_->material, impl_->measure);
+    impl_->coarse =
+        std::make_unique<InfluenceOperator>(c, impl_->material, impl_->layer, impl_->measure);
   }
   return *impl_->coarse;
+}
+
+double InfluenceOperator::layer_compliance() const {
+  return impl_->layer;
 }
 
 double InfluenceOperator::normal_self() const {

@@ -52,14 +52,16 @@ void HertzRollingInput::validate(const std::string& where) const {
   body2.validate(where + ".body2");
 }
 
-MimResult solve_rolling_contact(InfluenceOperator& op, const Field& gap, const NormalLoad& load,
+MimResult solve_rolling_contact(ComplianceOperator& op, const Field& gap, const NormalLoad& load,
                                 const RollingInput& rolling, const MimOptions& options) {
   load.validate();
   rolling.validate();
   const NormalSolution n = std::isnan(load.normal_force)
                                ? solve_normal_approach(op, gap, load.approach, options.normal)
                                : solve_normal_force(op, gap, load.normal_force, options.normal);
-  const TangentialSolution t = solve_steady_rolling(op, n.pressure, rolling, options.tangential);
+  TangentialSolverOptions tangential = options.tangential;
+  tangential.nested = tangential.nested && op.has_coarse();  // dense operators have no coarse grid
+  const TangentialSolution t = solve_steady_rolling(op, n.pressure, rolling, tangential);
   MimResult r;
   r.grid = op.grid();
   r.normal_force = n.normal_force;

@@ -27,7 +27,7 @@ void NormalSolverOptions::validate(const std::string& where) const {
 
 namespace {
 
-NormalSolution solve(InfluenceOperator& op, const Field& gap, double target, bool force_control,
+NormalSolution solve(ComplianceOperator& op, const Field& gap, double target, bool force_control,
                      const NormalSolverOptions& options) {
   options.validate();
   const Grid& grid = op.grid();
@@ -183,7 +183,7 @@ NormalSolution solve(InfluenceOperator& op, const Field& gap, double target, boo
 
 }  // namespace
 
-NormalSolution solve_normal_approach(InfluenceOperator& op, const Field& gap, double approach,
+NormalSolution solve_normal_approach(ComplianceOperator& op, const Field& gap, double approach,
                                      const NormalSolverOptions& options) {
   if (!std::isfinite(approach)) {
     throw std::invalid_argument(fmt::format("approach: must be finite (m), got {}", approach));
@@ -191,7 +191,7 @@ NormalSolution solve_normal_approach(InfluenceOperator& op, const Field& gap, do
   return solve(op, gap, approach, false, options);
 }
 
-NormalSolution solve_normal_force(InfluenceOperator& op, const Field& gap, double normal_force,
+NormalSolution solve_normal_force(ComplianceOperator& op, const Field& gap, double normal_force,
                                   const NormalSolverOptions& options) {
   if (!(normal_force > 0.0) || !std::isfinite(normal_force)) {
     throw std::invalid_argument(

@@ -77,7 +77,7 @@ double norm(const Vec& a) {
 // The problem v = M tau + q with M = A^tt (sliding) or -(B^tt - A^tt)/h (rolling).
 class Problem {
  public:
-  Problem(InfluenceOperator& op, bool rolling) : op_(op), rolling_(rolling), n_(op.grid().size()) {}
+  Problem(ComplianceOperator& op, bool rolling) : op_(op), rolling_(rolling), n_(op.grid().size()) {}
   // Full-grid product (vx, vy) = M (tx, ty).
   void apply(const double* tx, const double* ty, double* vx, double* vy) {
     ++matvecs;
@@ -95,7 +95,7 @@ class Problem {
   int matvecs = 0;
 
  private:
-  InfluenceOperator& op_;
+  ComplianceOperator& op_;
   bool rolling_;
   std::size_t n_;
 };
@@ -205,7 +205,7 @@ using RigidSlip = std::function<void(const Grid&, Field&, Field&)>;
 // Minimum elements per side for a grid to be solved first on its coarsened grid.
 constexpr int kNestedMinElements = 24;
 
-TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double friction,
+TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double friction,
                          const RigidSlip& rigid_slip, bool rolling,
                          const TangentialSolverOptions& options) {
   options.validate();
@@ -224,7 +224,7 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
   TangentialSolution start;
   const bool nested = options.nested && std::min(grid.nx, grid.ny) >= kNestedMinElements;
   if (nested) {
-    InfluenceOperator& cop = op.coarse();
+    ComplianceOperator& cop = op.coarse();
     const Grid& cg = cop.grid();
     Field cp(cg.size(), 0.0);
     const int fy_per = grid.ny > 1 ? 2 : 1;
@@ -531,7 +531,7 @@ TangentialSolution solve(InfluenceOperator& op, const Field& pressure, double fr
 
 }  // namespace
 
-TangentialSolution solve_sliding(InfluenceOperator& op, const Field& pressure,
+TangentialSolution solve_sliding(ComplianceOperator& op, const Field& pressure,
                                  const SlidingInput& input,
                                  const TangentialSolverOptions& options) {
   input.validate();
@@ -543,7 +543,7 @@ TangentialSolution solve_sliding(InfluenceOperator& op, const Field& pressure,
   return solve(op, pressure, input.friction, q, false, options);
 }
 
-TangentialSolution solve_steady_rolling(InfluenceOperator& op, const Field& pressure,
+TangentialSolution solve_steady_rolling(ComplianceOperator& op, const Field& pressure,
                                         const RollingInput& input,
                                         const TangentialSolverOptions& options) {
   input.validate();

@@ -2,9 +2,10 @@
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/plotting.hpp"
 
+#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/contact/io/text_writer.hpp"
+
 #include <fmt/format.h>
-#include <fmt/os.h>
-#include <hdf5.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -78,71 +79,45 @@ std::vector<CurvePoint> compute_creep_curves(const ContactCase& c,
 }
 
 void write_curves_csv(const std::string& path, const std::vector<CurvePoint>& points) {
-  auto f = fmt::output_file(path);
+  io::TextWriter f(path);
   f.print("curve,model,creepage,force_x,force_y,moment_z,force_t\n");
   for (const CurvePoint& p : points) {
     f.print("{},\"{}\",{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", p.curve, p.model, p.creepage,
             p.force_x, p.force_y, p.moment_z, std::hypot(p.force_x, p.force_y));
   }
+  f.close();
 }
 
 void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& points) {
-  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(fmt::format("{}: cannot create HDF5 file", path));
-  auto attr_int = [](hid_t where, const char* name, int v) {
-    const hid_t sp = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate2(where, name, H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(a, H5T_NATIVE_INT, &v);
-    H5Aclose(a);
-    H5Sclose(sp);
-  };
-  auto attr_str = [](hid_t where, const char* name, const std::string& v) {
-    const hid_t sp = H5Screate(H5S_SCALAR);
-    const hid_t t = H5Tcopy(H5T_C_S1);
-    H5Tset_size(t, v.size() + 1);
-    const hid_t a = H5Acreate2(where, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(a, t, v.c_str());
-    H5Aclose(a);
-    H5Tclose(t);
-    H5Sclose(sp);
-  };
-  attr_int(file, "schema_version", 1);
-  attr_str(file, "units",
-           "SI: creepage [-] or [1/m] (spin), force [N], moment [N m]; "
-           "forces on the wheel from the rail");
+  io::H5File file = io::H5File::create(path);
+  file.set_attribute("/", "schema_version", 1);
+  file.set_attribute("/", "units",
+                     "SI: creepage [-] or [1/m] (spin), force [N], moment [N m]; "
+                     "forces on the wheel from the rail");
   // Group the points by curve then model, keeping order.
   std::map<std::string, std::map<std::string, std::vector<const CurvePoint*>>> groups;
   for (const CurvePoint& p : points) groups[p.curve][p.model].push_back(&p);
   for (const auto& [curve, models] : groups) {
-    const hid_t g = H5Gcreate2(file, curve.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    for (const auto& entry : models) {
-      const std::string& model = entry.first;
-      const std::vector<const CurvePoint*>& pts = entry.second;
+    file.ensure_group("/" + curve);
+    for (const auto& [model, pts] : models) {
       std::string name = model;
       for (char& ch : name)
         if (ch == '/') ch = '_';
-      const hid_t mg = H5Gcreate2(g, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      const hsize_t n = pts.size();
+      const std::string group = "/" + curve + "/" + name;
+      file.ensure_group(group);
       auto write = [&](const char* ds, auto get) {
         std::vector<double> v;
         v.reserve(pts.size());
         for (const CurvePoint* p : pts) v.push_back(get(*p));
-        const hid_t sp = H5Screate_simple(1, &n, nullptr);
-        const hid_t d =
-            H5Dcreate2(mg, ds, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-        H5Dclose(d);
-        H5Sclose(sp);
+        file.write_array(group + "/" + ds, v, {v.size()});
       };
       write("creepage", [](const CurvePoint& p) { return p.creepage; });
       write("force_x", [](const CurvePoint& p) { return p.force_x; });
       write("force_y", [](const CurvePoint& p) { return p.force_y; });
       write("moment_z", [](const CurvePoint& p) { return p.moment_z; });
-      H5Gclose(mg);
     }
-    H5Gclose(g);
   }
-  H5Fclose(file);
+  file.close();
 }
 
 PatchPicture compute_patch_picture(const ContactCase& c, const contact::NormalSolution& normal) {
@@ -194,12 +169,13 @@ PatchPicture compute_patch_picture(const ContactCase& c, const contact::NormalSo
 }
 
 void write_patch_csv(const std::string& path, const PatchPicture& picture) {
-  auto f = fmt::output_file(path);
+  io::TextWriter f(path);
   f.print("patch,x,y,dx,dy,pressure,traction_x,traction_y,slip\n");
   for (const PatchCell& c : picture.cells) {
     f.print("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", c.patch, c.x, c.y, c.dx,
             c.dy, c.pressure, c.traction_x, c.traction_y, c.slip);
   }
+  f.close();
 }
 
 void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,

@@ -25,7 +25,7 @@ using ferro::test::mim_creep_coefficients;
 
 // Kalker's C11, C22, C23 (annex A.2, nu = 0.28 interpolated) for a/b = 0.2 .. 5: full-adhesion
 // MIM runs with 48 and 96 elements across the shorter axis, Richardson-extrapolated for the
-// first-order difference of eq. (113): C = 2 C(h/2) - C(h). Tolerance 2 % (issue #4; measured
+// first-order difference of eq. (113): C = 2 C(h/2) - C(h). Tolerance 2 % (measured
 // within 1.2 %, the residual being the staircase boundary of the patch).
 class MimKalkerSweep : public ::testing::TestWithParam<double> {};
 
@@ -88,8 +88,8 @@ TEST(MimRollingSlow, thesis_sphere_cases_grid_convergence) {
   }
 }
 
-// Hertz spheres on finer grids (issue #4: "dx = dy = 0.5 mm and finer"): dx = 0.25 and 0.125 mm,
-// delta = 0.4 mm. Tolerances: F within 1 % (issue #4), profile within 1 % of p0 for r <= 0.9 a
+// Hertz spheres on finer grids (the thesis grid dx = dy = 0.5 mm and finer): dx = 0.25 and 0.125 mm,
+// delta = 0.4 mm. Tolerances: F within 1 %, profile within 1 % of p0 for r <= 0.9 a
 // (measured 0.04 % and 0.008 %); at the edge (r > 0.9 a) 3 %: the element next to the edge
 // samples the infinite slope of the square root and its error depends on where the edge cuts
 // the element, not on dx (measured 0.96 % and 1.38 %).

@@ -12,7 +12,7 @@
 // f_x = -xi_x*), and saturation starts near 1. Symmetries of the Hertzian problem (reversal of
 // all creepages negates the forces; the y-mirror maps (xi_y, phi) -> (-xi_y, -phi) and
 // (f_y, m_z) -> (-f_y, -m_z)) give f_x(-xi_x) = -f_x, f_y(-xi_x) = f_y, m_z(-xi_x) = m_z, so
-// the table stores xi_x* >= 0 and xi_y* >= 0 only. HDF5 layout: docs/reports/mim-integration.md.
+// the table stores xi_x* >= 0 and xi_y* >= 0 only. HDF5 layout: docs/OUTPUT.md.
 //
 // References: Toumi (2016) chapter 2 (MIM), eqs. (38)-(40) (signs, C_ij), annex A.2; Kalker,
 // "Three-dimensional elastic bodies in rolling contact" (1990) ch. 2 (normalisation).

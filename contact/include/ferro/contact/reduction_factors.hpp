@@ -1,6 +1,7 @@
 #pragma once
 // Reduction factors K_ij applied to Kalker's coefficients, C_ij,r = K_ij C_ij (Toumi eq. 156),
-// either constants or interpolated from an HDF5 table (layout: docs/KIJ_TABLE.md).
+// either constants or interpolated from an HDF5 table (layout: docs/KIJ_TABLE.md, version 2 with
+// provenance and an optional first-pass range; version 1 still read).
 //
 // References: Toumi (2016) eq. (156), section 3 (K_ij from FE creep curves), Table 4.1.
 // Known deviations: the table is interpolated multilinearly and clamped at its axis ends
@@ -29,11 +30,28 @@ struct ReductionFactors {
 /// K_ij tabulated over named axes (e.g. "normal_force" [N], "layer_thickness" [m]).
 class KijTable {
  public:
-  /// Reads a table written in the docs/KIJ_TABLE.md layout. Throws std::invalid_argument
-  /// (file, dataset, reason) on a missing or inconsistent file.
+  /// Current layout version written by write_hdf5 (docs/KIJ_TABLE.md); 1 and 2 are read.
+  static constexpr int kSchemaVersion = 2;
+  /// Reads a table written in the docs/KIJ_TABLE.md layout (version 1 or 2). Throws
+  /// std::invalid_argument (file, dataset, reason) on a missing or inconsistent file.
   static KijTable read_hdf5(const std::string& path);
-  /// Writes the table in the same layout (for the FE module and the tests).
+  /// Writes the table in the version 2 layout (for the FE module and the tests).
   void write_hdf5(const std::string& path) const;
+
+  /// Provenance (version 2): name -> text, e.g. "mesh_size_m", "grid", "solver_tolerance",
+  /// "command". Stored as string attributes of the group /provenance.
+  [[nodiscard]] const std::map<std::string, std::string>& provenance() const { return provenance_; }
+  void set_provenance(std::map<std::string, std::string> provenance) {
+    provenance_ = std::move(provenance);
+  }
+  /// Where the physics is not single-valued (elasto-plastic rail: first pass vs shaken down),
+  /// K11..K33 hold the value used for interpolation (shaken down) and this optional second set
+  /// the other end of the range (first pass), same shape; K33 entry may be empty. Version 2.
+  void set_first_pass(std::vector<double> k11, std::vector<double> k22, std::vector<double> k23,
+                      std::vector<double> k33 = {});
+  [[nodiscard]] bool has_first_pass() const { return !k11_first_.empty(); }
+  /// First-pass factors at a point (values in axis order); std::logic_error without them.
+  [[nodiscard]] ReductionFactors first_pass_at(const std::vector<double>& point) const;
 
   /// Builds a table in memory. values_* are row-major over axes in the given order, one value per
   /// grid node; k33 may be empty (then K33 = K22 is not assumed: K33 = 1).
@@ -64,12 +82,24 @@ class KijTable {
         k22_(other.k22_),
         k23_(other.k23_),
         k33_(other.k33_),
+        k11_first_(other.k11_first_),
+        k22_first_(other.k22_first_),
+        k23_first_(other.k23_first_),
+        k33_first_(other.k33_first_),
+        provenance_(other.provenance_),
         clamped_(other.clamped_.load()) {}
 
  private:
+  [[nodiscard]] ReductionFactors interpolate(const std::vector<double>& point,
+                                             const std::vector<double>& k11,
+                                             const std::vector<double>& k22,
+                                             const std::vector<double>& k23,
+                                             const std::vector<double>& k33) const;
   std::vector<std::string> names_;
   std::vector<std::vector<double>> axes_;
   std::vector<double> k11_, k22_, k23_, k33_;
+  std::vector<double> k11_first_, k22_first_, k23_first_, k33_first_;
+  std::map<std::string, std::string> provenance_;
   mutable std::atomic<long> clamped_{0};
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // Speed-versus-error report of the tangential (creep-force) models: every model over a fixed set
-// of Hertzian cases, against fine-grid MIM (issue 4, `ferrodyn bench contact`).
+// of Hertzian cases, against fine-grid MIM (`ferrodyn bench contact`).
 
 #include <string>
 #include <vector>

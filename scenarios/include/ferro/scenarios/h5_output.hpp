@@ -1,93 +1,64 @@
 #pragma once
-// HDF5 output (C API, serial HDF5 1.10). Layout: docs/OUTPUT.md.
-//  - H5File: RAII file handle with attribute, vector and text helpers.
+// Run output over the HDF5 layer (ferro/contact/io/hdf5.hpp). Layout: docs/OUTPUT.md.
+//  - H5File: the io layer's RAII file handle.
 //  - TimeSeriesWriter: chunked, extendible 1-D datasets /time and /signals/<name>, written in
 //    blocks and flushed to disk as the run goes, so a run stopped at any moment leaves every
-//    sample up to its last flush (and, on a clean stop, up to the stop) in a valid file.
-
-#include <hdf5.h>
+//    sample up to its last flush (and, on a clean stop, up to the stop) in a valid file. Before
+//    each block it checks the room left for the file (file system and RLIMIT_FSIZE): when the
+//    block does not fit it writes the samples that do, keeps a reserve for closing the file, and
+//    throws OutputFull naming the cause.
 
 #include <chrono>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "ferro/contact/io/hdf5.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 
 namespace ferro::scenarios {
 
-class H5File {
+using io::H5File;
+
+/// The output file has no room left for the next samples (disk full or file size limit).
+class OutputFull : public std::runtime_error {
  public:
-  /// Creates (truncating) `path`, making parent folders. Throws std::runtime_error naming it.
-  static H5File create(const std::string& path);
-  /// Opens an existing file read-only.
-  static H5File open_read(const std::string& path);
-
-  H5File(H5File&& other) noexcept;
-  H5File& operator=(H5File&& other) noexcept;
-  H5File(const H5File&) = delete;
-  H5File& operator=(const H5File&) = delete;
-  ~H5File();
-
-  [[nodiscard]] hid_t id() const { return id_; }
-  [[nodiscard]] const std::string& path() const { return path_; }
-
-  /// Creates the group (and parents) when missing.
-  void ensure_group(const std::string& group);
-  /// Attributes on an object (group or dataset) at `object` ("/" for the root); replaces any
-  /// attribute of the same name.
-  void set_attribute(const std::string& object, const std::string& name, const std::string& value);
-  void set_attribute(const std::string& object, const std::string& name, double value);
-  void set_attribute(const std::string& object, const std::string& name, long value);
-  [[nodiscard]] std::string string_attribute(const std::string& object,
-                                             const std::string& name) const;
-  [[nodiscard]] double number_attribute(const std::string& object, const std::string& name) const;
-
-  /// Fixed-size 1-D dataset of doubles with `unit` and `description` attributes.
-  void write_vector(const std::string& dataset, std::span<const double> values,
-                    const std::string& unit, const std::string& description = "");
-  /// 2-D row-major dataset of doubles (rows x cols).
-  void write_matrix(const std::string& dataset, std::span<const double> values, std::size_t rows,
-                    std::size_t cols, const std::string& unit, const std::string& description = "");
-  /// A scalar string dataset (e.g. the scene text).
-  void write_text(const std::string& dataset, const std::string& text);
-  [[nodiscard]] std::vector<double> read_vector(const std::string& dataset) const;
-  [[nodiscard]] bool exists(const std::string& object) const;
-
-  void flush();
-
- private:
-  H5File(hid_t id, std::string path) : id_(id), path_(std::move(path)) {}
-  hid_t id_ = H5I_INVALID_HID;
-  std::string path_;
+  using std::runtime_error::runtime_error;
 };
 
 class TimeSeriesWriter {
  public:
+  /// Bytes kept free for closing the file (status attributes, final metadata) [B].
+  static constexpr std::uint64_t kCloseReserve = 64 * 1024;
+
   /// Creates /time and /signals/<name> for each channel under `file`.
   TimeSeriesWriter(H5File& file, const std::vector<vehicle::SignalInfo>& channels,
                    double flush_seconds, std::size_t chunk_rows = 1024);
   /// Buffers one sample; writes and flushes when the buffer is full or `flush_seconds` of wall
   /// time have passed since the last flush.
   void append(double t, std::span<const double> values);
-  /// Writes buffered samples and flushes the file.
+  /// Writes buffered samples and flushes the file. Throws OutputFull or io::Hdf5Error.
   void flush();
+  /// Samples written to the file so far.
+  [[nodiscard]] long written() const { return written_; }
+  /// Samples written or buffered.
   [[nodiscard]] long samples() const { return written_ + static_cast<long>(buffer_t_.size()); }
 
  private:
+  // Bytes the file may grow by when `rows` more rows are written.
+  [[nodiscard]] std::uint64_t growth(std::size_t rows) const;
+  void write_rows(std::size_t rows);
+
   H5File& file_;
-  std::vector<hid_t> datasets_;  // [0] = time, then one per channel
+  std::vector<io::ExtendibleSeries> series_;  // [0] = time, then one per channel
   std::size_t chunk_rows_;
   double flush_seconds_;
   std::chrono::steady_clock::time_point last_flush_;
   std::vector<double> buffer_t_;
   std::vector<std::vector<double>> buffer_;  // per channel
   long written_ = 0;
-
- public:
-  ~TimeSeriesWriter();
-  TimeSeriesWriter(const TimeSeriesWriter&) = delete;
-  TimeSeriesWriter& operator=(const TimeSeriesWriter&) = delete;
+  double last_written_t_ = 0.0;  // time of the last sample in the file [s]
 };
 
 }  // namespace ferro::scenarios

@@ -2,6 +2,7 @@
 // Running a scene: time simulation to HDF5 (and CSV), and the eigenvalue speed sweep.
 // Library code: no printing; progress and interruption go through callbacks.
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -59,6 +60,14 @@ struct EigenReport {
 [[nodiscard]] EigenReport run_eigen(const Scene& scene);
 /// Writes the report under /eigen of a new HDF5 file, with the scene metadata.
 void write_eigen_report(const Scene& scene, const EigenReport& report, const std::string& path);
+
+/// Number of output samples of a run over [0, t_end] every `interval` seconds. Throws
+/// std::invalid_argument ("<where>: ...") for an interval that is not a positive finite number or
+/// that would give more than kMaxOutputSamples samples.
+[[nodiscard]] std::uint64_t output_sample_count(double t_end, double interval,
+                                                const std::string& where = "output.interval");
+/// At most this many output samples per run (8 TB per signal): anything beyond is a typo.
+inline constexpr double kMaxOutputSamples = 1e12;
 
 /// UTC time stamp "YYYY-MM-DDThh:mm:ssZ".
 [[nodiscard]] std::string utc_timestamp();

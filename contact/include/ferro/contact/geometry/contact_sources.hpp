@@ -152,7 +152,10 @@ struct MultiPointTableParams {
 /// Known deviations: (multi)linear interpolation of the point's geometry along each branch
 /// (error ~ step^2 times its second derivative); the barrier takes its candidate's gap gradient;
 /// a branch born inside a cell appears at the cell's half-weight point, not where it is born;
-/// poses outside the grid throw (no extrapolation).
+/// where the point races along the flange root (several mm per cell) its position is that of
+/// the nearer node's branch (up to ~2 mm off); an absent axis (min == max) is not looked at (a
+/// table without a yaw axis answers at any yaw as at yaw_min); poses outside the grid throw (no
+/// extrapolation).
 class MultiPointContactTable final : public ContactGeometrySource {
  public:
   static constexpr int kMaxPointsPerWheel = 6;

@@ -61,7 +61,7 @@ struct MimResult {
 };
 
 /// Normal then steady-rolling solve on an arbitrary undeformed gap z [m] sampled on op.grid().
-[[nodiscard]] MimResult solve_rolling_contact(InfluenceOperator& op, const Field& gap,
+[[nodiscard]] MimResult solve_rolling_contact(ComplianceOperator& op, const Field& gap,
                                               const NormalLoad& load, const RollingInput& rolling,
                                               const MimOptions& options = {});
 

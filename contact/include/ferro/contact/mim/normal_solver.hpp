@@ -43,12 +43,12 @@ struct NormalSolution {
 };
 
 /// Prescribed approach delta [m]; `gap` is the undeformed separation z(x, y) [m] per element.
-[[nodiscard]] NormalSolution solve_normal_approach(InfluenceOperator& op, const Field& gap,
+[[nodiscard]] NormalSolution solve_normal_approach(ComplianceOperator& op, const Field& gap,
                                                    double approach,
                                                    const NormalSolverOptions& options = {});
 
 /// Prescribed total normal force F_n > 0 [N]; the approach is an output.
-[[nodiscard]] NormalSolution solve_normal_force(InfluenceOperator& op, const Field& gap,
+[[nodiscard]] NormalSolution solve_normal_force(ComplianceOperator& op, const Field& gap,
                                                 double normal_force,
                                                 const NormalSolverOptions& options = {});
 

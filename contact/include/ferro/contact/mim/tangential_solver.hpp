@@ -100,12 +100,12 @@ struct TangentialSolution {
 };
 
 /// Sliding (shift) problem on the pressure field `pressure` [Pa] from the normal solve.
-[[nodiscard]] TangentialSolution solve_sliding(InfluenceOperator& op, const Field& pressure,
+[[nodiscard]] TangentialSolution solve_sliding(ComplianceOperator& op, const Field& pressure,
                                                const SlidingInput& input,
                                                const TangentialSolverOptions& options = {});
 
 /// Steady rolling problem on the pressure field `pressure` [Pa] from the normal solve.
-[[nodiscard]] TangentialSolution solve_steady_rolling(InfluenceOperator& op, const Field& pressure,
+[[nodiscard]] TangentialSolution solve_steady_rolling(ComplianceOperator& op, const Field& pressure,
                                                       const RollingInput& input,
                                                       const TangentialSolverOptions& options = {});
 

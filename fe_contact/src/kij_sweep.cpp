@@ -1,0 +1,141 @@
+// K_ij sweep over wheel load and interfacial-layer parameters.
+//
+// References: see kij_sweep.hpp.
+// Known deviations: see kij_sweep.hpp (layer operator only).
+
+#include "ferro/fe_contact/kij_sweep.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "ferro/contact/mim/influence_operator.hpp"
+
+namespace ferro::fe_contact {
+
+const std::vector<std::string>& sweep_axis_names() {
+  static const std::vector<std::string> names{"normal_force", "layer_thickness",
+                                              "layer_shear_modulus", "layer_yield_shear"};
+  return names;
+}
+
+void KijSweepSpec::validate(const std::string& where) const {
+  contact.validate(where + ".contact");
+  layer.validate(where + ".layer");
+  slope.validate(where + ".slope");
+  if (axis_names.empty() || axis_names.size() != axes.size()) {
+    throw std::invalid_argument(fmt::format(
+        "{}.axes: need >= 1 axis and one name per axis ({} names, {} axes)", where,
+        axis_names.size(), axes.size()));
+  }
+  const auto& allowed = sweep_axis_names();
+  for (std::size_t i = 0; i < axis_names.size(); ++i) {
+    if (std::find(allowed.begin(), allowed.end(), axis_names[i]) == allowed.end()) {
+      throw std::invalid_argument(fmt::format(
+          "{}.axes.{}: unknown axis; allowed: normal_force, layer_thickness, "
+          "layer_shear_modulus, layer_yield_shear",
+          where, axis_names[i]));
+    }
+    if (std::count(axis_names.begin(), axis_names.end(), axis_names[i]) > 1) {
+      throw std::invalid_argument(fmt::format("{}.axes.{}: given twice", where, axis_names[i]));
+    }
+    const auto& ax = axes[i];
+    if (ax.empty()) throw std::invalid_argument(fmt::format("{}.axes.{}: empty", where, axis_names[i]));
+    for (std::size_t j = 0; j < ax.size(); ++j) {
+      const bool ok_value = std::isfinite(ax[j]) &&
+                            (axis_names[i] == "layer_thickness" ? ax[j] >= 0.0 : ax[j] > 0.0);
+      if (!ok_value || (j > 0 && !(ax[j] > ax[j - 1]))) {
+        throw std::invalid_argument(fmt::format(
+            "{}.axes.{}[{}]: values must be strictly increasing and finite (> 0; thickness "
+            ">= 0), got {}",
+            where, axis_names[i], j, ax[j]));
+      }
+    }
+  }
+  for (std::size_t j = 0; j < curve_creepages.size(); ++j) {
+    if (!std::isfinite(curve_creepages[j]) || (j > 0 && !(curve_creepages[j] > curve_creepages[j - 1]))) {
+      throw std::invalid_argument(fmt::format(
+          "{}.curve_creepages[{}]: must be finite and strictly increasing", where, j));
+    }
+  }
+}
+
+std::size_t KijSweepSpec::points() const {
+  std::size_t n = 1;
+  for (const auto& ax : axes) n *= ax.size();
+  return n;
+}
+
+std::vector<double> KijSweepSpec::coordinates(std::size_t index) const {
+  std::vector<double> c(axes.size());
+  for (std::size_t i = axes.size(); i-- > 0;) {
+    c[i] = axes[i][index % axes[i].size()];
+    index /= axes[i].size();
+  }
+  return c;
+}
+
+void KijSweepSpec::configure(std::size_t index, HertzCase& contact_out,
+                             InterfaceLayer& layer_out) const {
+  contact_out = contact;
+  layer_out = layer;
+  const std::vector<double> c = coordinates(index);
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const std::string& n = axis_names[i];
+    if (n == "normal_force") contact_out.normal_force = c[i];
+    if (n == "layer_thickness") layer_out.thickness = c[i];
+    if (n == "layer_shear_modulus") layer_out.shear_modulus = c[i];
+    if (n == "layer_yield_shear") layer_out.yield_shear = c[i];
+  }
+}
+
+KijPoint compute_point(const KijSweepSpec& spec, std::size_t index) {
+  HertzCase c;
+  InterfaceLayer layer;
+  spec.configure(index, c, layer);
+  KijPoint p;
+  p.slopes = layer_reduction_factors(c, layer, spec.slope);
+  const contact::mim::Grid grid = c.grid();
+  p.nx = grid.nx;
+  p.ny = grid.ny;
+  p.element_size = grid.dx;
+  if (!spec.curve_creepages.empty()) {
+    const contact::mim::Field gap = c.gap(grid);
+    const contact::CombinedMaterial m = contact::combine(c.body, c.body);
+    contact::mim::InfluenceOperator half_space(grid, m);
+    contact::mim::InfluenceOperator layered(grid, m, layer.compliance());
+    SlopeCase sc;
+    sc.normal_force = c.normal_force;
+    sc.friction = c.friction;
+    sc.semi_axis_x = c.semi_axis_x();
+    p.reference_curve_x = creep_curve(half_space, gap, sc, 'x', spec.curve_creepages, spec.slope);
+    p.reference_curve_y = creep_curve(half_space, gap, sc, 'y', spec.curve_creepages, spec.slope);
+    sc.yield_shear = layer.yield_shear;
+    p.curve_x = creep_curve(layered, gap, sc, 'x', spec.curve_creepages, spec.slope);
+    p.curve_y = creep_curve(layered, gap, sc, 'y', spec.curve_creepages, spec.slope);
+  }
+  return p;
+}
+
+contact::KijTable make_table(const KijSweepSpec& spec,
+                             const std::vector<contact::ReductionFactors>& k,
+                             std::map<std::string, std::string> provenance) {
+  if (k.size() != spec.points()) {
+    throw std::invalid_argument(fmt::format("make_table: {} results for {} points", k.size(),
+                                            spec.points()));
+  }
+  std::vector<double> k11, k22, k23, k33;
+  for (const contact::ReductionFactors& f : k) {
+    k11.push_back(f.k11);
+    k22.push_back(f.k22);
+    k23.push_back(f.k23);
+    k33.push_back(f.k33);
+  }
+  contact::KijTable t(spec.axis_names, spec.axes, k11, k22, k23, k33);
+  t.set_provenance(std::move(provenance));
+  return t;
+}
+
+}  // namespace ferro::fe_contact

@@ -1,0 +1,99 @@
+#pragma once
+// A child process started with resource limits (setrlimit in the child before exec) and,
+// optionally, SIGINT and SIGTERM blocked from the start: how the tests put ferrodyn on a "full
+// disk" (RLIMIT_FSIZE), give it little memory (RLIMIT_AS), or deliver a signal before it could
+// possibly have installed a handler. Its stdout and stderr go to one pipe.
+#include <pthread.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ferro::test {
+
+struct Limit {
+  int resource;      // RLIMIT_FSIZE, RLIMIT_AS, ...
+  rlim_t bytes;
+};
+
+class LimitedProcess {
+ public:
+  LimitedProcess(const std::vector<std::string>& args, const std::vector<Limit>& limits,
+                 bool block_stop_signals = false) {
+    int fds[2];
+    if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    // Blocked before fork, so the child is born with the mask: no window in which a signal could
+    // reach it unblocked. The parent restores its own mask right after.
+    sigset_t stop, previous;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    if (block_stop_signals) pthread_sigmask(SIG_BLOCK, &stop, &previous);
+    pid_ = fork();
+    if (pid_ != 0 && block_stop_signals) pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
+      dup2(fds[1], 1);
+      dup2(fds[1], 2);
+      close(fds[0]);
+      close(fds[1]);
+      for (const Limit& l : limits) {
+        const rlimit r{l.bytes, l.bytes};
+        if (setrlimit(l.resource, &r) != 0) _exit(120);
+      }
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    close(fds[1]);
+    out_ = fdopen(fds[0], "r");
+  }
+  ~LimitedProcess() {
+    if (pid_ > 0) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+    if (out_ != nullptr) fclose(out_);
+  }
+  LimitedProcess(const LimitedProcess&) = delete;
+  LimitedProcess& operator=(const LimitedProcess&) = delete;
+
+  /// Next output line, or false at end of stream.
+  bool read_line(std::string& line) {
+    std::array<char, 4096> buf{};
+    if (std::fgets(buf.data(), buf.size(), out_) == nullptr) return false;
+    line = buf.data();
+    output_ += line;
+    return true;
+  }
+  void signal(int sig) const { kill(pid_, sig); }
+  /// Reads the rest of the output, waits; returns the exit code (128 + signal when killed).
+  int wait() {
+    std::string line;
+    while (read_line(line)) {
+    }
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  /// Everything read so far.
+  [[nodiscard]] const std::string& output() const { return output_; }
+
+ private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+  std::string output_;
+};
+
+}  // namespace ferro::test
