@@ -7,6 +7,7 @@ PACKAGES=(
   libeigen3-dev libsundials-dev libboost-dev libyaml-cpp-dev libhdf5-dev libfftw3-dev
   libcli11-dev libfmt-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
+  libopenmpi-dev openmpi-bin
 )
 missing=()
 for p in "${PACKAGES[@]}"; do

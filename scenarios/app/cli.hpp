@@ -34,5 +34,7 @@ void add_mim_commands(CLI::App& app, VerbHandler& handler);      // mim
 /// After add_contact_commands: contact mim-table.
 void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
+/// derailment, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
+void add_analysis_commands(CLI::App& app, VerbHandler& handler);
 
 }  // namespace ferro::cli
