@@ -98,9 +98,10 @@ def bifurcation(f, save):
     order = np.argsort(v)
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for j, n in enumerate(names):
-        a = np.where(out == 0, 0.0, amp[:, j])
-        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=n)
-    for code, marker in ((2, "^"), (3, "^"), (4, "v")):
+        # The branch: settled cycles and decayed runs (amplitude 0); unsettled runs are markers.
+        a = np.where(out == 0, 0.0, np.where(out == 1, amp[:, j], np.nan))
+        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"{n} (steady / decayed)")
+    for code, marker in ((2, "^"), (3, "2"), (4, "v")):
         sel = out == code
         if sel.any():
             ax.plot(v[sel] * 3.6, amp[sel, 0] * 1e3, marker, color="k", ms=5, ls="none", label=OUTCOMES[code])

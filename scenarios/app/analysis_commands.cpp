@@ -155,7 +155,7 @@ std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max)
 struct RampArgs {
   std::string scene, output;
   double speed_initial = 110.0, deceleration = 1.0, speed_final = NAN, hold = 0.1,
-         threshold = 1e-4, window = 2.0, interval = 2e-3, disturbance = 0.01, k11 = 1.0, k22 = 1.0;
+         threshold = 1e-4, max_amplitude = 0.05, window = 2.0, interval = 2e-3, disturbance = 0.01, k11 = 1.0, k22 = 1.0;
   bool no_plots = false;
 };
 
@@ -175,6 +175,7 @@ int do_ramp(const RampArgs& a) {
     throw std::invalid_argument("--speed-final: allowed [0, --speed-initial)");
   o.hold = a.hold;
   o.threshold = a.threshold;
+  o.max_amplitude = a.max_amplitude;
   o.envelope_window = a.window;
   o.output_interval = a.interval;
   o.solver = scene.solver;
@@ -189,7 +190,7 @@ int do_ramp(const RampArgs& a) {
   fmt::print("  ramp      {:.3f} -> {:.3f} m/s at -{} m/s^2, pieces of {} s, {} + {} m at start\n",
              o.speed_initial, o.speed_final, o.deceleration, o.hold, lateral.name.front(),
              a.disturbance);
-  if (!r.completed) fmt::print("  solver    {}\n", r.message);
+  if (!r.completed) fmt::print("  stopped   {}\n", r.message);
   if (r.decay_speed) {
     fmt::print("  decay     {} envelope below {} m for good at t = {:.3f} s: V = {:.3f} m/s = "
                "{:.2f} km/h\n",
@@ -199,6 +200,10 @@ int do_ramp(const RampArgs& a) {
     fmt::print("  decay     none: the envelope {} below {} m over the whole ramp\n",
                r.envelope.empty() || r.envelope.back() >= o.threshold ? "never stays" : "stays",
                o.threshold);
+  }
+  if (!std::isnan(r.peak_speed)) {
+    fmt::print("  growth    the envelope peaks at V = {:.3f} m/s = {:.2f} km/h (growth stops)\n",
+               r.peak_speed, r.peak_speed * 3.6);
   }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
   an::write_ramp(scene, r, o, lateral.name.front(), out);
@@ -669,6 +674,8 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   ramp->add_option("--speed-final", r->speed_final, "End speed [m/s] (default: 0.1 x start)");
   ramp->add_option("--hold", r->hold, "Constant-speed piece duration [s]")->capture_default_str();
   ramp->add_option("--threshold", r->threshold, "Envelope below which the oscillation died [m]")
+      ->capture_default_str();
+  ramp->add_option("--max-amplitude", r->max_amplitude, "Stop as diverged above this [m]")
       ->capture_default_str();
   ramp->add_option("--envelope-window", r->window, "Envelope trailing window [s]")->capture_default_str();
   ramp->add_option("--output-interval", r->interval, "Sampling [s]")->capture_default_str();

@@ -173,6 +173,7 @@ TEST(Ramp, SupercriticalDecaySpeed) {
   o.hold = 1.0;
   o.output_interval = 1e-2;
   o.threshold = 0.3;
+  o.max_amplitude = 10.0;
   o.solver.rtol = 1e-9;
   o.solver.atol = 1e-12;
   const std::vector<double> x0 = {0.05, 0.0};

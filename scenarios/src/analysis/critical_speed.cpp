@@ -13,10 +13,11 @@ namespace ferro::scenarios::analysis {
 RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const double> x0,
                      const RampOptions& o) {
   if (!(o.speed_initial > o.speed_final && o.speed_final >= 0.0 && o.deceleration > 0.0 &&
-        o.hold > 0.0 && o.output_interval > 0.0 && o.envelope_window > 0.0 && o.threshold > 0.0))
+        o.hold > 0.0 && o.output_interval > 0.0 && o.envelope_window > 0.0 && o.threshold > 0.0 &&
+        o.max_amplitude > o.threshold))
     throw std::invalid_argument(
         "ramp: need speed_initial > speed_final >= 0, deceleration > 0, hold > 0, "
-        "output_interval > 0, envelope_window > 0, threshold > 0");
+        "output_interval > 0, envelope_window > 0, max_amplitude > threshold > 0");
   RampResult r;
   std::vector<double> x(x0.begin(), x0.end());
   if (o.observed >= x.size()) throw std::invalid_argument("ramp: observed state out of range");
@@ -28,15 +29,25 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
     const auto system = factory(v);
     const auto grid = vehicle::output_grid(t0, t1, o.output_interval);
     const bool first = r.time.empty();
+    bool diverged = false;
     const auto observer = [&](double t, std::span<const double> xs) {
       if (!first && t == t0) return true;  // the piece's start is the previous piece's end
       r.time.push_back(t);
       r.speed.push_back(o.speed_initial - o.deceleration * t);
       r.signal.push_back(xs[o.observed]);
-      return true;
+      diverged = !(std::abs(xs[o.observed]) <= o.max_amplitude);
+      return !diverged;
     };
     const auto res = integrator->integrate(*system, x, grid, observer);
     x = res.state;
+    if (diverged) {
+      r.completed = false;
+      r.message = fmt::format(
+          "diverged: |x| above {} at t = {:.6g} s (V = {:.4g} m/s); start slower or use a model "
+          "with flange contact",
+          o.max_amplitude, res.t_reached, o.speed_initial - o.deceleration * res.t_reached);
+      break;
+    }
     if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
       r.completed = false;
       r.message = fmt::format("solver stopped at t = {:.6g} s (V = {:.4g} m/s): {}",
@@ -59,6 +70,11 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
     while (qmax.front() < start) qmax.pop_front();
     while (qmin.front() < start) qmin.pop_front();
     r.envelope[i] = 0.5 * (r.signal[qmax.front()] - r.signal[qmin.front()]);
+  }
+  if (n > 0) {
+    const auto peak = std::max_element(r.envelope.begin(), r.envelope.end()) - r.envelope.begin();
+    // A trailing maximum first reaches its largest value when the signal does: no lag.
+    r.peak_speed = r.completed ? r.speed[static_cast<std::size_t>(peak)] : NAN;
   }
   // The decay point: the last time the envelope was above the threshold. Only meaningful once a
   // full window has passed.

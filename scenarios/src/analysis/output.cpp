@@ -30,6 +30,7 @@ void write_ramp(const Scene& scene, const RampResult& r, const RampOptions& o,
                  "half peak-to-peak over the trailing envelope window");
   f.set_attribute("/ramp", "signal_name", signal_name);
   f.set_attribute("/ramp", "decay_speed", r.decay_speed.value_or(NAN));
+  f.set_attribute("/ramp", "peak_speed", r.peak_speed);
   f.set_attribute("/ramp", "threshold", o.threshold);
   f.set_attribute("/ramp", "deceleration", o.deceleration);
   f.set_attribute("/ramp", "speed_initial", o.speed_initial);

@@ -31,6 +31,7 @@ struct RampOptions {
   double output_interval = 2e-3;  ///< [s]
   double envelope_window = 2.0;   ///< envelope = max |x - x_mean| over this trailing time [s]
   double threshold = 1e-4;        ///< oscillation died out when the envelope stays below [unit]
+  double max_amplitude = 0.05;    ///< the run stops as diverged when |x| exceeds this [unit]
   vehicle::IntegratorSettings solver;
   std::size_t observed = 0;       ///< state index (wheelset 1 lateral displacement)
 };
@@ -39,6 +40,9 @@ struct RampResult {
   std::vector<double> time, speed, signal, envelope;
   std::optional<double> decay_speed;  ///< speed where the envelope goes below for good [m/s]
   double decay_time = NAN;            ///< [s]
+  /// Speed at the envelope's maximum [m/s]: where the oscillation stops growing. For a linear
+  /// model slow enough a ramp, the speed where the least damped mode's damping crosses zero.
+  double peak_speed = NAN;
   bool completed = true;              ///< false when the solver failed (message says why)
   std::string message;
 };
