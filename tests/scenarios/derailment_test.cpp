@@ -149,6 +149,8 @@ TEST(Derailment, AssessmentFromRunFile) {
   EXPECT_NEAR(l.flange_angle, 70.0 * kDeg, 1e-9);
   EXPECT_NEAR(l.nadal, nadal_limit(70.0 * kDeg, 0.5), kRoundoff);
   EXPECT_TRUE(l.pass_nadal);  // 0.69 < 0.947
+  EXPECT_TRUE(std::isnan(r.wheels[1].nadal));  // tread contact at 3 deg: tan 3 deg < mu
+  EXPECT_TRUE(r.wheels[1].pass_nadal);
   EXPECT_NEAR(r.wheels[1].max_unloading, 0.3, 1e-6);
   EXPECT_NEAR(r.wheels[1].max_unloading_position, 60.0, 1e-6);
   // Sum Y = 0.8 Q0 cos^2: the 2 m mean at the centre is 0.8 Q0 (1/2 + sin(pi/5)/(2 pi/5)/... ):

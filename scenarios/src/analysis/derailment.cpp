@@ -133,8 +133,12 @@ DerailmentReport assess_derailment(const std::vector<double>& position,
     } else {
       for (double g : w.contact_angle) a.flange_angle = std::max(a.flange_angle, std::abs(g));
     }
-    a.nadal = a.flange_angle > 0.0 ? nadal_limit(a.flange_angle, options.mu) : NAN;
-    a.pass_nadal = !(a.max_y_over_q > a.nadal);
+    // Nadal applies to a wheel in flange contact: with tan(angle) <= mu the contact cannot
+    // climb (the limit would be <= 0), so no limit is set for it.
+    a.nadal = a.flange_angle > 0.0 && std::tan(a.flange_angle) > options.mu
+                  ? nadal_limit(a.flange_angle, options.mu)
+                  : NAN;
+    a.pass_nadal = std::isnan(a.nadal) || a.max_y_over_q <= a.nadal;
     a.pass_unloading = a.max_unloading <= options.unloading_limit;
     report.pass = report.pass && a.pass_nadal && a.pass_unloading;
     report.wheels.push_back(std::move(a));

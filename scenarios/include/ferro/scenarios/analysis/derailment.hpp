@@ -53,7 +53,8 @@ struct WheelAssessment {
   double max_y_over_q_position = 0.0;  ///< where [m]
   double max_y_over_q_raw = 0.0;    ///< peak of the unfiltered Y/Q [-]
   double flange_angle = 0.0;        ///< angle used in Nadal's limit [rad]
-  double nadal = 0.0;               ///< Nadal's limit [-]
+  double nadal = 0.0;               ///< Nadal's limit [-]; NaN when tan(angle) <= mu (no flange
+                                    ///< contact: the wheel cannot climb)
   double q0 = 0.0;                  ///< static wheel load [N]
   double max_unloading = 0.0;       ///< max (Q0 - Q)/Q0 [-]
   double max_unloading_position = 0.0;  ///< [m]
