@@ -148,7 +148,7 @@ an::SettleOptions settle_options(const Scene& scene, const SettleArgs& s) {
 std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max) {
   const auto family = an::speed_family(scene);
   const auto probe = family(0.5 * (v_min + v_max));
-  const auto x_eq = scenarios::initial_state(scene, *probe);
+  const auto x_eq = scenarios::equilibrium_state(scene, *probe);
   return vehicle::critical_speed(family, v_min, v_max, x_eq, 64, 1e-8);
 }
 
@@ -356,8 +356,9 @@ int do_kij(const KijArgs& a) {
   std::vector<an::Reduction> ks;
   for (double k : a.k) {
     an::Reduction r{a.branch.settle.k11, a.branch.settle.k22};
-    if (a.coefficient != "k22") r.k11 = k;
-    if (a.coefficient != "k11") r.k22 = k;
+    if (a.coefficient == "both") r = an::Reduction::uniform(k);
+    if (a.coefficient == "k11") r.k11 = k;
+    if (a.coefficient == "k22") r.k22 = k;
     ks.push_back(r);
   }
   (void)branch_options(scene, a.branch);  // validate before starting
@@ -504,8 +505,9 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   std::vector<an::SweepPoint> points;
   for (double k : a.k) {
     an::Reduction r{a.settle.k11, a.settle.k22};
-    if (a.coefficient != "k22") r.k11 = k;
-    if (a.coefficient != "k11") r.k22 = k;
+    if (a.coefficient == "both") r = an::Reduction::uniform(k);
+    if (a.coefficient == "k11") r.k11 = k;
+    if (a.coefficient == "k22") r.k22 = k;
     (void)an::with_reduction(scene, r);  // validates the factors
     for (int i = 0; i < a.points; ++i) {
       const double v = a.points == 1 ? a.speed_min
@@ -558,10 +560,11 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
                  an::to_string(r.outcome), r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3);
     }
   };
+  const auto resources = scenarios::build_resources(scene);
   const auto mine = an::run_pool(
       todo,
       [&](std::size_t i) {
-        return an::run_sweep_point(scene, i, points[i], a.settle.disturbance, settle);
+        return an::run_sweep_point(scene, resources, i, points[i], a.settle.disturbance, settle);
       },
       pool);
   const double wall =
@@ -644,7 +647,7 @@ int do_sweep(const SweepArgs& a) {
 
 void add_k_options(CLI::App* c, std::vector<double>& k, std::string& coefficient) {
   c->add_option("--k", k, "Reduction factors (one run per value)")->delimiter(',');
-  c->add_option("--coefficient", coefficient, "Which factor --k sets: both, k11, k22")->capture_default_str();
+  c->add_option("--coefficient", coefficient, "Which factor --k sets: both (K11 = K22 = K23 = K33), k11, k22")->capture_default_str();
 }
 
 }  // namespace

@@ -20,14 +20,14 @@ namespace fs = std::filesystem;
 using scenarios::Scene;
 
 struct RunArgs {
-  std::string scene, output, plot_dir, integrator;
+  std::string scene, output, plot_dir, integrator, tangential;
   std::vector<std::string> csv;
   double t_end = NAN, speed = NAN, pace = 0.0;
   bool no_plots = false, quiet = false;
 };
 
 struct EigArgs {
-  std::string scene, output;
+  std::string scene, output, tangential;
   double speed_min = NAN, speed_max = NAN;
   int points = 0;
   bool no_plots = false;
@@ -66,6 +66,7 @@ int do_run(const RunArgs& a) {
       throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", a.speed));
     scene.simulation.speed = a.speed;
   }
+  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
   if (!a.integrator.empty()) {
     scene.solver.method = a.integrator;
     scene.solver.validate("--integrator");
@@ -88,10 +89,13 @@ int do_run(const RunArgs& a) {
   const double v = scene.simulation.speed;
   fmt::print("ferrodyn run: {} ({})\n", scene.name, scene.path);
   fmt::print("  model     {}, V = {:.3f} m/s ({:.1f} km/h)\n", scene.model.type, v, v * 3.6);
-  {
+  if (scene.model.type == "vehicle") {
+    fmt::print("  vehicle   {} (scope {}), contact {} geometry, {} creep forces\n",
+               scene.model.vehicle.name, scene.model.selection.scope,
+               scene.model.vehicle.wheel_rail.geometry, scene.model.vehicle.wheel_rail.tangential_model);
+  } else {
     const auto sys = scenarios::build_system(scene, v);
-    const std::vector<double> x_eq(sys->size(), 0.0);
-    const auto modes = vehicle::linear_modes(*sys, 0.0, x_eq);
+    const auto modes = vehicle::linear_modes(*sys, 0.0, scenarios::equilibrium_state(scene, *sys));
     if (!modes.empty()) {
       fmt::print("  linear    least damped mode at V: damping ratio {:+.4f}, {:.3f} Hz ({})\n",
                  modes.front().damping_ratio, modes.front().frequency_hz,
@@ -105,7 +109,21 @@ int do_run(const RunArgs& a) {
              s.wall_seconds > 0 ? s.t_reached / s.wall_seconds : 0.0);
   if (!s.message.empty()) fmt::print("  cause     {}\n", s.message);
   fmt::print("  {:<30} {:<6} {:>12} {:>12}\n", "signal", "unit", "peak |x|", "final");
+  // A vehicle has many channels: the summary shows wheel forces, wheelset displacements and
+  // car-body acceleration (the HDF5 file has them all).
+  const auto shown = [&](const std::string& name) {
+    if (scene.model.type != "vehicle") return true;
+    for (const char* end : {".Y", ".Q", ".points", "ay"}) {
+      const std::string e(end);
+      if (name.size() >= e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
+        return true;
+    }
+    return name.rfind("wheelset_", 0) == 0 &&
+           (name.size() > 2 && (name.substr(name.size() - 2) == ".y" ||
+                                (name.size() > 4 && name.substr(name.size() - 4) == ".yaw")));
+  };
   for (std::size_t i = 0; i < s.channels.size(); ++i) {
+    if (!shown(s.channels[i].name)) continue;
     fmt::print("  {:<30} {:<6} {:>12.5g} {:>12.5g}\n", s.channels[i].name, s.channels[i].unit,
                s.peak_abs[i], s.final_values[i]);
   }
@@ -114,7 +132,7 @@ int do_run(const RunArgs& a) {
     const std::string dir = a.plot_dir.empty() ? default_plot_dir(s.output_file) : a.plot_dir;
     std::vector<std::string> signals = scene.output.plots;
     if (signals.empty()) {
-      for (const auto& name : scenarios::state_names(scene.model)) signals.push_back(name);
+      for (std::size_t i = 0; i < s.state_count; ++i) signals.push_back(s.channels[i].name);
     }
     const int rc = make_plots("timeseries", s.output_file, signals, dir, "png,svg");
     if (rc == 0) {
@@ -138,6 +156,7 @@ int do_run(const RunArgs& a) {
 
 int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
+  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
   if (!std::isnan(a.speed_min)) scene.eigen.speed_min = a.speed_min;
   if (!std::isnan(a.speed_max)) scene.eigen.speed_max = a.speed_max;
   if (a.points > 0) scene.eigen.points = a.points;
@@ -233,6 +252,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
+  run->add_option("--tangential", run_args->tangential,
+                  "Override the scene's tangential contact model (vehicle scenes)");
   run->add_option("--pace", run_args->pace,
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
   run->add_option("--plot-dir", run_args->plot_dir,
@@ -250,6 +271,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("--speed-min", eig_args->speed_min, "Lowest speed [m/s]");
   eig->add_option("--speed-max", eig_args->speed_max, "Highest speed [m/s]");
   eig->add_option("--points", eig_args->points, "Number of speeds in the sweep");
+  eig->add_option("--tangential", eig_args->tangential,
+                  "Override the scene's tangential contact model (vehicle scenes)");
   eig->add_flag("--no-plots", eig_args->no_plots, "Do not draw plots");
   eig->callback([&handler, eig_args] { handler = [eig_args] { return do_eig(*eig_args); }; });
 

@@ -1,9 +1,14 @@
 #include "ferro/scenarios/model_factory.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <set>
 #include <stdexcept>
 
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -11,7 +16,7 @@ namespace {
 // Names do not depend on parameter values: list them from a model built with unit parameters.
 std::unique_ptr<vehicle::OdeSystem> probe(const ModelConfig& model) {
   if (model.type != "suspended_wheelset")
-    throw std::invalid_argument("unknown model type " + model.type);
+    throw std::invalid_argument("state names are listed for suspended_wheelset models only");
   vehicle::SuspendedWheelsetParams p;
   p.mass = p.yaw_inertia = p.half_gauge = p.rolling_radius = p.conicity = 1.0;
   p.primary_stiffness_x = p.primary_stiffness_y = 1.0;
@@ -34,21 +39,65 @@ std::vector<std::string> signal_names(const ModelConfig& model) {
   return out;
 }
 
+ModelResources build_resources(const Scene& scene) {
+  ModelResources r;
+  if (scene.model.type != "vehicle") return r;
+  r.track = build_track(scene.track);
+  r.geometry = vehicle::make_geometry_source(scene.model.vehicle.wheel_rail, "");
+  return r;
+}
+
 std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed) {
+  return build_system(scene, speed, build_resources(scene));
+}
+
+std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed,
+                                                 const ModelResources& resources) {
   if (scene.model.type == "suspended_wheelset") {
     return std::make_unique<vehicle::SuspendedWheelset>(
         scene.model.wheelset, vehicle::creep_coefficients(scene.contact.creep), speed);
   }
+  if (scene.model.type == "vehicle") {
+    vehicle::VehicleModelInputs in;
+    in.config = scene.model.vehicle;
+    in.selection = scene.model.selection;
+    in.track = resources.track;
+    in.geometry = resources.geometry;
+    in.speed.initial = speed;
+    in.speed.acceleration = scene.simulation.acceleration;
+    in.start_position = scene.simulation.start_position;
+    return std::make_unique<vehicle::VehicleModel>(std::move(in));
+  }
   throw std::invalid_argument("model.type: unknown '" + scene.model.type +
-                              "'; allowed: suspended_wheelset");
+                              "'; allowed: suspended_wheelset, vehicle");
+}
+
+std::vector<double> equilibrium_state(const Scene& scene, const vehicle::OdeSystem& system) {
+  if (const auto* v = dynamic_cast<const vehicle::VehicleModel*>(&system)) {
+    return v->static_equilibrium(0.0);
+  }
+  return std::vector<double>(system.size(), 0.0);
 }
 
 std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& system) {
-  std::vector<double> x(system.size(), 0.0);
+  std::vector<double> x = equilibrium_state(scene, system);
   const auto info = system.state_info();
-  for (std::size_t i = 0; i < info.size(); ++i) {
-    const auto it = scene.simulation.initial.find(info[i].name);
-    if (it != scene.simulation.initial.end()) x[i] = it->second;
+  for (const auto& [name, value] : scene.simulation.initial) {
+    std::size_t i = 0;
+    while (i < info.size() && info[i].name != name) ++i;
+    if (i == info.size()) {
+      std::vector<std::string> names;
+      for (const auto& s : info) names.push_back(s.name);
+      const std::string near = nearest_key(name, {names.begin(), names.end()});
+      const auto it = scene.simulation.initial_position.find(name);
+      const auto [line, col] =
+          it == scene.simulation.initial_position.end() ? std::pair{0, 0} : it->second;
+      throw YamlInputError(scene.path, line, col, "simulation.initial." + name,
+                           fmt::format("unknown state{}; states of this model: {}",
+                                       near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
+                                       fmt::join(names, ", ")));
+    }
+    x[i] += value;
   }
   return x;
 }

@@ -1,6 +1,7 @@
 #include "ferro/scenarios/run.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -38,6 +39,14 @@ void write_metadata(H5File& file, const Scene& scene, const std::string& kind) {
   file.set_attribute("/", "rtol", scene.solver.rtol);
   file.set_attribute("/", "atol", scene.solver.atol);
   file.set_attribute("/", "speed", scene.simulation.speed);
+  if (scene.model.type == "vehicle") {
+    const auto& w = scene.model.vehicle.wheel_rail;
+    file.set_attribute("/", "vehicle", scene.model.vehicle.name);
+    file.set_attribute("/", "model_scope", scene.model.selection.scope);
+    file.set_attribute("/", "contact_geometry", w.geometry);
+    file.set_attribute("/", "tangential_model", w.tangential_model);
+    file.set_attribute("/", "acceleration", scene.simulation.acceleration);
+  }
   file.set_attribute("/", "units",
                      std::string("SI: m, s, kg, N, rad; each dataset has a 'unit' attribute"));
   file.write_text("/scene/text", scene.text);
@@ -70,13 +79,24 @@ std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
 }  // namespace
 
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
-  const auto system = build_system(scene, scene.simulation.speed);
+  const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
   const auto x0 = initial_state(scene, *system);
   const auto states = system->state_info();
   const auto derived = system->signal_info();
   RunSummary summary;
   summary.channels = states;
   summary.channels.insert(summary.channels.end(), derived.begin(), derived.end());
+  summary.state_count = states.size();
+  for (const auto& name : scene.output.plots) {
+    const bool found = std::any_of(summary.channels.begin(), summary.channels.end(),
+                                   [&](const auto& c) { return c.name == name; });
+    if (!found) {
+      std::vector<std::string> names;
+      for (const auto& c : summary.channels) names.push_back(c.name);
+      throw std::invalid_argument(fmt::format("output.plots: unknown signal '{}'; signals: {}",
+                                              name, fmt::join(names, ", ")));
+    }
+  }
   const std::size_t n_states = states.size();
   const std::size_t n_channels = summary.channels.size();
   summary.peak_abs.assign(n_channels, 0.0);
@@ -168,9 +188,14 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
 
 EigenReport run_eigen(const Scene& scene) {
   EigenReport report;
-  const auto factory = [&scene](double v) { return build_system(scene, v); };
-  const auto probe = build_system(scene, scene.simulation.speed);
-  const std::vector<double> x_eq(probe->size(), 0.0);
+  const ModelResources resources = build_resources(scene);
+  const auto factory = [&scene, &resources](double v) {
+    return build_system(scene, v, resources);
+  };
+  const auto probe = build_system(scene, scene.simulation.speed, resources);
+  // About the static equilibrium at the scene's speed (on straight track it does not depend on
+  // the speed).
+  const std::vector<double> x_eq = equilibrium_state(scene, *probe);
   std::vector<double> speeds(static_cast<std::size_t>(scene.eigen.points));
   for (int i = 0; i < scene.eigen.points; ++i) {
     speeds[static_cast<std::size_t>(i)] =

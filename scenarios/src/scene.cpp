@@ -3,48 +3,27 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 
+#include "ferro/contact/tangential_model.hpp"
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/vehicle_file.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
+#include "located.hpp"
+#include "yaml_values.hpp"
 
 namespace ferro::scenarios {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Runs a struct's validate(); turns its "path.field: message" into an error at the field's
-// line in the YAML.
 template <class F>
 void validated(const MapReader& reader, F&& check) {
-  try {
-    check();
-  } catch (const YamlInputError&) {
-    throw;
-  } catch (const std::invalid_argument& e) {
-    const std::string msg = e.what();
-    const std::string prefix = reader.path() + ".";
-    const auto colon = msg.find(": ");
-    std::string field = colon == std::string::npos ? std::string() : msg.substr(0, colon);
-    if (field.rfind(prefix, 0) == 0) field = field.substr(prefix.size());
-    // Walk to the deepest node that exists for the line number.
-    YAML::Node at = reader.yaml();
-    std::size_t start = 0;
-    while (!field.empty() && at.IsMap()) {
-      const auto dot = field.find('.', start);
-      const std::string part =
-          field.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-      if (!at[part].IsDefined()) break;
-      at = at[part];
-      if (dot == std::string::npos) break;
-      start = dot + 1;
-    }
-    const auto [l, c] = position_of(at);
-    throw YamlInputError(reader.file(), l, c,
-                         field.empty() ? reader.path() : reader.key_path(field),
-                         colon == std::string::npos ? msg : msg.substr(colon + 2));
-  }
+  detail::located(reader, std::forward<F>(check));
 }
 
 // A part is either written inline (a mapping) or named by a file relative to the scene. An
@@ -79,6 +58,90 @@ void read_material(MapReader r, contact::Material& m) {
   r.finish();
 }
 
+// Track margin beyond the outermost wheelsets, for the contact look-up around them [m].
+constexpr double kTrackMargin = 1.0;
+
+// The `vehicle` model: a vehicle file (or inline description) and what of it to model.
+void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep) {
+  auto& model = scene.model;
+  if (m.has("vehicle") && m.yaml()["vehicle"].IsScalar()) {
+    const std::string name = m.string("vehicle");
+    const fs::path file = (fs::path(m.file()).parent_path() / name).lexically_normal();
+    if (!fs::exists(file)) {
+      m.fail("vehicle", fmt::format("vehicle file '{}' does not exist (looked for {})", name,
+                                    file.string()));
+    }
+    model.vehicle_file = file.string();
+    model.vehicle = load_vehicle_file(model.vehicle_file);
+    keep.push_back(load_yaml_file(model.vehicle_file));
+    scene.text += fmt::format("\n# ---- included: {} ----\n{}", model.vehicle_file,
+                              keep.back().text);
+  } else {
+    MapReader v = m.map("vehicle");
+    model.vehicle = read_vehicle(v);
+  }
+  auto& sel = model.selection;
+  sel.scope = m.string_or("scope", sel.scope, {"vehicle", "bogie", "wheelset"});
+  const long index = m.integer_or("index", 0);
+  const long count = sel.scope == "bogie" ? 2 : sel.scope == "wheelset" ? 4 : 1;
+  if (index < 0 || index >= count) {
+    m.fail("index", fmt::format("must lie in 0..{} for scope '{}' (0 = front), got {}", count - 1,
+                                sel.scope, index));
+  }
+  sel.index = static_cast<int>(index);
+  sel.frozen = m.string_list_or("frozen", {});
+  std::set<std::string> dofs(vehicle::kDofNames.begin(), vehicle::kDofNames.end());
+  dofs.insert("spin");
+  for (const auto& f : sel.frozen) {
+    const auto dot = f.find('.');
+    const std::string body = dot == std::string::npos ? "" : f.substr(0, dot);
+    const std::string dof = dot == std::string::npos ? f : f.substr(dot + 1);
+    if (!body.empty() && body_index(model.vehicle, body) < 0) {
+      std::set<std::string> names;
+      for (const auto& b : model.vehicle.bodies) names.insert(b.name);
+      m.fail("frozen", fmt::format("unknown body '{}' in '{}'; bodies: {}", body, f,
+                                   fmt::join(names, ", ")));
+    }
+    if (dofs.count(dof) == 0) {
+      m.fail("frozen", fmt::format("unknown degree of freedom '{}' in '{}'; allowed: x, y, z, "
+                                   "roll, pitch, yaw, spin (optionally as body.dof)",
+                                   dof, f));
+    }
+  }
+  m.finish();
+}
+
+// The vehicle must stay on the designed track for the whole run.
+void check_track_extent(const Scene& scene, MapReader& sim, const MapReader& track) {
+  double front = 0.0, back = 0.0;
+  for (const auto& b : scene.model.vehicle.bodies) {
+    front = std::max(front, b.position.x());
+    back = std::min(back, b.position.x());
+  }
+  const auto& s = scene.simulation;
+  double distance = s.speed * s.t_end + 0.5 * s.acceleration * s.t_end * s.t_end;
+  if (s.acceleration < 0.0) {
+    const double t_stop = s.speed / -s.acceleration;
+    if (t_stop < s.t_end) distance = 0.5 * s.speed * t_stop;
+  }
+  const auto& d = scene.track.design;
+  const double begin = d.start_s, end = d.start_s + d.total_length();
+  if (s.start_position + back - kTrackMargin < begin) {
+    sim.fail("start_position",
+             fmt::format("the rear of the vehicle ({:.3f} m behind its centre) starts before the "
+                         "track begins at s = {} m; start_position must be >= {:.3f} m",
+                         -back, begin, begin - back + kTrackMargin));
+  }
+  if (s.start_position + front + distance + kTrackMargin > end) {
+    const std::string key = sim.has("t_end") ? "t_end" : "speed";
+    (void)track;
+    sim.fail(key, fmt::format("the vehicle runs off the track: it covers {:.1f} m from s = {} m "
+                              "(front {:.3f} m ahead of its centre) but the track ends at "
+                              "s = {:.1f} m; lengthen the track or shorten t_end",
+                              distance, s.start_position, front, end));
+  }
+}
+
 }  // namespace
 
 Scene load_scene(const std::string& path) {
@@ -102,39 +165,67 @@ Scene load_scene(const std::string& path) {
 
   {  // model
     MapReader m = open_part(top, "model", scene, included);
-    scene.model.type = m.string("type", {"suspended_wheelset"});
-    auto& w = scene.model.wheelset;
-    w.mass = m.number("mass");
-    w.yaw_inertia = m.number("yaw_inertia");
-    w.half_gauge = m.number("half_gauge");
-    w.rolling_radius = m.number("rolling_radius");
-    w.conicity = m.number("conicity");
-    w.primary_stiffness_x = m.number("primary_stiffness_x");
-    w.primary_stiffness_y = m.number("primary_stiffness_y");
-    w.primary_damping_x = m.number_or("primary_damping_x", 0.0);
-    w.primary_damping_y = m.number_or("primary_damping_y", 0.0);
-    w.primary_semi_spacing = m.number_or("primary_semi_spacing", w.primary_semi_spacing);
-    m.finish();
-    validated(m, [&] { w.validate(m.path()); });
+    scene.model.type = m.string("type", {"suspended_wheelset", "vehicle"});
+    if (scene.model.type == "vehicle") {
+      read_vehicle_model(m, scene, included);
+    } else {
+      auto& w = scene.model.wheelset;
+      w.mass = m.number("mass");
+      w.yaw_inertia = m.number("yaw_inertia");
+      w.half_gauge = m.number("half_gauge");
+      w.rolling_radius = m.number("rolling_radius");
+      w.conicity = m.number("conicity");
+      w.primary_stiffness_x = m.number("primary_stiffness_x");
+      w.primary_stiffness_y = m.number("primary_stiffness_y");
+      w.primary_damping_x = m.number_or("primary_damping_x", 0.0);
+      w.primary_damping_y = m.number_or("primary_damping_y", 0.0);
+      w.primary_semi_spacing = m.number_or("primary_semi_spacing", w.primary_semi_spacing);
+      m.finish();
+      validated(m, [&] { w.validate(m.path()); });
+    }
   }
+  const bool vehicle_model = scene.model.type == "vehicle";
+  std::optional<MapReader> track_reader;
   {  // track
-    MapReader t = open_part(top, "track", scene, included);
-    scene.track.type = t.string_or("type", "straight", {"straight"});
-    t.finish();
+    track_reader.emplace(open_part(top, "track", scene, included));
+    MapReader& t = *track_reader;
+    if (vehicle_model) {
+      scene.track = read_track(t);
+      auto& wr = scene.model.vehicle.wheel_rail;
+      if (!std::isnan(scene.track.gauge)) wr.track_gauge = scene.track.gauge;
+      scene.track.design.gauge = wr.track_gauge;
+      if (!std::isnan(scene.track.rail_inclination))
+        wr.rail_inclination = scene.track.rail_inclination;
+    } else {
+      scene.track.type = t.string_or("type", "straight", {"straight"});
+      t.finish();
+    }
   }
   {  // contact
-    MapReader c = open_part(top, "contact", scene, included);
-    auto& cr = scene.contact.creep;
-    c.string_or("tangential", "kalker_linear", {"kalker_linear"});
-    cr.semi_axis_a = c.number("semi_axis_a");
-    cr.semi_axis_b = c.number("semi_axis_b");
-    cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
-    cr.k11 = c.number_or("k11", cr.k11);
-    cr.k22 = c.number_or("k22", cr.k22);
-    read_material(c.map_or_empty("wheel"), cr.wheel);
-    read_material(c.map_or_empty("rail"), cr.rail);
-    c.finish();
-    validated(c, [&] { cr.validate(c.path()); });
+    if (vehicle_model) {
+      // Optional: the vehicle file's wheel_rail block holds the defaults.
+      if (top.has("contact")) {
+        MapReader c = open_part(top, "contact", scene, included);
+        read_wheel_rail(c, scene.model.vehicle.wheel_rail);
+        c.finish();
+        check_wheel_rail(c, scene.model.vehicle.wheel_rail);
+      } else {
+        top.allow("contact");
+      }
+    } else {
+      MapReader c = open_part(top, "contact", scene, included);
+      auto& cr = scene.contact.creep;
+      (void)c.string_or("tangential", "kalker_linear", {"kalker_linear"});
+      cr.semi_axis_a = c.number("semi_axis_a");
+      cr.semi_axis_b = c.number("semi_axis_b");
+      cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
+      cr.k11 = c.number_or("k11", cr.k11);
+      cr.k22 = c.number_or("k22", cr.k22);
+      read_material(c.map_or_empty("wheel"), cr.wheel);
+      read_material(c.map_or_empty("rail"), cr.rail);
+      c.finish();
+      validated(c, [&] { cr.validate(c.path()); });
+    }
   }
   {  // simulation
     MapReader s = top.map("simulation");
@@ -146,20 +237,42 @@ Scene load_scene(const std::string& path) {
       s.allow("speed_kmh");
     else
       s.allow("speed");
-    if (!(scene.simulation.speed > 0.0)) s.fail(kmh ? "speed_kmh" : "speed", "must be > 0");
+    const char* speed_key = kmh ? "speed_kmh" : "speed";
+    if (vehicle_model) {
+      if (!(scene.simulation.speed >= 0.0)) s.fail(speed_key, "must be >= 0");
+      scene.simulation.acceleration = s.number_or("acceleration", 0.0);
+      scene.simulation.start_position = s.number_or("start_position", 0.0);
+    } else if (!(scene.simulation.speed > 0.0)) {
+      s.fail(speed_key, "must be > 0");
+    }
     scene.simulation.t_end = s.number("t_end");
     if (!(scene.simulation.t_end > 0.0))
       s.fail("t_end", fmt::format("must be > 0 s, got {}", scene.simulation.t_end));
     MapReader init = s.map_or_empty("initial");
-    const auto states = state_names(scene.model);
-    for (const auto& kv : init.yaml()) {
-      const std::string name = kv.first.as<std::string>();
-      if (std::find(states.begin(), states.end(), name) != states.end()) {
+    if (vehicle_model) {
+      // State names are the model's; they are checked when the model is built.
+      for (const auto& kv : init.yaml()) {
+        const std::string name = kv.first.as<std::string>();
         scene.simulation.initial[name] = init.number(name);
+        scene.simulation.initial_position[name] = position_of(kv.first);
       }
+    } else {
+      const auto states = state_names(scene.model);
+      for (const auto& kv : init.yaml()) {
+        const std::string name = kv.first.as<std::string>();
+        if (std::find(states.begin(), states.end(), name) != states.end()) {
+          scene.simulation.initial[name] = init.number(name);
+        }
+      }
+      for (const auto& n : states) init.allow(n);
     }
-    for (const auto& n : states) init.allow(n);
     init.finish();
+    if (vehicle_model && scene.track.type == "design") {
+      check_track_extent(scene, s, *track_reader);
+    } else {
+      s.allow("acceleration");
+      s.allow("start_position");
+    }
     s.finish();
   }
   {  // solver
@@ -188,7 +301,7 @@ Scene load_scene(const std::string& path) {
     v.csv = o.string_list_or("csv", {});
     v.plots = o.string_list_or("plots", {});
     o.finish();
-    const auto names = signal_names(scene.model);
+    const auto names = vehicle_model ? std::vector<std::string>{} : signal_names(scene.model);
     auto check_names = [&](const std::vector<std::string>& list, const char* key) {
       for (const auto& n : list) {
         if (n == "all") continue;
@@ -201,8 +314,11 @@ Scene load_scene(const std::string& path) {
         }
       }
     };
-    check_names(v.csv, "csv");
-    check_names(v.plots, "plots");
+    // A vehicle model's signal names are checked when the model is built.
+    if (!vehicle_model) {
+      check_names(v.csv, "csv");
+      check_names(v.plots, "plots");
+    }
   }
   {  // analysis (optional)
     MapReader a = top.map_or_empty("analysis");
@@ -220,6 +336,27 @@ Scene load_scene(const std::string& path) {
   }
   top.finish();
   return scene;
+}
+
+void override_tangential(Scene& scene, const std::string& name, const std::string& flag) {
+  if (scene.model.type != "vehicle") {
+    throw std::invalid_argument(fmt::format(
+        "{}: only vehicle scenes choose a tangential model (this one is {})", flag,
+        scene.model.type));
+  }
+  const auto names = contact::tangential_model_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    throw std::invalid_argument(fmt::format("{}: unknown tangential model '{}'; allowed: {}", flag,
+                                            name, fmt::join(names, ", ")));
+  }
+  auto& w = scene.model.vehicle.wheel_rail;
+  if (w.tangential_model != name) w.tangential_options.clear();
+  w.tangential_model = name;
+  try {
+    (void)contact::make_tangential_model(name, w.tangential_options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("{}: {}", flag, e.what()));
+  }
 }
 
 }  // namespace ferro::scenarios

@@ -36,6 +36,10 @@ const BadScene kBadScenes[] = {
     {"unknown_model_type", 4, "model.type", "allowed: suspended_wheelset"},
     {"list_at_top", 1, "(document)", "expected a mapping"},
     {"duplicate_speed", 19, "simulation.speed_kmh", "not both"},
+    {"vehicle_off_track", 10, "simulation.t_end", "runs off the track"},
+    {"vehicle_unknown_scope", 5, "model.scope", "did you mean 'bogie'?"},
+    {"vehicle_curve_without_radius", 9, "track.sections[2].radius", "missing required key"},
+    {"vehicle_bad_contact_override", 8, "contact.tangential_options", "mz"},
 };
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};

@@ -4,6 +4,7 @@
 // and a slow ramp's envelope peaks where the growth rate crosses zero, at Vc.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
 
 #include "ferro/scenarios/analysis/critical_speed.hpp"
@@ -77,7 +78,9 @@ TEST(WheelsetCriticalSpeed, ReductionFactorsReachTheModel) {
   EXPECT_DOUBLE_EQ(c2.f11, 0.5 * c1.f11);
   EXPECT_DOUBLE_EQ(c2.f22, 0.7 * c1.f22);
   EXPECT_THROW((void)with_reduction(s, {0.0, 1.0}), std::invalid_argument);
-  EXPECT_THROW((void)with_reduction(s, {1.0, 2.0}), std::invalid_argument);
+  EXPECT_THROW((void)with_reduction(s, {1.0, 1.2}), std::invalid_argument);
+  const auto u = with_reduction(s, Reduction::uniform(0.6));
+  EXPECT_EQ(u.model.vehicle.wheel_rail.reduction, (std::array<double, 4>{0.6, 0.6, 0.6, 0.6}));
 }
 
 }  // namespace

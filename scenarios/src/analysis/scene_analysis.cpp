@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <memory>
 #include <stdexcept>
 
 #include "ferro/scenarios/model_factory.hpp"
@@ -9,18 +10,24 @@
 namespace ferro::scenarios::analysis {
 
 Scene with_reduction(Scene scene, const Reduction& k) {
-  for (const auto& [name, v] : {std::pair{"k11", k.k11}, std::pair{"k22", k.k22}}) {
-    if (!(v > 0.0 && v <= 1.5))
-      throw std::invalid_argument(
-          fmt::format("reduction factor {} = {}: allowed (0, 1.5]", name, v));
+  const double k23 = std::isnan(k.k23) ? k.k22 : k.k23;
+  const double k33 = std::isnan(k.k33) ? k.k22 : k.k33;
+  for (const auto& [name, v] : {std::pair{"k11", k.k11}, std::pair{"k22", k.k22},
+                                std::pair{"k23", k23}, std::pair{"k33", k33}}) {
+    if (!(v > 0.0 && v <= 1.0))
+      throw std::invalid_argument(fmt::format("reduction factor {} = {}: allowed (0, 1]", name, v));
   }
   scene.contact.creep.k11 = k.k11;
   scene.contact.creep.k22 = k.k22;
+  scene.model.vehicle.wheel_rail.reduction = {k.k11, k.k22, k23, k33};
   return scene;
 }
 
 vehicle::SystemAtSpeed speed_family(const Scene& scene) {
-  return [scene](double v) { return build_system(scene, v); };
+  Scene constant = scene;
+  constant.simulation.acceleration = 0.0;
+  auto resources = std::make_shared<const ModelResources>(build_resources(constant));
+  return [constant, resources](double v) { return build_system(constant, v, *resources); };
 }
 
 LateralStates lateral_states(const vehicle::OdeSystem& system) {

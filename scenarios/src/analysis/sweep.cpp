@@ -84,11 +84,13 @@ SweepPointResult deserialize(const std::string& line, const std::string& where) 
   return r;
 }
 
-SweepPointResult run_sweep_point(const Scene& scene, std::size_t index, const SweepPoint& point,
-                                 double lateral_offset, SettleOptions options) {
+SweepPointResult run_sweep_point(const Scene& scene, const ModelResources& resources,
+                                 std::size_t index, const SweepPoint& point, double lateral_offset,
+                                 SettleOptions options) {
   const double cpu0 = thread_cpu_seconds();
-  const Scene s = with_reduction(scene, point.k);
-  const auto system = build_system(s, point.speed);
+  Scene s = with_reduction(scene, point.k);
+  s.simulation.acceleration = 0.0;
+  const auto system = build_system(s, point.speed, resources);
   const auto lateral = lateral_states(*system);
   options.observed = lateral.index;
   options.reference = 0;

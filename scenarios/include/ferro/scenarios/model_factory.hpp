@@ -1,10 +1,12 @@
 #pragma once
-// Builds the OdeSystem a scene describes, and the initial state.
+// Builds the OdeSystem a scene describes, and its initial state.
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "ferro/contact/geometry/contact_geometry_source.hpp"
+#include "ferro/track/track.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 
 namespace ferro::scenarios {
@@ -13,15 +15,31 @@ struct ModelConfig;
 struct ContactConfig;
 struct Scene;
 
-/// State names of a model type, in state order.
+/// State names of a suspended_wheelset model, in state order.
 [[nodiscard]] std::vector<std::string> state_names(const ModelConfig& model);
-/// All output signal names (states, then derived signals).
+/// All output signal names of a suspended_wheelset model (states, then derived signals).
 [[nodiscard]] std::vector<std::string> signal_names(const ModelConfig& model);
 
-/// The scene's system at a given forward speed [m/s].
-[[nodiscard]] std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed);
+/// What a vehicle scene builds once and shares between the systems of a speed sweep: the track
+/// and the contact geometry source (tables are precomputed here).
+struct ModelResources {
+  std::shared_ptr<const track::Track> track;
+  std::shared_ptr<const contact::ContactGeometrySource> geometry;
+};
+[[nodiscard]] ModelResources build_resources(const Scene& scene);
 
-/// Initial state from the scene's `simulation.initial` (zeros elsewhere).
+/// The scene's system at a given initial forward speed [m/s] (the scene's acceleration applies).
+[[nodiscard]] std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed);
+[[nodiscard]] std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed,
+                                                               const ModelResources& resources);
+
+/// The state the system is linearised about: the static equilibrium at t = 0 for a vehicle
+/// model, zero for suspended_wheelset.
+[[nodiscard]] std::vector<double> equilibrium_state(const Scene& scene,
+                                                    const vehicle::OdeSystem& system);
+
+/// Initial state: equilibrium_state() plus the scene's `simulation.initial` by state name.
+/// Throws YamlInputError at the `initial` key for a name the model does not have.
 [[nodiscard]] std::vector<double> initial_state(const Scene& scene,
                                                 const vehicle::OdeSystem& system);
 

@@ -36,6 +36,7 @@ struct RunSummary {
   std::string output_file;
   std::string csv_file;                       ///< empty when no CSV was asked for
   std::vector<vehicle::SignalInfo> channels;  ///< states then derived signals
+  std::size_t state_count = 0;                ///< the first state_count channels are states
   std::vector<double> peak_abs;               ///< max |value| per channel over the run
   std::vector<double> final_values;           ///< per channel at t_reached (last sample)
 };
@@ -53,7 +54,8 @@ struct EigenReport {
   std::vector<vehicle::Mode> modes_at_scene_speed;
 };
 
-/// Linear eigenvalue analysis over scene.eigen's speed range about the zero equilibrium.
+/// Linear eigenvalue analysis over scene.eigen's speed range about the equilibrium
+/// (equilibrium_state(): zero for suspended_wheelset, the static equilibrium for vehicles).
 [[nodiscard]] EigenReport run_eigen(const Scene& scene);
 /// Writes the report under /eigen of a new HDF5 file, with the scene metadata.
 void write_eigen_report(const Scene& scene, const EigenReport& report, const std::string& path);

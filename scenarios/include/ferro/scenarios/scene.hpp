@@ -9,20 +9,25 @@
 #include <string>
 #include <vector>
 
+#include "ferro/scenarios/track_config.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
+#include "ferro/vehicle/vehicle_config.hpp"
 
 namespace ferro::scenarios {
 
 inline constexpr int kSceneSchemaVersion = 1;
 
 struct ModelConfig {
-  std::string type = "suspended_wheelset";  ///< the only model type so far
-  vehicle::SuspendedWheelsetParams wheelset;
-};
-
-struct TrackConfig {
-  std::string type = "straight";  ///< straight, tangent track without irregularities
+  /// suspended_wheelset: the linear 2-DOF wheelset of eq. (150), parameters inline;
+  /// vehicle: the multibody model of a vehicle file (whole vehicle, one bogie or one wheelset).
+  std::string type = "suspended_wheelset";
+  vehicle::SuspendedWheelsetParams wheelset;  ///< type suspended_wheelset
+  std::string vehicle_file;                   ///< type vehicle: the file read ("" when inline)
+  /// type vehicle: the expanded vehicle; its wheel_rail holds the scene's contact choices
+  /// (vehicle file, then the scene's contact and track parts).
+  vehicle::VehicleConfig vehicle;
+  vehicle::ModelSelection selection;  ///< type vehicle
 };
 
 struct ContactConfig {
@@ -31,9 +36,15 @@ struct ContactConfig {
 
 struct SimulationConfig {
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  double speed = kNaN;                    ///< forward speed V [m/s]
+  double speed = kNaN;                    ///< forward speed V at t = 0 [m/s]
+  double acceleration = 0.0;              ///< dV/dt (speed ramp; V stays >= 0) [m/s^2]
+  double start_position = 0.0;            ///< track arc length of the vehicle centre at t = 0 [m]
   double t_end = kNaN;                    ///< end time [s]
-  std::map<std::string, double> initial;  ///< initial state by state name (others 0) [SI]
+  /// Initial state by state name [SI]: the value itself for suspended_wheelset (others 0), a
+  /// perturbation added to the static equilibrium for vehicle models.
+  std::map<std::string, double> initial;
+  /// Line and column of each `initial` key in the scene file (for errors found at build time).
+  std::map<std::string, std::pair<int, int>> initial_position;
 };
 
 struct OutputConfig {
@@ -68,5 +79,10 @@ struct Scene {
 /// Loads and validates a scene. Throws YamlInputError (file:line:col: key: message) for any bad
 /// input, including values that fail the parameter structs' validate().
 [[nodiscard]] Scene load_scene(const std::string& path);
+
+/// Replaces the tangential contact model of a vehicle scene (its options are dropped unless
+/// the model stays the same). Throws std::invalid_argument starting with `flag` for another
+/// model type or an unknown name.
+void override_tangential(Scene& scene, const std::string& name, const std::string& flag);
 
 }  // namespace ferro::scenarios

@@ -14,6 +14,7 @@
 
 #include "ferro/scenarios/analysis/limit_cycle.hpp"
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
+#include "ferro/scenarios/model_factory.hpp"
 
 namespace ferro::scenarios::analysis {
 
@@ -40,10 +41,10 @@ struct SweepPointResult {
 
 /// Runs point `index` of a sweep of `scene`: constant speed from the scene's initial state plus
 /// `lateral_offset` on the leading wheelset, until settled (options.observed is filled with the
-/// wheelset lateral states).
-[[nodiscard]] SweepPointResult run_sweep_point(const Scene& scene, std::size_t index,
-                                               const SweepPoint& point, double lateral_offset,
-                                               SettleOptions options);
+/// wheelset lateral states). `resources`: the scene's track and geometry, built once per sweep.
+[[nodiscard]] SweepPointResult run_sweep_point(const Scene& scene, const ModelResources& resources,
+                                               std::size_t index, const SweepPoint& point,
+                                               double lateral_offset, SettleOptions options);
 
 /// A folder of finished points, one file each, written to a temporary name, synced and renamed
 /// into place: a point is either wholly recorded or absent, whatever the interruption.

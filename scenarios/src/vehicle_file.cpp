@@ -1,0 +1,588 @@
+#include "ferro/scenarios/vehicle_file.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "ferro/contact/tangential_model.hpp"
+#include "located.hpp"
+#include "yaml_values.hpp"
+
+namespace ferro::scenarios {
+namespace {
+
+namespace fs = std::filesystem;
+using vehicle::BodyKind;
+using vehicle::Dof;
+using vehicle::ElementType;
+using vehicle::RigidBodySpec;
+using vehicle::SuspensionElementSpec;
+using vehicle::VehicleConfig;
+
+constexpr double kStandardGravity = 9.81;  // [m/s^2], the value the data files were made with
+// At-rest lines of "vector" dampers shorter than this across their axis count as aligned [m].
+constexpr double kAlignmentTolerance = 1e-9;
+
+const std::vector<std::string> kAxes = {"x", "y", "z"};
+const std::vector<std::string> kRotationAxes = {"roll", "pitch", "yaw"};
+
+Dof dof_from_name(const std::string& name) {
+  for (std::size_t i = 0; i < vehicle::kDofNames.size(); ++i)
+    if (name == vehicle::kDofNames[i]) return static_cast<Dof>(i);
+  return Dof::x;
+}
+
+std::string resolve(const MapReader& r, const std::string& file) {
+  if (file.empty()) return file;
+  const fs::path p(file);
+  if (p.is_absolute()) return p.lexically_normal().string();
+  return (fs::path(r.file()).parent_path() / p).lexically_normal().string();
+}
+
+double positive(MapReader& r, const std::string& key, const char* unit) {
+  const double v = r.number(key);
+  if (!(v > 0.0)) r.fail(key, fmt::format("must be > 0 {}, got {}", unit, v));
+  return v;
+}
+
+double non_negative_or(MapReader& r, const std::string& key, double fallback, const char* unit) {
+  const double v = r.number_or(key, fallback);
+  if (!(v >= 0.0)) r.fail(key, fmt::format("must be >= 0 {}, got {}", unit, v));
+  return v;
+}
+
+double non_negative(MapReader& r, const std::string& key, const char* unit) {
+  const double v = r.number(key);
+  if (!(v >= 0.0)) r.fail(key, fmt::format("must be >= 0 {}, got {}", unit, v));
+  return v;
+}
+
+bool flag_or(MapReader& r, const std::string& key, bool fallback) {
+  return r.string_or(key, fallback ? "true" : "false", {"true", "false"}) == "true";
+}
+
+// {x, y, z} mapping, absent components 0.
+Eigen::Vector3d axis_map(MapReader m, const char* unit) {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) v[i] = non_negative_or(m, kAxes[i], 0.0, unit);
+  m.finish();
+  return v;
+}
+
+// A body block of the compact form.
+struct BodyBlock {
+  double mass = 0.0;
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();
+  double cg_height = 0.0;
+  std::array<bool, 6> active{};
+  bool spin = false;
+  double rolling_radius = RigidBodySpec::kNaN;
+  double flange_back_distance = RigidBodySpec::kNaN;
+};
+
+BodyBlock read_body(MapReader b, BodyKind kind) {
+  BodyBlock out;
+  out.mass = positive(b, "mass", "kg");
+  {
+    MapReader in = b.map("inertia");
+    out.inertia[0] = positive(in, "roll", "kg m^2");
+    if (kind == BodyKind::wheelset && in.has("spin")) {
+      if (in.has("pitch")) in.fail("spin", "give either pitch or spin (the axle axis), not both");
+      out.inertia[1] = positive(in, "spin", "kg m^2");
+      in.allow("pitch");
+    } else {
+      out.inertia[1] = positive(in, "pitch", "kg m^2");
+      if (kind == BodyKind::wheelset) in.allow("spin");
+    }
+    out.inertia[2] = positive(in, "yaw", "kg m^2");
+    in.finish();
+  }
+  std::vector<std::string> dof_names = {"x", "y", "z", "roll", "pitch", "yaw"};
+  std::vector<std::string> defaults = {"y", "z", "roll", "pitch", "yaw"};
+  if (kind == BodyKind::wheelset) {
+    out.rolling_radius = positive(b, "nominal_rolling_radius", "m");
+    out.flange_back_distance = b.number_or("flange_back_distance", out.flange_back_distance);
+    dof_names = {"x", "y", "z", "roll", "yaw", "spin", "spin_perturbation"};
+    defaults = {"y", "z", "roll", "yaw"};
+  } else {
+    out.cg_height = b.number("cg_height");
+  }
+  const auto dofs = b.string_list_or("dofs", defaults);
+  for (const auto& d : dofs) {
+    if (std::find(dof_names.begin(), dof_names.end(), d) == dof_names.end()) {
+      const std::string near = nearest_key(d, {dof_names.begin(), dof_names.end()});
+      b.fail("dofs", fmt::format("unknown degree of freedom '{}'{}; allowed: {}", d,
+                                 near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
+                                 fmt::join(dof_names, ", ")));
+    }
+    if (d == "spin" || d == "spin_perturbation") {
+      out.spin = true;
+    } else {
+      out.active[static_cast<int>(dof_from_name(d))] = true;
+    }
+  }
+  b.finish();
+  return out;
+}
+
+RigidBodySpec make_body(const std::string& name, BodyKind kind, const BodyBlock& b,
+                        const Eigen::Vector3d& position) {
+  RigidBodySpec s;
+  s.name = name;
+  s.kind = kind;
+  s.mass = b.mass;
+  s.inertia = b.inertia;
+  s.position = position;
+  s.active = b.active;
+  s.nominal_rolling_radius = b.rolling_radius;
+  s.spin_dof = b.spin;
+  return s;
+}
+
+// Force at rest on the lower body of an element preloaded in compression by `force` along
+// `axis` (pushing the bodies apart).
+Eigen::Vector3d compressive_preload(const Eigen::Vector3d& upper_abs,
+                                    const Eigen::Vector3d& lower_abs, int axis, double force) {
+  Eigen::Vector3d f = Eigen::Vector3d::Zero();
+  const double d0 = upper_abs[axis] - lower_abs[axis];
+  f[axis] = -force * (d0 > 0.0 ? 1.0 : -1.0);
+  return f;
+}
+
+struct Pair {
+  int upper = -1, lower = -1;
+};
+
+// One explicit element between `pair`, written for a lower body ahead of the upper body's
+// centre; mirrored fore-aft (x of the upper point negated) when the lower body is behind.
+SuspensionElementSpec read_element(MapReader e, const VehicleConfig& v, Pair pair,
+                                   const std::string& prefix) {
+  SuspensionElementSpec s;
+  s.name = prefix + e.string("name");
+  const std::string type = e.string("type", {"axis_spring", "axis_damper", "vector_damper",
+                                             "spring_damper", "series_damper", "bump_stop",
+                                             "torsion"});
+  s.body_a = pair.upper;
+  s.body_b = pair.lower;
+  const auto& up = v.bodies[static_cast<std::size_t>(pair.upper)];
+  const auto& lo = v.bodies[static_cast<std::size_t>(pair.lower)];
+  s.point_a = detail::vector3(e, "upper");
+  s.point_b = detail::vector3(e, "lower");
+  if (lo.position.x() < up.position.x()) s.point_a.x() = -s.point_a.x();
+  const Eigen::Vector3d upper_abs = up.position + s.point_a;
+  const Eigen::Vector3d lower_abs = lo.position + s.point_b;
+  auto axis_of = [&](const std::vector<std::string>& allowed) {
+    return e.string("axis", allowed);
+  };
+  if (type == "axis_spring" || type == "axis_damper") {
+    s.type = ElementType::spring_damper;
+    const int axis = static_cast<int>(dof_from_name(axis_of(kAxes)));
+    if (type == "axis_spring") {
+      s.stiffness[axis] = non_negative(e, "k", "N/m");
+      const double preload = e.number_or("preload", 0.0);
+      if (preload != 0.0) {
+        if (upper_abs[axis] == lower_abs[axis])
+          e.fail("preload", "a preload needs the two points apart along the element's axis");
+        s.preload = compressive_preload(upper_abs, lower_abs, axis, preload);
+      }
+    } else {
+      s.damping[axis] = non_negative(e, "c", "N s/m");
+    }
+  } else if (type == "vector_damper") {
+    // Acts along the line between its points; at rest that line must lie along one axis, so
+    // to first order it is a damper along that axis.
+    s.type = ElementType::spring_damper;
+    const Eigen::Vector3d d = upper_abs - lower_abs;
+    int axis = -1;
+    for (int i = 0; i < 3; ++i) {
+      Eigen::Vector3d across = d;
+      across[i] = 0.0;
+      if (across.norm() <= kAlignmentTolerance && d[i] != 0.0) axis = i;
+    }
+    if (axis < 0) {
+      e.fail("upper", fmt::format("a vector_damper must lie along x, y or z at rest; its points "
+                                  "are {:.4g}, {:.4g}, {:.4g} m apart",
+                                  d.x(), d.y(), d.z()));
+    }
+    s.damping[axis] = non_negative(e, "c", "N s/m");
+  } else if (type == "spring_damper") {
+    s.type = ElementType::spring_damper;
+    s.stiffness = axis_map(e.map_or_empty("stiffness"), "N/m");
+    s.damping = axis_map(e.map_or_empty("damping"), "N s/m");
+  } else if (type == "series_damper") {
+    s.type = ElementType::series_damper;
+    s.axis = dof_from_name(axis_of(kAxes));
+    s.k = positive(e, "k", "N/m");
+    s.c = positive(e, "c", "N s/m");
+  } else if (type == "bump_stop") {
+    s.type = ElementType::bump_stop;
+    s.axis = dof_from_name(axis_of(kAxes));
+    s.clearance = non_negative(e, "clearance", "m");
+    s.table_displacement = detail::number_list(e, "displacement");
+    s.table_force = detail::number_list(e, "force");
+  } else {
+    s.type = ElementType::torsion;
+    s.axis = dof_from_name(axis_of(kRotationAxes));
+    s.k = non_negative_or(e, "k", 0.0, "N m/rad");
+    s.c = non_negative_or(e, "c", 0.0, "N m s/rad");
+  }
+  e.finish();
+  return s;
+}
+
+void check_bump_stop_table(MapReader& r, const SuspensionElementSpec& s, const std::string& key) {
+  const auto& d = s.table_displacement;
+  const auto& f = s.table_force;
+  if (d.size() < 2) r.fail(key, "the bump stop table needs at least two displacements");
+  if (d.size() != f.size()) {
+    r.fail("force", fmt::format("displacement and force need the same length, got {} and {}",
+                            d.size(), f.size()));
+  }
+  for (std::size_t i = 1; i < d.size(); ++i) {
+    if (!(d[i] > d[i - 1])) r.fail(key, fmt::format("displacement must increase (item {})", i));
+  }
+  if (d.front() < s.clearance) {
+    r.fail(key, fmt::format("the table starts at {} m, inside the clearance {} m", d.front(),
+                            s.clearance));
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& wheel_rail_keys() {
+  static const std::vector<std::string> keys = {
+      "geometry",     "wheel_profile", "rail_profile",       "imported_table",
+      "track_gauge",  "flange_back_distance", "rail_inclination", "conicity",
+      "contact_half_distance", "friction", "shear_modulus", "poisson",
+      "normal",       "tangential",    "tangential_options", "reduction",
+      "reduction_table", "regularisation_speed"};
+  return keys;
+}
+
+void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
+  w.geometry = r.string_or("geometry", w.geometry, {"table", "search", "imported", "conical"});
+  if (r.has("wheel_profile")) w.wheel_profile = resolve(r, r.string("wheel_profile"));
+  if (r.has("rail_profile")) w.rail_profile = resolve(r, r.string("rail_profile"));
+  if (r.has("imported_table")) w.imported_table = resolve(r, r.string("imported_table"));
+  for (const char* key : {"wheel_profile", "rail_profile", "imported_table"}) {
+    r.allow(key);
+    if (r.has(key)) {
+      const std::string path = key == std::string("wheel_profile")  ? w.wheel_profile
+                               : key == std::string("rail_profile") ? w.rail_profile
+                                                                    : w.imported_table;
+      if (!fs::exists(path)) r.fail(key, fmt::format("file does not exist (looked for {})", path));
+    }
+  }
+  w.track_gauge = r.number_or("track_gauge", w.track_gauge);
+  w.flange_back_distance = r.number_or("flange_back_distance", w.flange_back_distance);
+  w.rail_inclination = r.number_or("rail_inclination", w.rail_inclination);
+  w.conicity = r.number_or("conicity", w.conicity);
+  w.contact_half_distance = r.number_or("contact_half_distance", w.contact_half_distance);
+  w.friction = r.number_or("friction", w.friction);
+  if (!(w.friction > 0.0 && w.friction <= 2.0))
+    r.fail("friction", fmt::format("must lie in (0, 2], got {}", w.friction));
+  w.shear_modulus = r.number_or("shear_modulus", w.shear_modulus);
+  if (!(w.shear_modulus > 0.0))
+    r.fail("shear_modulus", fmt::format("must be > 0 Pa, got {}", w.shear_modulus));
+  w.poisson = r.number_or("poisson", w.poisson);
+  if (!(w.poisson >= 0.0 && w.poisson < 0.5))
+    r.fail("poisson", fmt::format("must lie in [0, 0.5), got {}", w.poisson));
+  w.normal_model = r.string_or("normal", w.normal_model, {"hertz", "semi_hertz"});
+  w.tangential_model = r.string_or("tangential", w.tangential_model,
+                                   contact::tangential_model_names());
+  if (r.has("tangential_options")) {
+    MapReader o = r.map("tangential_options");
+    w.tangential_options.clear();
+    for (const auto& kv : o.yaml()) {
+      const std::string key = kv.first.as<std::string>();
+      if (!kv.second.IsScalar()) o.fail(key, "expected a single value");
+      std::string value = kv.second.Scalar();
+      if (key == "table") value = resolve(o, value);
+      w.tangential_options[key] = value;
+      o.allow(key);
+    }
+    o.finish();
+  }
+  // The model and its options must be accepted by the contact layer.
+  if (r.has("tangential") || r.has("tangential_options")) {
+    const std::string where = r.has("tangential_options") ? "tangential_options" : "tangential";
+    try {
+      (void)contact::make_tangential_model(w.tangential_model, w.tangential_options);
+    } catch (const std::exception& e) {
+      r.fail(where, e.what());
+    }
+  }
+  if (r.has("reduction")) {
+    MapReader k = r.map("reduction");
+    const char* names[] = {"k11", "k22", "k23", "k33"};
+    for (int i = 0; i < 4; ++i) {
+      w.reduction[static_cast<std::size_t>(i)] = k.number_or(names[i], 1.0);
+      if (!(w.reduction[static_cast<std::size_t>(i)] > 0.0 &&
+            w.reduction[static_cast<std::size_t>(i)] <= 1.0))
+        k.fail(names[i], "must lie in (0, 1]");
+    }
+    k.finish();
+  } else {
+    r.allow("reduction");
+  }
+  if (r.has("reduction_table")) {
+    w.reduction_table = resolve(r, r.string("reduction_table"));
+    if (!fs::exists(w.reduction_table))
+      r.fail("reduction_table", fmt::format("file does not exist (looked for {})", w.reduction_table));
+  } else {
+    r.allow("reduction_table");
+  }
+  w.regularisation_speed = r.number_or("regularisation_speed", w.regularisation_speed);
+  if (!(w.regularisation_speed > 0.0))
+    r.fail("regularisation_speed", fmt::format("must be > 0 m/s, got {}", w.regularisation_speed));
+}
+
+void check_wheel_rail(const MapReader& r, const vehicle::WheelRailSpec& w) {
+  const auto need = [&](bool ok, const std::string& key, const std::string& why) {
+    if (!ok) r.fail(key, fmt::format("required for geometry '{}': {}", w.geometry, why));
+  };
+  if (w.geometry == "table" || w.geometry == "search") {
+    need(!w.wheel_profile.empty(), "wheel_profile", "the wheel profile file");
+    need(!w.rail_profile.empty(), "rail_profile", "the rail profile file");
+  } else if (w.geometry == "imported") {
+    need(!w.imported_table.empty(), "imported_table", "the CSV contact table");
+  } else if (w.geometry == "conical") {
+    need(w.conicity > 0.0, "conicity", "the equivalent conicity (> 0)");
+    need(w.contact_half_distance > 0.0, "contact_half_distance",
+         "half the lateral distance between the contact points (> 0 m)");
+  }
+  if (!(w.track_gauge > 1.0 && w.track_gauge < 2.0))
+    r.fail("track_gauge", fmt::format("must lie in (1, 2) m, got {}", w.track_gauge));
+}
+
+int body_index(const VehicleConfig& config, const std::string& name) {
+  for (std::size_t i = 0; i < config.bodies.size(); ++i)
+    if (config.bodies[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+VehicleConfig read_vehicle(MapReader& r) {
+  VehicleConfig v;
+  v.name = r.string_or("name", fs::path(r.file()).stem().string());
+  r.allow("schema_version");
+  r.allow("description");
+  v.gravity = r.number_or("gravity", kStandardGravity);
+  if (!(v.gravity >= 0.0)) r.fail("gravity", "must be >= 0 m/s^2");
+
+  const BodyBlock car = read_body(r.map("car_body"), BodyKind::car_body);
+  const BodyBlock bogie = read_body(r.map("bogie_frame"), BodyKind::bogie_frame);
+  const BodyBlock wheelset = read_body(r.map("wheelset"), BodyKind::wheelset);
+
+  MapReader g = r.map("geometry");
+  const double bogie_spacing = positive(g, "bogie_centre_spacing", "m");
+  const double wheelbase = positive(g, "wheelbase", "m");
+  v.wheel_rail.track_gauge = g.number_or("track_gauge", v.wheel_rail.track_gauge);
+  if (!std::isnan(wheelset.flange_back_distance))
+    v.wheel_rail.flange_back_distance = wheelset.flange_back_distance;
+
+  // Bodies: car body at the vehicle reference point, bogies and wheelsets front first.
+  v.bodies.push_back(
+      make_body("car_body", BodyKind::car_body, car, {0.0, 0.0, car.cg_height}));
+  const double bogie_x[2] = {0.5 * bogie_spacing, -0.5 * bogie_spacing};
+  for (int b = 0; b < 2; ++b) {
+    v.bodies.push_back(make_body(fmt::format("bogie_{}", b + 1), BodyKind::bogie_frame, bogie,
+                                 {bogie_x[b], 0.0, bogie.cg_height}));
+  }
+  for (int b = 0; b < 2; ++b) {
+    for (int w = 0; w < 2; ++w) {
+      const double x = bogie_x[b] + (w == 0 ? 0.5 : -0.5) * wheelbase;
+      v.bodies.push_back(make_body(fmt::format("wheelset_{}", 2 * b + w + 1), BodyKind::wheelset,
+                                   wheelset, {x, 0.0, wheelset.rolling_radius}));
+    }
+  }
+  const int car_i = 0;
+  const int bogie_i[2] = {1, 2};
+  const auto ws_i = [](int b, int w) { return 3 + 2 * b + w; };
+
+  // Primary suspension: bogie frame (upper) - wheelset (lower).
+  {
+    MapReader p = r.map("primary_suspension");
+    const bool compact = p.has("stiffness") || p.has("damping");
+    const auto explicit_items = detail::map_list(p, "elements", "a suspension element");
+    if (!compact && explicit_items.empty()) {
+      p.fail("stiffness", "give per-axlebox stiffness/damping or an elements list");
+    }
+    if (compact) {
+      const Eigen::Vector3d k = axis_map(p.map_or_empty("stiffness"), "N/m");
+      const Eigen::Vector3d c = axis_map(p.map_or_empty("damping"), "N s/m");
+      const double semi = positive(g, "primary_lateral_semi_spacing", "m");
+      const bool preload = flag_or(p, "static_preload", false);
+      // Weight carried by each axlebox spring: car body and bogie frames over 8 axleboxes.
+      const double axlebox_load = (car.mass + 2.0 * bogie.mass) * v.gravity / 8.0;
+      for (int b = 0; b < 2; ++b) {
+        for (int w = 0; w < 2; ++w) {
+          const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
+          const auto& ws = v.bodies[static_cast<std::size_t>(ws_i(b, w))];
+          for (int side = 0; side < 2; ++side) {
+            const double y = side == 0 ? semi : -semi;
+            SuspensionElementSpec s;
+            s.name = fmt::format("primary.{}.{}", ws.name, side == 0 ? "left" : "right");
+            s.type = ElementType::spring_damper;
+            s.body_a = bogie_i[b];
+            s.body_b = ws_i(b, w);
+            s.point_a = {ws.position.x() - bo.position.x(), y, ws.position.z() - bo.position.z()};
+            s.point_b = {0.0, y, 0.0};
+            s.stiffness = k;
+            s.damping = c;
+            if (preload) s.preload = {0.0, 0.0, -axlebox_load};
+            v.elements.push_back(s);
+          }
+        }
+      }
+    } else {
+      p.allow("static_preload");
+    }
+    for (int b = 0; b < 2; ++b) {
+      for (int w = 0; w < 2; ++w) {
+        for (const auto& item : explicit_items) {
+          const auto& ws = v.bodies[static_cast<std::size_t>(ws_i(b, w))];
+          v.elements.push_back(read_element(item, v, {bogie_i[b], ws_i(b, w)},
+                                            fmt::format("primary.{}.", ws.name)));
+        }
+      }
+    }
+    p.finish();
+  }
+
+  // Secondary suspension: car body (upper) - bogie frame (lower).
+  {
+    MapReader s2 = r.map("secondary_suspension");
+    const bool compact = s2.has("stiffness") || s2.has("damping");
+    const auto explicit_items = detail::map_list(s2, "elements", "a suspension element");
+    if (!compact && explicit_items.empty()) {
+      s2.fail("stiffness", "give per-side stiffness/damping or an elements list");
+    }
+    const auto& cb = v.bodies[car_i];
+    if (compact) {
+      const Eigen::Vector3d k = axis_map(s2.map_or_empty("stiffness"), "N/m");
+      const Eigen::Vector3d c = axis_map(s2.map_or_empty("damping"), "N s/m");
+      const double semi = positive(g, "secondary_lateral_semi_spacing", "m");
+      const double height = g.number("secondary_height");
+      const bool preload = flag_or(s2, "static_preload", false);
+      const double side_load = car.mass * v.gravity / 4.0;
+      for (int b = 0; b < 2; ++b) {
+        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
+        for (int side = 0; side < 2; ++side) {
+          const double y = side == 0 ? semi : -semi;
+          SuspensionElementSpec s;
+          s.name = fmt::format("secondary.{}.{}", bo.name, side == 0 ? "left" : "right");
+          s.type = ElementType::spring_damper;
+          s.body_a = car_i;
+          s.body_b = bogie_i[b];
+          s.point_a = {bo.position.x() - cb.position.x(), y, height - cb.position.z()};
+          s.point_b = {0.0, y, height - bo.position.z()};
+          s.stiffness = k;
+          s.damping = c;
+          if (preload) s.preload = {0.0, 0.0, -side_load};
+          v.elements.push_back(s);
+        }
+      }
+    } else {
+      s2.allow("static_preload");
+    }
+    // Bogie yaw stiffness (per side, both sides in one torsion element per bogie).
+    if (s2.has("bogie_yaw_stiffness")) {
+      const double k = positive(s2, "bogie_yaw_stiffness", "N m/rad");
+      for (int b = 0; b < 2; ++b) {
+        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
+        SuspensionElementSpec s;
+        s.name = fmt::format("secondary.{}.yaw_stiffness", bo.name);
+        s.type = ElementType::torsion;
+        s.axis = Dof::yaw;
+        s.body_a = car_i;
+        s.body_b = bogie_i[b];
+        s.point_a = bo.position - cb.position;
+        s.k = 2.0 * k;
+        v.elements.push_back(s);
+      }
+    } else {
+      s2.allow("bogie_yaw_stiffness");
+    }
+    if (s2.has("anti_roll_bar")) {
+      const double k = positive(s2, "anti_roll_bar", "N m/rad");
+      for (int b = 0; b < 2; ++b) {
+        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
+        SuspensionElementSpec s;
+        s.name = fmt::format("secondary.{}.anti_roll_bar", bo.name);
+        s.type = ElementType::torsion;
+        s.axis = Dof::roll;
+        s.body_a = car_i;
+        s.body_b = bogie_i[b];
+        s.point_a = bo.position - cb.position;
+        s.k = k;
+        v.elements.push_back(s);
+      }
+    } else {
+      s2.allow("anti_roll_bar");
+    }
+    if (s2.has("lateral_bump_stop")) {
+      MapReader bs = s2.map("lateral_bump_stop");
+      SuspensionElementSpec proto;
+      proto.type = ElementType::bump_stop;
+      proto.axis = Dof::y;
+      proto.clearance = non_negative(bs, "clearance", "m");
+      const double height = bs.number("height");
+      proto.table_displacement = detail::number_list(bs, "displacement");
+      proto.table_force = detail::number_list(bs, "force");
+      check_bump_stop_table(bs, proto, "displacement");
+      bs.finish();
+      for (int b = 0; b < 2; ++b) {
+        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
+        SuspensionElementSpec s = proto;
+        s.name = fmt::format("secondary.{}.lateral_bump_stop", bo.name);
+        s.body_a = car_i;
+        s.body_b = bogie_i[b];
+        s.point_a = {bo.position.x() - cb.position.x(), 0.0, height - cb.position.z()};
+        s.point_b = {0.0, 0.0, height - bo.position.z()};
+        v.elements.push_back(s);
+      }
+    } else {
+      s2.allow("lateral_bump_stop");
+    }
+    for (int b = 0; b < 2; ++b) {
+      for (const auto& item : explicit_items) {
+        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
+        v.elements.push_back(
+            read_element(item, v, {car_i, bogie_i[b]}, fmt::format("secondary.{}.", bo.name)));
+      }
+    }
+    s2.finish();
+  }
+  // Explicit bump stops: check their tables.
+  for (const auto& e : v.elements) {
+    if (e.type == ElementType::bump_stop && e.table_displacement.size() < 2) {
+      r.fail("secondary_suspension", fmt::format("{}: bump stop without a force table", e.name));
+    }
+  }
+  g.finish();
+
+  {
+    MapReader w = r.map("wheel_rail");
+    read_wheel_rail(w, v.wheel_rail);
+    w.finish();
+    check_wheel_rail(w, v.wheel_rail);
+  }
+  r.finish();
+  return v;
+}
+
+VehicleConfig load_vehicle_file(const std::string& path) {
+  const YamlFile file = load_yaml_file(path);
+  MapReader r(file.root, path, "");
+  const long version = r.integer_or("schema_version", -1);
+  if (version != kVehicleSchemaVersion) {
+    r.fail("schema_version", fmt::format("required in a vehicle file; supported: {}, got {}",
+                                         kVehicleSchemaVersion, version));
+  }
+  return read_vehicle(r);
+}
+
+}  // namespace ferro::scenarios

@@ -1,0 +1,165 @@
+#pragma once
+// The whole-vehicle multibody model: rigid bodies (car body, bogie frames, wheelsets) with up to
+// six degrees of freedom each relative to a track frame that travels along the alignment,
+// suspension elements between attachment points, and the wheel-rail coupling at every contact
+// point a ContactGeometrySource returns, with a registered tangential (creep-force) model.
+// One model serves the whole vehicle, one bogie or one wheelset (ModelSelection).
+//
+// Frames (docs/DESIGN.md "Frames"): x forward, y LEFT, z UP. Every body i has its own track
+// frame F_i at arc length s_i = s_ref(t) + X_i (X_i its rest x position, s_ref the reference
+// point's arc length); its displacements x, y, z are those of its centre of mass from the rest
+// position (0, Y_i, Z_i) in F_i, its angles roll, pitch, yaw are rotations about F_i's x, y, z
+// axes (attitude R = Rz(yaw) Ry(pitch) Rx(roll)). The contact layer's frame (y right, z down)
+// is met at exactly one place, frames.hpp.
+//
+// State layout. Bodies are ordered by decreasing rest x (front first), so that bodies coupled
+// by suspension are neighbours in the state (banded Jacobian). Each dynamic body contributes
+// one contiguous block:
+//   [active positions in the order x, y, z, roll, pitch, yaw][their rates][spin perturbation]
+// followed by the internal deflection of every series damper whose upper body it is. Names:
+// "wheelset_1.y" [m], "wheelset_1.y_dot" [m/s], "wheelset_1.spin" [rad/s] (perturbation beta of
+// the spin speed V/r0 + beta), "<element>.damper_deflection" [m]. A wheelset has no pitch state
+// (its rotation about the axle is the spin). Frozen DOF and bodies outside the selection have no
+// state and stay at rest in their own track frame.
+//
+// Equations of motion (each body, in the axes of its track frame F_i, frame kinematics from
+// track::frame_kinematics at s_i with the speed V(t) and dV/dt):
+//   m (u'' + a_O + alpha x r + w x (w x r) + 2 w x u') = F + m g            (r = rest + u)
+//   I (alpha + theta'' + w x theta') + w_h x (I w_h + I_y s e_y) + I_y s' e_y = M
+// with w, alpha the frame's angular velocity and acceleration, a_O its origin acceleration,
+// w_h = w + theta' the rate of the body axes without spin, s the wheelset spin speed (0 for
+// other bodies), giving the gyroscopic couplings +I_y s yaw' in roll and -I_y s roll' in yaw.
+//
+// Suspension forces: the attachment points are placed in the ground frame from each body's own
+// track frame (exact frame positions and rotations, exact attitude rotation), their relative
+// position is expressed in the track frame of body_a, and the deflection is its change from the
+// straight-track rest geometry. In a curve the car body and bogie frames therefore see the
+// versine and the relative yaw of their frames as suspension deflection, as they physically do.
+//
+// Wheel-rail coupling (per wheelset, per contact point):
+//   - the pose relative to the rails (track irregularities at s_i included: lateral alignment
+//     y_irr, vertical level z_irr, cross-level c giving a rail roll -c / rail_spacing, and the
+//     alignment slope giving a rail yaw) is converted once (frames.hpp) to contact::WheelsetPose;
+//   - normal force from the penetration by Hertz (semi-axes from the same solution); a point
+//     with zero penetration or force is skipped (no tangential model call);
+//   - creepages from the exact velocity of the wheel material point and the absolute angular
+//     velocity of the wheelset (frame rotation, body rates, spin), relative to the rail at
+//     rest in the ground, divided by max(|V|, regularisation_speed);
+//   - tangential forces from contact::make_tangential_model(name, options) with K_ij constants,
+//     in the contact frame (x along the rail, z the rail->wheel normal, y = z x x);
+//   - forces and moments are applied to the wheelset in the axes of its track frame.
+//
+// Signals (signal_info() lists them with units): per wheelset i (1-based, front first) and side
+// (left = +y):
+//   wheelset_i.<side>.Y [N]           lateral force of the rail on the wheel in track axes,
+//                                     POSITIVE TOWARDS THE TRACK CENTRE (-y on the left wheel,
+//                                     +y on the right): the Y of Nadal's Y/Q for flange contact
+//   wheelset_i.<side>.Q [N]           vertical force of the rail on the wheel, + up (wheel load)
+//   wheelset_i.<side>.normal_force [N]  sum of the normal forces of the wheel's points
+//   wheelset_i.<side>.creepage_x [-], .creepage_y [-], .spin [1/m]: creepages of the point with
+//                                     the largest normal force, contact frame (x along the
+//                                     rail, y = n x x with n the rail->wheel normal)
+//   wheelset_i.<side>.contact_y [m]   lateral position of that point relative to the rail's
+//                                     nominal reference point (+- rail_spacing/2), + towards the
+//                                     field side (outwards)
+//   wheelset_i.<side>.contact_angle [rad]  of that point, + when the normal leans towards the
+//                                     track centre (flange contact ~ +1.2 rad)
+//   wheelset_i.<side>.points [-]      number of contact points carrying load
+//   car_body.ay [m/s^2]               lateral acceleration an accelerometer fixed to the car
+//                                     body's centre of mass reads (non-gravitational force / m
+//                                     in the body's axes; absent when there is no car body)
+//   position [m], speed [m/s]         of the reference point (arc length, V)
+//
+// References: Toumi (2016) eqs. (24)-(27) (creepages), (38)-(40) and (150)-(156) (creep forces,
+// K_ij, single wheelset); Wickens, "Fundamentals of Rail Vehicle Dynamics" (2003) ch. 2
+// (wheelset and bogie equations, gyroscopic terms); Shabana, Zaazaa & Sugiyama, "Railroad
+// Vehicle Dynamics" (2008) ch. 6 (track-frame / body coordinates); Iwnicki (1998) Manchester
+// benchmarks (element set).
+// Known deviations: the relative angular velocity of a body is taken as the rate of its angles
+// (small angles: products of angles and angular rates are dropped) and its inertia tensor is
+// taken in track axes (diagonal roll/pitch/yaw, not rotated by the body's small angles); the
+// attitude itself is the exact rotation. Gauge irregularity is ignored by the contact geometry
+// (WheelsetPose has no gauge input; a gauge deviation shifts neither rail). The irregularities
+// displace and roll the rails within the design frame (track.hpp) and do not move the body
+// frames. Tangential forces use the contact patch of the normal solution without contact
+// damping; normal contact is undamped. K_ij tables are not looked up yet (constants only).
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ferro/contact/geometry/contact_geometry_source.hpp"
+#include "ferro/contact/material.hpp"
+#include "ferro/contact/tangential_model.hpp"
+#include "ferro/track/track.hpp"
+#include "ferro/vehicle/ode_system.hpp"
+#include "ferro/vehicle/vehicle_config.hpp"
+
+namespace ferro::vehicle {
+
+/// v(t) = max(0, initial + acceleration * t) [m/s].
+struct SpeedProfile {
+  double initial = 0.0;       ///< [m/s]
+  double acceleration = 0.0;  ///< [m/s^2]
+  [[nodiscard]] double speed(double t) const;
+  /// dV/dt at t (0 once the speed has reached zero) [m/s^2].
+  [[nodiscard]] double rate(double t) const;
+  /// Distance travelled from t = 0 to t [m].
+  [[nodiscard]] double distance(double t) const;
+};
+
+struct VehicleModelInputs {
+  VehicleConfig config;
+  ModelSelection selection;
+  std::shared_ptr<const track::Track> track;                       ///< null: straight, perfect
+  std::shared_ptr<const contact::ContactGeometrySource> geometry;  ///< required
+  SpeedProfile speed;
+  double start_position = 0.0;  ///< arc length of the vehicle reference point (x = 0) at t = 0 [m]
+};
+
+class VehicleModel final : public OdeSystem {
+ public:
+  /// Validates everything (std::invalid_argument naming the field, e.g.
+  /// "bodies[2].mass: must be > 0 kg") and builds the tangential model and workspaces.
+  explicit VehicleModel(VehicleModelInputs inputs);
+  ~VehicleModel() override;
+  VehicleModel(const VehicleModel&) = delete;
+  VehicleModel& operator=(const VehicleModel&) = delete;
+
+  [[nodiscard]] std::size_t size() const override;
+  int rhs(double t, std::span<const double> x, std::span<double> xdot) const override;
+  [[nodiscard]] std::vector<SignalInfo> state_info() const override;
+  [[nodiscard]] std::vector<SignalInfo> signal_info() const override;
+  void signals(double t, std::span<const double> x, std::span<double> out) const override;
+  /// Half-bandwidths from the coupling structure (suspension elements, contact) and the state
+  /// order.
+  [[nodiscard]] std::pair<int, int> jacobian_bandwidth() const override;
+
+  /// Every body at its rest position, velocities and internal states zero.
+  [[nodiscard]] std::vector<double> rest_state() const;
+  /// Static (steady, at the speed and track position of time t) equilibrium: damped Newton on
+  /// the accelerations, spin accelerations and series-damper rates with every velocity zero,
+  /// from rest_state() with the wheelsets lowered onto the rails. Numerical Jacobian, minimum-norm
+  /// steps (neutral directions, e.g. the longitudinal position at V = 0, stay put). Throws
+  /// std::runtime_error when it does not converge.
+  [[nodiscard]] std::vector<double> static_equilibrium(double t = 0.0) const;
+
+  [[nodiscard]] std::size_t wheelset_count() const;  ///< wheelsets with contact in the model
+  /// State index of a body's position DOF (-1 when frozen, absent, or a wheelset's pitch).
+  [[nodiscard]] int state_index(const std::string& body, Dof dof) const;
+  /// State index of the rate of that DOF (-1 likewise).
+  [[nodiscard]] int rate_index(const std::string& body, Dof dof) const;
+  [[nodiscard]] const VehicleModelInputs& inputs() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The geometry source a WheelRailSpec asks for (files resolved relative to base_dir).
+[[nodiscard]] std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
+    const WheelRailSpec& spec, const std::string& base_dir);
+
+}  // namespace ferro::vehicle

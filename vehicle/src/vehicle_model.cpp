@@ -1,0 +1,665 @@
+// VehicleModel: construction (validation, selection, state layout), equations of motion in the
+// moving track frames, signals, static equilibrium.
+//
+// References: see vehicle_model.hpp.
+// Known deviations: see vehicle_model.hpp.
+
+#include "ferro/vehicle/vehicle_model.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "vehicle_model_impl.hpp"
+
+namespace ferro::vehicle {
+
+// ---------------------------------------------------------------------------------------------
+// Speed profile
+
+double SpeedProfile::speed(double t) const { return std::max(0.0, initial + acceleration * t); }
+
+double SpeedProfile::rate(double t) const {
+  return initial + acceleration * t > 0.0 || (initial == 0.0 && acceleration > 0.0) ? acceleration
+                                                                                     : 0.0;
+}
+
+double SpeedProfile::distance(double t) const {
+  if (acceleration >= 0.0 || initial + acceleration * t > 0.0) {
+    return initial * t + 0.5 * acceleration * t * t;
+  }
+  // Decelerating to a stop at t_stop = -initial / acceleration.
+  return -0.5 * initial * initial / acceleration;
+}
+
+namespace {
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+bool finite_positive(double v) { return std::isfinite(v) && v > 0.0; }
+
+Eigen::Matrix3d attitude_matrix(const Eigen::Vector3d& a) {
+  // R = Rz(yaw) Ry(pitch) Rx(roll).
+  const double cx = std::cos(a.x()), sx = std::sin(a.x());
+  const double cy = std::cos(a.y()), sy = std::sin(a.y());
+  const double cz = std::cos(a.z()), sz = std::sin(a.z());
+  Eigen::Matrix3d r;
+  r << cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx,  //
+      sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx,   //
+      -sy, cy * sx, cy * cx;
+  return r;
+}
+
+const char* kind_name(BodyKind k) {
+  switch (k) {
+    case BodyKind::car_body:
+      return "car_body";
+    case BodyKind::bogie_frame:
+      return "bogie_frame";
+    case BodyKind::wheelset:
+      return "wheelset";
+  }
+  return "?";
+}
+
+void validate_element(const SuspensionElementSpec& s, const std::string& where, int n_bodies) {
+  require(s.body_b >= 0 && s.body_b < n_bodies,
+          fmt::format("{}.body_b: must index a body (0..{}), got {}", where, n_bodies - 1,
+                      s.body_b));
+  require(s.body_a >= -1 && s.body_a < n_bodies && s.body_a != s.body_b,
+          fmt::format("{}.body_a: must index another body or be -1 (track frame), got {}", where,
+                      s.body_a));
+  const auto finite3 = [](const Eigen::Vector3d& v) { return v.allFinite(); };
+  require(finite3(s.point_a) && finite3(s.point_b),
+          fmt::format("{}.point_a/point_b: must be finite [m]", where));
+  switch (s.type) {
+    case ElementType::spring_damper:
+      require(finite3(s.stiffness) && (s.stiffness.array() >= 0.0).all(),
+              fmt::format("{}.stiffness: must be finite and >= 0 N/m", where));
+      require(finite3(s.damping) && (s.damping.array() >= 0.0).all(),
+              fmt::format("{}.damping: must be finite and >= 0 N s/m", where));
+      require(finite3(s.preload), fmt::format("{}.preload: must be finite [N]", where));
+      break;
+    case ElementType::series_damper:
+      require(static_cast<int>(s.axis) <= 2,
+              fmt::format("{}.axis: series_damper acts along x, y or z", where));
+      require(finite_positive(s.k), fmt::format("{}.k: series stiffness must be > 0 N/m", where));
+      require(finite_positive(s.c), fmt::format("{}.c: damping must be > 0 N s/m", where));
+      break;
+    case ElementType::bump_stop: {
+      require(static_cast<int>(s.axis) <= 2,
+              fmt::format("{}.axis: bump_stop acts along x, y or z", where));
+      require(std::isfinite(s.clearance) && s.clearance >= 0.0,
+              fmt::format("{}.clearance: must be >= 0 m", where));
+      const auto& xs = s.table_displacement;
+      require(!xs.empty() && xs.size() == s.table_force.size(),
+              fmt::format("{}.table_displacement/table_force: need equal, non-zero lengths",
+                          where));
+      require(xs.size() >= 2 || xs.front() > s.clearance,
+              fmt::format("{}.table_displacement: need two points or one beyond the clearance",
+                          where));
+      for (std::size_t i = 0; i < xs.size(); ++i) {
+        require(std::isfinite(xs[i]) && std::isfinite(s.table_force[i]) && xs[i] >= s.clearance &&
+                    (i == 0 || xs[i] > xs[i - 1]),
+                fmt::format("{}.table_displacement[{}]: must be finite, >= clearance and "
+                            "increasing",
+                            where, i));
+      }
+      break;
+    }
+    case ElementType::torsion:
+      require(s.axis == Dof::roll || s.axis == Dof::yaw,
+              fmt::format("{}.axis: torsion acts about roll or yaw", where));
+      require(std::isfinite(s.k) && s.k >= 0.0 && std::isfinite(s.c) && s.c >= 0.0,
+              fmt::format("{}.k/c: must be finite and >= 0", where));
+      break;
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Construction
+
+VehicleModel::VehicleModel(VehicleModelInputs inputs) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.in = std::move(inputs);
+  const VehicleConfig& cfg = m.in.config;
+  const WheelRailSpec& wr = cfg.wheel_rail;
+  const int n_bodies = static_cast<int>(cfg.bodies.size());
+
+  require(m.in.geometry != nullptr, "geometry: a contact geometry source is required");
+  require(n_bodies > 0, "bodies: at least one body is required");
+  require(finite_positive(cfg.gravity), "gravity: must be > 0 m/s^2");
+  require(std::isfinite(m.in.speed.initial) && m.in.speed.initial >= 0.0,
+          "speed.initial: must be finite and >= 0 m/s");
+  require(std::isfinite(m.in.speed.acceleration), "speed.acceleration: must be finite m/s^2");
+  require(std::isfinite(m.in.start_position), "start_position: must be finite m");
+  require(std::isfinite(wr.friction) && wr.friction >= 0.0, "wheel_rail.friction: must be >= 0");
+  require(finite_positive(wr.regularisation_speed),
+          "wheel_rail.regularisation_speed: must be > 0 m/s");
+  require(finite_positive(wr.shear_modulus), "wheel_rail.shear_modulus: must be > 0 Pa");
+  require(std::isfinite(wr.poisson) && wr.poisson >= 0.0 && wr.poisson < 0.5,
+          "wheel_rail.poisson: must be in [0, 0.5)");
+  require(wr.normal_model == "hertz",
+          fmt::format("wheel_rail.normal_model: '{}' is not available in the vehicle model; "
+                      "allowed: hertz",
+                      wr.normal_model));
+  require(wr.reduction_table.empty(),
+          "wheel_rail.reduction_table: K_ij tables are not supported by the vehicle model yet; "
+          "give constants in wheel_rail.reduction");
+  for (int i = 0; i < 4; ++i) {
+    require(finite_positive(wr.reduction[static_cast<std::size_t>(i)]),
+            fmt::format("wheel_rail.reduction[{}]: K_ij must be finite and > 0", i));
+  }
+
+  // Bodies.
+  std::vector<int> order(static_cast<std::size_t>(n_bodies));
+  std::iota(order.begin(), order.end(), 0);
+  for (int i = 0; i < n_bodies; ++i) {
+    const RigidBodySpec& b = cfg.bodies[static_cast<std::size_t>(i)];
+    const std::string where = fmt::format("bodies[{}] ('{}')", i, b.name);
+    require(!b.name.empty(), fmt::format("bodies[{}].name: must not be empty", i));
+    for (int j = 0; j < i; ++j) {
+      require(cfg.bodies[static_cast<std::size_t>(j)].name != b.name,
+              fmt::format("{}.name: duplicate of bodies[{}]", where, j));
+    }
+    require(finite_positive(b.mass), fmt::format("{}.mass: must be > 0 kg, got {}", where, b.mass));
+    require(b.inertia.allFinite() && (b.inertia.array() > 0.0).all(),
+            fmt::format("{}.inertia: roll, pitch, yaw must be > 0 kg m^2", where));
+    require(b.position.allFinite(), fmt::format("{}.position: must be finite [m]", where));
+    if (b.kind == BodyKind::wheelset) {
+      require(finite_positive(b.nominal_rolling_radius),
+              fmt::format("{}.nominal_rolling_radius: must be > 0 m", where));
+    }
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return cfg.bodies[static_cast<std::size_t>(a)].position.x() >
+           cfg.bodies[static_cast<std::size_t>(b)].position.x();
+  });
+  std::vector<int> position_of(static_cast<std::size_t>(n_bodies));  // config -> model index
+  for (int i = 0; i < n_bodies; ++i) position_of[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = i;
+
+  for (int i : order) {
+    const RigidBodySpec& s = cfg.bodies[static_cast<std::size_t>(i)];
+    BodyData b;
+    b.name = s.name;
+    b.kind = s.kind;
+    b.mass = s.mass;
+    b.inertia = s.inertia;
+    b.rest = s.position;
+    b.r0 = s.kind == BodyKind::wheelset ? s.nominal_rolling_radius : 0.0;
+    m.bodies.push_back(b);
+  }
+
+  // Elements (validated against the config's indices, stored with model indices).
+  for (std::size_t i = 0; i < cfg.elements.size(); ++i) {
+    const SuspensionElementSpec& s = cfg.elements[i];
+    validate_element(s, fmt::format("elements[{}] ('{}')", i, s.name), n_bodies);
+    ElementData e;
+    e.spec = s;
+    e.a = s.body_a >= 0 ? position_of[static_cast<std::size_t>(s.body_a)] : -1;
+    e.b = position_of[static_cast<std::size_t>(s.body_b)];
+    m.elements.push_back(e);
+  }
+
+  // Selection: which bodies are in scope, which wheelsets have contact.
+  const ModelSelection& sel = m.in.selection;
+  std::vector<bool> in_scope(m.bodies.size(), false);
+  const auto nth_of_kind = [&](BodyKind kind, int index, const char* what) {
+    int count = 0;
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+      if (m.bodies[i].kind != kind) continue;
+      if (count++ == index) return static_cast<int>(i);
+    }
+    throw std::invalid_argument(fmt::format(
+        "selection.index: {} {} requested, the vehicle has {}", what, index, count));
+  };
+  if (sel.scope == "vehicle") {
+    std::fill(in_scope.begin(), in_scope.end(), true);
+  } else if (sel.scope == "bogie") {
+    const int bogie = nth_of_kind(BodyKind::bogie_frame, sel.index, "bogie");
+    in_scope[static_cast<std::size_t>(bogie)] = true;
+    for (const ElementData& e : m.elements) {
+      const int other = e.a == bogie ? e.b : (e.b == bogie ? e.a : -1);
+      if (other >= 0 && m.bodies[static_cast<std::size_t>(other)].kind == BodyKind::wheelset) {
+        in_scope[static_cast<std::size_t>(other)] = true;
+      }
+    }
+  } else if (sel.scope == "wheelset") {
+    in_scope[static_cast<std::size_t>(nth_of_kind(BodyKind::wheelset, sel.index, "wheelset"))] =
+        true;
+  } else {
+    throw std::invalid_argument(fmt::format(
+        "selection.scope: unknown '{}'; allowed: vehicle, bogie, wheelset", sel.scope));
+  }
+
+  // Active DOF: the spec's flags, minus frozen ones, minus a wheelset's pitch.
+  std::vector<std::array<bool, 6>> active(m.bodies.size());
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    const RigidBodySpec& s = cfg.bodies[static_cast<std::size_t>(order[i])];
+    active[i] = s.active;
+    if (s.kind == BodyKind::wheelset) active[i][4] = false;
+    if (!in_scope[i]) active[i].fill(false);
+  }
+  for (const std::string& f : sel.frozen) {
+    const auto dot = f.find('.');
+    const std::string body = dot == std::string::npos ? "" : f.substr(0, dot);
+    const std::string dof = dot == std::string::npos ? f : f.substr(dot + 1);
+    const auto it = std::find(kDofNames.begin(), kDofNames.end(), dof);
+    require(it != kDofNames.end(),
+            fmt::format("selection.frozen: '{}': unknown DOF '{}'; allowed: x, y, z, roll, pitch, "
+                        "yaw (optionally as body.dof)",
+                        f, dof));
+    const auto k = static_cast<std::size_t>(it - kDofNames.begin());
+    bool found = body.empty();
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+      if (body.empty() || m.bodies[i].name == body) {
+        active[i][k] = false;
+        found = true;
+      }
+    }
+    require(found, fmt::format("selection.frozen: '{}': no body named '{}'", f, body));
+  }
+
+  // State layout: per body [positions][rates][spin], then its series dampers.
+  int next = 0;
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    BodyData& b = m.bodies[i];
+    const RigidBodySpec& s = cfg.bodies[static_cast<std::size_t>(order[i])];
+    b.block_begin = next;
+    for (int d = 0; d < 6; ++d) {
+      if (active[i][static_cast<std::size_t>(d)]) b.q[static_cast<std::size_t>(d)] = next++;
+    }
+    for (int d = 0; d < 6; ++d) {
+      if (active[i][static_cast<std::size_t>(d)]) b.v[static_cast<std::size_t>(d)] = next++;
+    }
+    if (b.kind == BodyKind::wheelset && s.spin_dof && in_scope[i]) b.spin = next++;
+    b.dynamic = next > b.block_begin;
+    b.has_contact = b.kind == BodyKind::wheelset && in_scope[i];
+    for (ElementData& e : m.elements) {
+      if (e.spec.type != ElementType::series_damper) continue;
+      const bool a_in = e.a >= 0 && in_scope[static_cast<std::size_t>(e.a)];
+      const bool b_in = in_scope[static_cast<std::size_t>(e.b)];
+      const int host = a_in ? e.a : e.b;
+      if (host == static_cast<int>(i) && (a_in || b_in)) e.state = next++;
+    }
+    b.block_end = next;
+  }
+  m.n_states = static_cast<std::size_t>(next);
+
+  // Drop elements between two bodies without states (they cannot act on the model).
+  std::erase_if(m.elements, [&](const ElementData& e) {
+    const bool a_dyn = e.a >= 0 && m.bodies[static_cast<std::size_t>(e.a)].dynamic;
+    const bool b_dyn = m.bodies[static_cast<std::size_t>(e.b)].dynamic;
+    return !a_dyn && !b_dyn && e.state < 0;
+  });
+  for (ElementData& e : m.elements) {
+    const Eigen::Vector3d pb = m.bodies[static_cast<std::size_t>(e.b)].rest + e.spec.point_b;
+    const Eigen::Vector3d pa =
+        e.a >= 0 ? Eigen::Vector3d(m.bodies[static_cast<std::size_t>(e.a)].rest + e.spec.point_a)
+                 : e.spec.point_a;
+    e.rest_vector = pb - pa;
+  }
+
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    if (m.bodies[i].has_contact) m.contact_bodies.push_back(static_cast<int>(i));
+    if (m.bodies[i].kind == BodyKind::car_body && m.car_body < 0) m.car_body = static_cast<int>(i);
+  }
+
+  // Names.
+  m.states.resize(m.n_states);
+  static const char* kPosUnit[6] = {"m", "m", "m", "rad", "rad", "rad"};
+  static const char* kRateUnit[6] = {"m/s", "m/s", "m/s", "rad/s", "rad/s", "rad/s"};
+  for (const BodyData& b : m.bodies) {
+    for (std::size_t d = 0; d < 6; ++d) {
+      if (b.q[d] >= 0) {
+        m.states[static_cast<std::size_t>(b.q[d])] = {
+            fmt::format("{}.{}", b.name, kDofNames[d]), kPosUnit[d],
+            fmt::format("{} {} ({}), from rest in its track frame", b.name, kDofNames[d],
+                        kind_name(b.kind))};
+        m.states[static_cast<std::size_t>(b.v[d])] = {
+            fmt::format("{}.{}_dot", b.name, kDofNames[d]), kRateUnit[d],
+            fmt::format("rate of {}.{}", b.name, kDofNames[d])};
+      }
+    }
+    if (b.spin >= 0) {
+      m.states[static_cast<std::size_t>(b.spin)] = {
+          fmt::format("{}.spin", b.name), "rad/s", "spin speed perturbation beta (spin = V/r0 + beta)"};
+    }
+  }
+  for (const ElementData& e : m.elements) {
+    if (e.state >= 0) {
+      m.states[static_cast<std::size_t>(e.state)] = {
+          fmt::format("{}.damper_deflection", e.spec.name), "m",
+          "internal deflection of the damper in series with its stiffness"};
+    }
+  }
+  for (int bi : m.contact_bodies) {
+    const std::string& name = m.bodies[static_cast<std::size_t>(bi)].name;
+    for (const char* side : {"left", "right"}) {
+      const auto add = [&](const char* what, const char* unit, const char* desc) {
+        m.signal_list.push_back({fmt::format("{}.{}.{}", name, side, what), unit, desc});
+      };
+      add("Y", "N", "lateral rail force on the wheel, + towards the track centre");
+      add("Q", "N", "vertical rail force on the wheel, + up");
+      add("normal_force", "N", "sum of the normal forces of the wheel's contact points");
+      add("creepage_x", "-", "longitudinal creepage of the most loaded point");
+      add("creepage_y", "-", "lateral creepage of the most loaded point");
+      add("spin", "1/m", "spin creepage of the most loaded point");
+      add("contact_y", "m", "lateral contact position from the rail reference point, + outwards");
+      add("contact_angle", "rad", "contact angle of the most loaded point");
+      add("points", "-", "number of loaded contact points");
+    }
+  }
+  if (m.car_body >= 0) {
+    m.signal_list.push_back(
+        {"car_body.ay", "m/s^2", "lateral acceleration read at the car body's centre of mass"});
+  }
+  m.signal_list.push_back({"position", "m", "arc length of the vehicle reference point"});
+  m.signal_list.push_back({"speed", "m/s", "vehicle speed"});
+
+  // Contact mechanics.
+  m.material = contact::Material{wr.shear_modulus, wr.poisson};
+  m.contact_modulus = contact::combine(m.material, m.material).contact_modulus;
+  m.reduction = contact::ReductionFactors{wr.reduction[0], wr.reduction[1], wr.reduction[2],
+                                          wr.reduction[3]};
+  try {
+    m.tangential = contact::make_tangential_model(wr.tangential_model, wr.tangential_options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(fmt::format("wheel_rail.tangential_model: {}", e.what()));
+  }
+  if (m.in.track) m.nominal_rail_spacing = m.in.track->alignment().design().rail_spacing;
+}
+
+VehicleModel::~VehicleModel() = default;
+
+// ---------------------------------------------------------------------------------------------
+// Evaluation
+
+void VehicleModel::Impl::frame_at(double s, double speed, double rate, BodyKinematics& k,
+                                  bool irregular) const {
+  if (in.track) {
+    if (irregular) {
+      const track::TrackPoint p = in.track->at(s);
+      k.frame = p.frame;
+      k.irregularity = p.irregularity;
+    } else {
+      k.frame = in.track->alignment().frame(s);
+      k.irregularity = track::IrregularitySample{};
+    }
+  } else {
+    k.frame = track::TrackFrame{};
+    k.frame.s = s;
+    k.frame.position = Eigen::Vector3d(s, 0.0, 0.0);
+    k.frame.gauge = in.config.wheel_rail.track_gauge;
+    k.frame.rail_spacing = nominal_rail_spacing;
+    k.irregularity = track::IrregularitySample{};
+  }
+  k.motion = track::frame_kinematics(k.frame, speed, rate, in.config.gravity);
+}
+
+void VehicleModel::Impl::evaluate(double t, std::span<const double> x, std::span<double> xdot,
+                                  WheelResult* wheels, double* car_body_ay) const {
+  thread_local std::vector<BodyKinematics> kin;
+  if (kin.size() < bodies.size()) kin.resize(bodies.size());
+
+  const double speed = in.speed.speed(t);
+  const double rate = in.speed.rate(t);
+  const double s_ref = in.start_position + in.speed.distance(t);
+
+  // Body kinematics.
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const BodyData& b = bodies[i];
+    BodyKinematics& k = kin[i];
+    frame_at(s_ref + b.rest.x(), speed, rate, k, b.has_contact);
+    for (std::size_t d = 0; d < 3; ++d) {
+      k.u[static_cast<Eigen::Index>(d)] = b.q[d] >= 0 ? x[static_cast<std::size_t>(b.q[d])] : 0.0;
+      k.u_dot[static_cast<Eigen::Index>(d)] =
+          b.v[d] >= 0 ? x[static_cast<std::size_t>(b.v[d])] : 0.0;
+      k.angles[static_cast<Eigen::Index>(d)] =
+          b.q[d + 3] >= 0 ? x[static_cast<std::size_t>(b.q[d + 3])] : 0.0;
+      k.rates[static_cast<Eigen::Index>(d)] =
+          b.v[d + 3] >= 0 ? x[static_cast<std::size_t>(b.v[d + 3])] : 0.0;
+    }
+    k.attitude = attitude_matrix(k.angles);
+    k.spin = b.kind == BodyKind::wheelset
+                 ? speed / b.r0 + (b.spin >= 0 ? x[static_cast<std::size_t>(b.spin)] : 0.0)
+                 : 0.0;
+    k.force.setZero();
+    k.moment.setZero();
+  }
+
+  // Suspension elements.
+  BodyKinematics track_frame;
+  for (const ElementData& e : elements) {
+    if (e.a < 0) frame_at(s_ref + e.spec.point_a.x(), speed, rate, track_frame, false);
+    apply_element(*this, e, kin, track_frame, x, xdot);
+  }
+
+  // Wheel-rail forces.
+  for (std::size_t w = 0; w < contact_bodies.size(); ++w) {
+    const auto i = static_cast<std::size_t>(contact_bodies[w]);
+    apply_wheel_rail(*this, bodies[i], kin[i], wheels != nullptr ? wheels + 2 * w : nullptr);
+  }
+
+  if (car_body_ay != nullptr && car_body >= 0) {
+    const BodyData& b = bodies[static_cast<std::size_t>(car_body)];
+    const BodyKinematics& k = kin[static_cast<std::size_t>(car_body)];
+    *car_body_ay = b.dynamic ? (k.attitude.transpose() * k.force).y() / b.mass
+                             : std::numeric_limits<double>::quiet_NaN();
+  }
+  if (xdot.empty()) return;
+
+  // Equations of motion in each body's track frame.
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const BodyData& b = bodies[i];
+    if (!b.dynamic) continue;
+    const BodyKinematics& k = kin[i];
+    const Eigen::Vector3d& w = k.motion.angular_velocity;
+    const Eigen::Vector3d& alpha = k.motion.angular_acceleration;
+    const Eigen::Vector3d r = Eigen::Vector3d(0.0, b.rest.y(), b.rest.z()) + k.u;
+    const Eigen::Vector3d acc = k.force / b.mass - k.motion.specific_force - alpha.cross(r) -
+                                w.cross(w.cross(r)) - 2.0 * w.cross(k.u_dot);
+    const Eigen::Vector3d w_h = w + k.rates;
+    Eigen::Vector3d h = b.inertia.cwiseProduct(w_h);
+    const Eigen::Vector3d axle = k.attitude.col(1);
+    if (b.kind == BodyKind::wheelset) h += b.inertia.y() * k.spin * axle;
+    const Eigen::Vector3d ang_acc =
+        (k.moment - w_h.cross(h)).cwiseQuotient(b.inertia) - alpha - w.cross(k.rates);
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (b.q[d] >= 0) {
+        xdot[static_cast<std::size_t>(b.q[d])] = k.u_dot[static_cast<Eigen::Index>(d)];
+        xdot[static_cast<std::size_t>(b.v[d])] = acc[static_cast<Eigen::Index>(d)];
+      }
+      if (b.q[d + 3] >= 0) {
+        xdot[static_cast<std::size_t>(b.q[d + 3])] = k.rates[static_cast<Eigen::Index>(d)];
+        xdot[static_cast<std::size_t>(b.v[d + 3])] = ang_acc[static_cast<Eigen::Index>(d)];
+      }
+    }
+    if (b.spin >= 0) {
+      // I_y (d spin / dt) = M_y - (w_h x H)_y - I_y (alpha + w x theta')_y, spin = V/r0 + beta.
+      xdot[static_cast<std::size_t>(b.spin)] = ang_acc.y() - rate / b.r0;
+    }
+  }
+}
+
+std::size_t VehicleModel::size() const { return impl_->n_states; }
+
+int VehicleModel::rhs(double t, std::span<const double> x, std::span<double> xdot) const {
+  try {
+    impl_->evaluate(t, x, xdot, nullptr, nullptr);
+  } catch (const std::out_of_range&) {
+    return kRhsFatal;  // the vehicle left the designed track
+  } catch (const std::exception&) {
+    return kRhsRecoverable;
+  }
+  for (double v : xdot) {
+    if (!std::isfinite(v)) return kRhsRecoverable;
+  }
+  return kRhsOk;
+}
+
+std::vector<SignalInfo> VehicleModel::state_info() const { return impl_->states; }
+std::vector<SignalInfo> VehicleModel::signal_info() const { return impl_->signal_list; }
+
+void VehicleModel::signals(double t, std::span<const double> x, std::span<double> out) const {
+  const Impl& m = *impl_;
+  thread_local std::vector<WheelResult> wheels;
+  wheels.assign(2 * m.contact_bodies.size(), WheelResult{});
+  double ay = std::numeric_limits<double>::quiet_NaN();
+  m.evaluate(t, x, {}, wheels.data(), &ay);
+  std::size_t o = 0;
+  for (const WheelResult& w : wheels) {
+    out[o++] = w.lateral_towards_centre;
+    out[o++] = w.vertical;
+    out[o++] = w.normal_force;
+    out[o++] = w.creepage_x;
+    out[o++] = w.creepage_y;
+    out[o++] = w.spin;
+    out[o++] = w.points > 0 ? w.contact_y : std::numeric_limits<double>::quiet_NaN();
+    out[o++] = w.points > 0 ? w.contact_angle : std::numeric_limits<double>::quiet_NaN();
+    out[o++] = w.points;
+  }
+  if (m.car_body >= 0) out[o++] = ay;
+  out[o++] = m.in.start_position + m.in.speed.distance(t);
+  out[o++] = m.in.speed.speed(t);
+}
+
+std::pair<int, int> VehicleModel::jacobian_bandwidth() const {
+  const Impl& m = *impl_;
+  int band = 0;
+  const auto couple = [&](int lo_a, int hi_a, int lo_b, int hi_b) {
+    if (hi_a <= lo_a || hi_b <= lo_b) return;
+    band = std::max({band, hi_a - 1 - lo_b, hi_b - 1 - lo_a});
+  };
+  for (const BodyData& b : m.bodies) couple(b.block_begin, b.block_end, b.block_begin, b.block_end);
+  for (const ElementData& e : m.elements) {
+    const BodyData& bb = m.bodies[static_cast<std::size_t>(e.b)];
+    if (e.a >= 0) {
+      const BodyData& ba = m.bodies[static_cast<std::size_t>(e.a)];
+      couple(ba.block_begin, ba.block_end, bb.block_begin, bb.block_end);
+    }
+    if (e.state >= 0) {
+      couple(e.state, e.state + 1, bb.block_begin, bb.block_end);
+      if (e.a >= 0) {
+        const BodyData& ba = m.bodies[static_cast<std::size_t>(e.a)];
+        couple(e.state, e.state + 1, ba.block_begin, ba.block_end);
+      }
+    }
+  }
+  return {band, band};
+}
+
+std::vector<double> VehicleModel::rest_state() const {
+  return std::vector<double>(impl_->n_states, 0.0);
+}
+
+std::size_t VehicleModel::wheelset_count() const { return impl_->contact_bodies.size(); }
+
+int VehicleModel::state_index(const std::string& body, Dof dof) const {
+  for (const BodyData& b : impl_->bodies) {
+    if (b.name == body) return b.q[static_cast<std::size_t>(dof)];
+  }
+  return -1;
+}
+
+int VehicleModel::rate_index(const std::string& body, Dof dof) const {
+  for (const BodyData& b : impl_->bodies) {
+    if (b.name == body) return b.v[static_cast<std::size_t>(dof)];
+  }
+  return -1;
+}
+
+const VehicleModelInputs& VehicleModel::inputs() const { return impl_->in; }
+
+// ---------------------------------------------------------------------------------------------
+// Static equilibrium
+
+std::vector<double> VehicleModel::static_equilibrium(double t) const {
+  const Impl& m = *impl_;
+  std::vector<double> x = rest_state();
+  // Unknowns: positions, spin perturbations and series-damper deflections; residuals: the
+  // accelerations of those positions and the rates of the other two.
+  std::vector<int> unknown, residual;
+  for (const BodyData& b : m.bodies) {
+    for (std::size_t d = 0; d < 6; ++d) {
+      if (b.q[d] >= 0) {
+        unknown.push_back(b.q[d]);
+        residual.push_back(b.v[d]);
+      }
+    }
+    if (b.spin >= 0) {
+      unknown.push_back(b.spin);
+      residual.push_back(b.spin);
+    }
+    // Lower a wheelset onto the rails by a typical Hertz approach so that Newton starts with
+    // contact stiffness.
+    if (b.has_contact && b.q[2] >= 0) x[static_cast<std::size_t>(b.q[2])] = -1.0e-4;
+  }
+  for (const ElementData& e : m.elements) {
+    if (e.state >= 0) {
+      unknown.push_back(e.state);
+      residual.push_back(e.state);
+    }
+  }
+  const auto n = static_cast<Eigen::Index>(unknown.size());
+  if (n == 0) return x;
+  std::vector<double> xdot(m.n_states);
+  const auto eval = [&](const std::vector<double>& state, Eigen::VectorXd& r) {
+    const int code = rhs(t, state, xdot);
+    if (code != kRhsOk) return false;
+    for (Eigen::Index i = 0; i < n; ++i) r[i] = xdot[static_cast<std::size_t>(residual[i])];
+    return true;
+  };
+  Eigen::VectorXd r(n), r_trial(n), r_step(n);
+  if (!eval(x, r)) throw std::runtime_error("static_equilibrium: rhs failed at the start state");
+  constexpr double kResidualTol = 1e-9;  // [m/s^2, rad/s^2]: far below any load share test
+  constexpr double kStep = 1e-8;         // finite-difference step [m, rad]
+  Eigen::MatrixXd J(n, n);
+  for (int iter = 0; iter < 200; ++iter) {
+    if (r.lpNorm<Eigen::Infinity>() < kResidualTol) return x;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      std::vector<double> xp = x;
+      xp[static_cast<std::size_t>(unknown[j])] += kStep;
+      if (!eval(xp, r_step)) throw std::runtime_error("static_equilibrium: rhs failed");
+      J.col(j) = (r_step - r) / kStep;
+    }
+    const Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-r);
+    double lambda = 1.0;
+    bool improved = false;
+    for (int ls = 0; ls < 30; ++ls, lambda *= 0.5) {
+      std::vector<double> xt = x;
+      for (Eigen::Index j = 0; j < n; ++j) xt[static_cast<std::size_t>(unknown[j])] += lambda * dx[j];
+      if (eval(xt, r_trial) && r_trial.norm() < r.norm()) {
+        x = xt;
+        r = r_trial;
+        improved = true;
+        break;
+      }
+    }
+    if (!improved) break;
+  }
+  if (r.lpNorm<Eigen::Infinity>() < 1e-6) return x;  // stalled at round-off level
+  throw std::runtime_error(fmt::format(
+      "static_equilibrium: Newton did not converge (largest residual {:.3g})",
+      r.lpNorm<Eigen::Infinity>()));
+}
+
+// ---------------------------------------------------------------------------------------------
+
+std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
+    const WheelRailSpec& spec, const std::string& /*base_dir*/) {
+  throw std::invalid_argument(fmt::format(
+      "wheel_rail.geometry: '{}' cannot be built: the contact geometry sources (table, search, "
+      "imported, conical) are not part of this build yet",
+      spec.geometry));
+}
+
+}  // namespace ferro::vehicle

@@ -1,0 +1,101 @@
+#pragma once
+// Internal data of VehicleModel: the read-only model built in the constructor (bodies, element
+// list, state layout, tangential model) and the per-call kinematics scratch. See
+// vehicle_model.hpp for the equations and conventions.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ferro/track/kinematics.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
+
+namespace ferro::vehicle {
+
+/// One body of the configuration with its place in the state.
+struct BodyData {
+  std::string name;
+  BodyKind kind = BodyKind::car_body;
+  double mass = 0.0;
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();  ///< roll, pitch, yaw [kg m^2]
+  Eigen::Vector3d rest = Eigen::Vector3d::Zero();     ///< rest position; x is the frame offset
+  double r0 = 0.0;                                    ///< wheelsets: nominal rolling radius [m]
+  bool dynamic = false;      ///< has at least one state
+  bool has_contact = false;  ///< wheelset in the selection: wheel-rail forces are computed
+  std::array<int, 6> q{-1, -1, -1, -1, -1, -1};  ///< position state per DOF
+  std::array<int, 6> v{-1, -1, -1, -1, -1, -1};  ///< rate state per DOF
+  int spin = -1;                                 ///< spin perturbation state
+  int block_begin = 0, block_end = 0;            ///< state range incl. series-damper states
+};
+
+struct ElementData {
+  SuspensionElementSpec spec;
+  int a = -1, b = -1;  ///< indices into Impl::bodies (-1: track frame)
+  int state = -1;      ///< series damper internal deflection
+  /// Relative position point_b - point_a on straight track at rest, track axes [m].
+  Eigen::Vector3d rest_vector = Eigen::Vector3d::Zero();
+};
+
+/// Kinematics and force accumulators of one body during one evaluation (track axes of the
+/// body's own frame).
+struct BodyKinematics {
+  track::TrackFrame frame;
+  track::FrameKinematics motion;
+  track::IrregularitySample irregularity;
+  Eigen::Vector3d u = Eigen::Vector3d::Zero(), angles = Eigen::Vector3d::Zero();
+  Eigen::Vector3d u_dot = Eigen::Vector3d::Zero(), rates = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d attitude = Eigen::Matrix3d::Identity();
+  double spin = 0.0;  ///< wheelsets: V/r0 + beta [rad/s]
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+};
+
+/// Per-wheel results of the wheel-rail coupling (signals).
+struct WheelResult {
+  double lateral_towards_centre = 0.0, vertical = 0.0, normal_force = 0.0;
+  double creepage_x = 0.0, creepage_y = 0.0, spin = 0.0;
+  double contact_y = 0.0, contact_angle = 0.0;
+  double largest_normal_force = 0.0;
+  int points = 0;
+};
+
+struct VehicleModel::Impl {
+  VehicleModelInputs in;
+  std::vector<BodyData> bodies;  ///< in state order (decreasing rest x)
+  std::vector<ElementData> elements;
+  std::vector<int> contact_bodies;  ///< bodies with wheel-rail contact, front first
+  int car_body = -1;
+  std::size_t n_states = 0;
+  std::vector<SignalInfo> states, signal_list;
+  std::unique_ptr<contact::TangentialModel> tangential;
+  contact::Material material;
+  double contact_modulus = 0.0;
+  contact::ReductionFactors reduction;
+  double nominal_rail_spacing = 1.5;
+
+  /// Evaluates the model at (t, x): xdot (may be empty) and, when `wheels` is given, the
+  /// per-wheel results (2 per contact body) and the car-body lateral acceleration.
+  void evaluate(double t, std::span<const double> x, std::span<double> xdot,
+                WheelResult* wheels, double* car_body_ay) const;
+
+  /// Frame, frame motion and irregularities at arc length s.
+  void frame_at(double s, double speed, double rate, BodyKinematics& k, bool irregular) const;
+};
+
+/// Suspension element forces and moments added to the bodies' accumulators; series-damper
+/// internal rates written into xdot (when not empty).
+void apply_element(const VehicleModel::Impl& model, const ElementData& element,
+                   std::vector<BodyKinematics>& kin, const BodyKinematics& track_frame_a,
+                   std::span<const double> x, std::span<double> xdot);
+
+/// Wheel-rail forces on one wheelset (added to its accumulators) and the per-wheel results.
+void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body,
+                      BodyKinematics& k, WheelResult* left_right);
+
+/// Position and velocity (ground frame) of a point p given in body axes.
+void point_state(const BodyData* body, const BodyKinematics& k, const Eigen::Vector3d& p,
+                 Eigen::Vector3d& position, Eigen::Vector3d& velocity);
+
+}  // namespace ferro::vehicle

@@ -1,0 +1,140 @@
+// Wheel-rail coupling of one wheelset at every contact point the geometry source returns:
+// pose relative to the rails (with track irregularities), normal force from the penetration
+// (Hertz), exact creepages from the body and track-frame kinematics, tangential forces from the
+// registered model, forces and moments on the wheelset.
+//
+// References: Toumi (2016) eqs. (5)-(13) (Hertz), (24)-(27) (creepages as rigid slip over the
+// rolling speed), (38)-(40), (156) (creep forces, K_ij); Johnson (1985) eq. (4.39).
+// Known deviations: the wheel material point is placed at the rolling radius the source gives,
+// along the direction from the axle to the contact point (the axial offset kept), so that the
+// rolling radius of a tabulated or analytic profile enters the creepages exactly; the rail is
+// at rest in the ground (no rail vibration); gauge irregularity is not passed to the geometry
+// (WheelsetPose has no gauge input). The rolling speed is max(|V|, regularisation_speed).
+
+#include <algorithm>
+#include <cmath>
+
+#include "ferro/contact/contact_patch.hpp"
+#include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+#include "ferro/contact/hertz.hpp"
+#include "ferro/vehicle/frames.hpp"
+#include "vehicle_model_impl.hpp"
+
+namespace ferro::vehicle {
+namespace {
+
+/// Normal force and Hertz patch of a contact from its penetration (curvatures, or the
+/// reference state of imported tables). normal_force = 0 when the point carries no load.
+contact::ContactPatch patch_from_penetration(const contact::WheelRailContact& c,
+                                             double contact_modulus) {
+  contact::ContactPatch patch;
+  patch.normal_force = 0.0;
+  if (!(c.penetration > 0.0)) return patch;
+  if (c.has_reference_state()) {
+    const double ratio = c.penetration / c.ref_penetration;
+    const double fn = c.ref_normal_force * ratio * std::sqrt(ratio);
+    const double scale = std::cbrt(fn / c.ref_normal_force);
+    patch = contact::elliptic_patch(c.ref_semi_axis_a * scale, c.ref_semi_axis_b * scale, fn);
+    patch.approach = c.penetration;
+    return patch;
+  }
+  const double a_curv = c.curvature_a;
+  const double b_curv = std::max(c.curvature_b, 1e-3 * a_curv);  // conformal floor as Hertz load
+  const double fn =
+      contact::hertz_load_from_approach(a_curv, b_curv, contact_modulus, c.penetration);
+  if (!(fn > 0.0)) return patch;
+  return contact::hertz_patch(contact::hertz_solve(a_curv, b_curv, fn, contact_modulus), a_curv,
+                              b_curv);
+}
+
+}  // namespace
+
+void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, BodyKinematics& k,
+                      WheelResult* left_right) {
+  thread_local std::vector<contact::WheelRailContact> points;
+  if (points.capacity() < 32) points.reserve(32);
+
+  const track::IrregularitySample& irr = k.irregularity;
+  const double spacing = k.frame.rail_spacing > 0.0 ? k.frame.rail_spacing
+                                                    : model.nominal_rail_spacing;
+  const double rail_roll = -std::asin(std::clamp(irr.cross_level / spacing, -1.0, 1.0));
+  const double cr = std::cos(rail_roll), sr = std::sin(rail_roll);
+  const auto roll_rail = [cr, sr](const Eigen::Vector3d& v) {
+    return Eigen::Vector3d(v.x(), cr * v.y() - sr * v.z(), sr * v.y() + cr * v.z());
+  };
+
+  // Pose relative to the rails.
+  const Eigen::Vector3d centre = Eigen::Vector3d(0.0, body.rest.y(), body.rest.z()) + k.u;
+  RailRelativePose rel;
+  rel.lateral = centre.y() - irr.lateral;
+  rel.height = centre.z() - irr.vertical - body.r0;
+  rel.roll = k.angles.x() - rail_roll;
+  rel.yaw = k.angles.z() - irr.d_lateral;
+  model.in.geometry->contacts(to_contact_pose(rel), points);
+
+  const Eigen::Vector3d axle = k.attitude.col(1);
+  const Eigen::Vector3d omega = k.motion.angular_velocity + k.rates + k.spin * axle;
+  const Eigen::Vector3d centre_velocity = Eigen::Vector3d(k.motion.speed, 0.0, 0.0) +
+                                          k.motion.angular_velocity.cross(centre) + k.u_dot;
+  const double rolling_speed =
+      std::max(std::abs(k.motion.speed), model.in.config.wheel_rail.regularisation_speed);
+  const Eigen::Vector3d rails_origin(0.0, irr.lateral, irr.vertical);
+
+  for (const contact::WheelRailContact& c : points) {
+    const contact::ContactPatch patch = patch_from_penetration(c, model.contact_modulus);
+    if (!(patch.normal_force > 0.0)) continue;  // wheel lift: no tangential model call
+
+    const Eigen::Vector3d p = rails_origin + roll_rail(from_contact_frame(c.x, c.y, c.z));
+    const Eigen::Vector3d n = roll_rail(rail_normal(c.side, c.contact_angle));
+    // Wheel material point: axial offset along the axle, radial at the rolling radius.
+    const Eigen::Vector3d d = p - centre;
+    const Eigen::Vector3d axial = d.dot(axle) * axle;
+    Eigen::Vector3d radial = d - axial;
+    const double radial_length = radial.norm();
+    radial = radial_length > 0.0 ? Eigen::Vector3d(radial / radial_length)
+                                 : Eigen::Vector3d(-Eigen::Vector3d::UnitZ());
+    const Eigen::Vector3d arm = axial + c.rolling_radius * radial;
+    const Eigen::Vector3d slip = centre_velocity + omega.cross(arm);  // rail at rest
+
+    // Contact frame: t1 along the rail, n the rail->wheel normal, t2 = n x t1.
+    Eigen::Vector3d t1 = Eigen::Vector3d::UnitX() - n.x() * n;
+    t1.normalize();
+    const Eigen::Vector3d t2 = n.cross(t1);
+    contact::TangentialProblem problem;
+    problem.patch = &patch;
+    problem.creepage.longitudinal = slip.dot(t1) / rolling_speed;
+    problem.creepage.lateral = slip.dot(t2) / rolling_speed;
+    problem.creepage.spin = omega.dot(n) / rolling_speed;
+    problem.friction = model.in.config.wheel_rail.friction;
+    problem.body1 = model.material;
+    problem.body2 = model.material;
+    problem.reduction = model.reduction;
+    problem.rolling_speed = rolling_speed;
+    const contact::TangentialSolution tang = model.tangential->solve(problem);
+
+    const Eigen::Vector3d force =
+        patch.normal_force * n + tang.force_x * t1 + tang.force_y * t2;
+    k.force += force;
+    k.moment += arm.cross(force) + tang.moment_z * n;
+
+    if (left_right != nullptr) {
+      WheelResult& w = left_right[c.side == contact::Side::left ? 0 : 1];
+      const double towards_centre = c.side == contact::Side::left ? -1.0 : 1.0;
+      w.lateral_towards_centre += towards_centre * force.y();
+      w.vertical += force.z();
+      w.normal_force += patch.normal_force;
+      ++w.points;
+      if (patch.normal_force > w.largest_normal_force) {
+        w.largest_normal_force = patch.normal_force;
+        w.creepage_x = problem.creepage.longitudinal;
+        w.creepage_y = problem.creepage.lateral;
+        w.spin = problem.creepage.spin;
+        w.contact_angle = c.contact_angle;
+        // Outwards from the nominal rail reference point (+-spacing/2).
+        w.contact_y = -towards_centre * p.y() - 0.5 * spacing;
+      }
+    }
+  }
+}
+
+}  // namespace ferro::vehicle
