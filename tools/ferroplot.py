@@ -18,6 +18,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import analysis_plot  # noqa: E402
+
 
 def attr(f, name, default=""):
     v = f.attrs.get(name, default)
@@ -106,6 +109,8 @@ def main():
         return 2
     with f:
         mode = a.mode
+        if mode == "auto" and attr(f, "kind") in analysis_plot.KINDS:
+            return analysis_plot.plot(f, attr(f, "kind"), lambda fig, stem: [print(p) for p in save(fig, a.out, stem, formats)])
         if mode == "auto":
             mode = "eigen" if attr(f, "kind") == "eigen_analysis" else "timeseries"
         if mode == "eigen":

@@ -27,6 +27,7 @@ int run_main(int argc, char** argv) {
   add_mim_table_commands(app, handler);
   add_bench_commands(app, handler);
   add_fe_kij_commands(app, handler);
+  add_analysis_commands(app, handler);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,85 @@
+#pragma once
+// Nonlinear critical speed of any OdeSystem family parametrised by speed:
+//  - ramping: a run whose speed decreases slowly after a lateral disturbance; the speed where
+//    the oscillation envelope falls below a threshold for good;
+//  - periodic branch: constant-speed runs followed downward along the limit cycles, each speed
+//    started from the previous limit cycle's final state, to the fold; the fold is bracketed by
+//    bisection.
+//
+// References: Toumi 2016, chapter 4 (ramping from 110 m/s at -1 m/s^2; bifurcation diagram;
+//   Vc = 273 km/h ramping, 280 km/h bifurcation on the Manchester vehicle); True, "On the theory
+//   of nonlinear dynamics and its applications in vehicle systems dynamics" (1999): the
+//   nonlinear critical speed is the fold of the periodic branch, at or below the Hopf speed.
+// Known deviations: the ramp holds the speed constant over short pieces (`hold`), rebuilding the
+//   system at each piece's mid speed, so it works on any speed-parametrised OdeSystem; a model
+//   with its own speed profile does the same with a continuous v(t).
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "ferro/scenarios/analysis/limit_cycle.hpp"
+#include "ferro/vehicle/stability.hpp"
+
+namespace ferro::scenarios::analysis {
+
+struct RampOptions {
+  double speed_initial = 0.0;     ///< [m/s]
+  double deceleration = 1.0;      ///< [m/s^2], > 0
+  double speed_final = 0.0;       ///< the run stops at this speed [m/s]
+  double hold = 0.1;              ///< duration of each constant-speed piece [s]
+  double output_interval = 2e-3;  ///< [s]
+  double envelope_window = 2.0;   ///< envelope = max |x - x_mean| over this trailing time [s]
+  double threshold = 1e-4;        ///< oscillation died out when the envelope stays below [unit]
+  double max_amplitude = 0.05;    ///< the run stops as diverged when |x| exceeds this [unit]
+  vehicle::IntegratorSettings solver;
+  std::size_t observed = 0;       ///< state index (wheelset 1 lateral displacement)
+};
+
+struct RampResult {
+  std::vector<double> time, speed, signal, envelope;
+  std::optional<double> decay_speed;  ///< speed where the envelope goes below for good [m/s]
+  double decay_time = NAN;            ///< [s]
+  /// Speed at the envelope's maximum [m/s]: where the oscillation stops growing. For a linear
+  /// model slow enough a ramp, the speed where the least damped mode's damping crosses zero.
+  double peak_speed = NAN;
+  bool completed = true;              ///< false when the solver failed (message says why)
+  std::string message;
+};
+
+/// Ramping run from x0. Throws std::invalid_argument for bad options.
+[[nodiscard]] RampResult ramp_down(const vehicle::SystemAtSpeed& factory,
+                                   std::span<const double> x0, const RampOptions& options);
+
+struct BranchPoint;
+
+struct BranchOptions {
+  double speed_start = 0.0;   ///< first (highest) speed [m/s]
+  double speed_stop = 0.0;    ///< lowest speed followed [m/s]
+  double speed_step = 1.0;    ///< downward step before bisection [m/s]
+  double bracket = 0.1;       ///< bisection ends at this bracket width [m/s]
+  SettleOptions settle;
+  std::function<void(const BranchPoint&)> on_point;  ///< progress, after each run
+};
+
+struct BranchPoint {
+  double speed = 0.0;  ///< [m/s]
+  SettleResult run;
+  bool bisection = false;  ///< computed while bracketing the fold
+};
+
+struct BranchResult {
+  std::vector<BranchPoint> points;  ///< in the order computed
+  /// Lowest speed with a sustained oscillation found (upper end of the fold bracket).
+  std::optional<double> lowest_sustained;
+  double bracket_low = NAN, bracket_high = NAN;  ///< the fold lies in [low, high] [m/s]
+  bool fold_found = false;  ///< false: sustained at speed_stop, or not at speed_start
+};
+
+/// Follows the periodic branch downward from x_disturbed at speed_start. Throws
+/// std::invalid_argument for bad options.
+[[nodiscard]] BranchResult follow_periodic_branch(const vehicle::SystemAtSpeed& factory,
+                                                  std::span<const double> x_disturbed,
+                                                  const BranchOptions& options);
+
+}  // namespace ferro::scenarios::analysis

@@ -1,0 +1,49 @@
+#pragma once
+// Glue between scenes and the analyses: the system family over speed, the lateral states the
+// analyses watch, the Kalker reduction factors applied to a scene, the disturbed start state.
+// Works on whatever OdeSystem scenarios::build_system makes of the scene.
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ferro/scenarios/scene.hpp"
+#include "ferro/vehicle/stability.hpp"
+
+namespace ferro::scenarios::analysis {
+
+/// Kalker reduction factors on the creep coefficients C11 (longitudinal), C22 (lateral), C23
+/// (lateral-spin) and C33 (spin) [-]; K23 and K33 follow K22 when not given (NaN).
+struct Reduction {
+  double k11 = 1.0;
+  double k22 = 1.0;
+  double k23 = NAN;
+  double k33 = NAN;
+  /// The same factor on every coefficient.
+  static Reduction uniform(double k) { return {k, k, k, k}; }
+};
+
+/// The scene with its reduction factors replaced: the linear wheelset's contact.k11/k22 and the
+/// vehicle's wheel_rail.reduction (K11, K22, K23, K33). Throws std::invalid_argument when a
+/// factor is not in (0, 1].
+[[nodiscard]] Scene with_reduction(Scene scene, const Reduction& k);
+
+/// build_system(scene, V) at constant speed (the scene's acceleration set to 0) as a factory
+/// over speed; the track and contact geometry are built once, here.
+[[nodiscard]] vehicle::SystemAtSpeed speed_family(const Scene& scene);
+
+/// Lateral displacement states of the wheelsets, front first: "wheelset_<i>.y" (i = 1, 2, ...),
+/// or the single "wheelset.y". Throws std::invalid_argument when there is none.
+struct LateralStates {
+  std::vector<std::size_t> index;  ///< state indices
+  std::vector<std::string> name;   ///< state names
+};
+[[nodiscard]] LateralStates lateral_states(const vehicle::OdeSystem& system);
+
+/// The scene's initial state, plus `lateral_offset` [m] added to the leading wheelset's lateral
+/// displacement.
+[[nodiscard]] std::vector<double> disturbed_state(const Scene& scene,
+                                                  const vehicle::OdeSystem& system,
+                                                  double lateral_offset);
+
+}  // namespace ferro::scenarios::analysis

@@ -1,0 +1,88 @@
+#pragma once
+// Sweeps of independent constant-speed runs (speeds x reduction factors): the steady
+// oscillation amplitude of each wheelset at each point, run over a pool of local threads; a
+// journal records each finished point durably so that an interrupted sweep resumes without
+// redoing it. Distribution over MPI ranks lives in the command line (rank 0 gathers and writes),
+// with the same per-point function, so serial, threaded and MPI sweeps give the same numbers.
+
+#include <atomic>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ferro/scenarios/analysis/limit_cycle.hpp"
+#include "ferro/scenarios/analysis/scene_analysis.hpp"
+#include "ferro/scenarios/model_factory.hpp"
+
+namespace ferro::scenarios::analysis {
+
+struct SweepPoint {
+  double speed = 0.0;  ///< [m/s]
+  Reduction k;
+};
+
+struct SweepPointResult {
+  std::size_t index = 0;
+  SweepPoint point;
+  Oscillation outcome = Oscillation::kDecayed;
+  std::vector<double> amplitude;  ///< per wheelset lateral state [m]
+  double period = NAN;            ///< [s]
+  double time = 0.0;              ///< simulated [s]
+  long rhs_evaluations = 0;
+  double cpu_seconds = 0.0;       ///< thread CPU time of the point [s]
+};
+
+/// One line of text, exact in every number (17 significant digits), and back.
+[[nodiscard]] std::string serialize(const SweepPointResult& r);
+/// Throws std::invalid_argument naming `where` for a malformed line.
+[[nodiscard]] SweepPointResult deserialize(const std::string& line, const std::string& where);
+
+/// Runs point `index` of a sweep of `scene`: constant speed from the scene's initial state plus
+/// `lateral_offset` on the leading wheelset, until settled (options.observed is filled with the
+/// wheelset lateral states). `resources`: the scene's track and geometry, built once per sweep.
+[[nodiscard]] SweepPointResult run_sweep_point(const Scene& scene, const ModelResources& resources,
+                                               std::size_t index, const SweepPoint& point,
+                                               double lateral_offset, SettleOptions options);
+
+/// A folder of finished points, one file each, written to a temporary name, synced and renamed
+/// into place: a point is either wholly recorded or absent, whatever the interruption.
+class SweepJournal {
+ public:
+  /// Creates the folder when missing. `signature` identifies the sweep (scene text and
+  /// options); opening a folder written for another sweep throws std::invalid_argument.
+  SweepJournal(std::string folder, const std::string& signature);
+  [[nodiscard]] std::map<std::size_t, SweepPointResult> load() const;
+  void record(const SweepPointResult& r) const;
+  [[nodiscard]] const std::string& folder() const { return folder_; }
+
+ private:
+  std::string folder_;
+};
+
+struct PoolOptions {
+  int jobs = 1;                                            ///< worker threads
+  std::function<void(const SweepPointResult&)> on_done;   ///< called (serialised) per point
+  std::function<bool()> should_stop;                      ///< polled before each point
+};
+
+/// Calls body(i) for i in [0, n) over `jobs` threads (the calling thread is one of them); stops
+/// handing out indices once should_stop() returns true. An exception in a body stops the
+/// others and is rethrown.
+void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, int jobs,
+                  const std::function<bool()>& should_stop = {});
+
+/// Runs `run(index)` for each index in `todo` over `jobs` threads; returns the results in the
+/// order of `todo` (points not run because of a stop are absent). An exception in a point stops
+/// the pool and is rethrown.
+[[nodiscard]] std::vector<SweepPointResult> run_pool(
+    const std::vector<std::size_t>& todo,
+    const std::function<SweepPointResult(std::size_t)>& run, const PoolOptions& options);
+
+/// Writes a sweep to a new HDF5 file (kind "sweep"): /sweep/speed, k11, k22, outcome (codes:
+/// attribute `outcome_codes`), period, amplitude (points x wheelsets), with the scene text.
+void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_names,
+                 const std::vector<SweepPointResult>& results, const std::string& path);
+
+}  // namespace ferro::scenarios::analysis

@@ -1,0 +1,159 @@
+// Sweeps: the journal records points exactly and refuses another sweep's folder; the same short
+// sweep run serially, on 2 threads, under `mpirun -n 2` and resumed after a stop gives identical
+// numbers (every point is an independent run with the same inputs).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "ferro/scenarios/analysis/sweep.hpp"
+#include "ferro/scenarios/h5_output.hpp"
+
+namespace ferro::scenarios::analysis {
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& args, const std::string& log) {
+  const std::string cmd = args + " > " + log + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  std::string s;
+  if (f == nullptr) return s;
+  char buf[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
+  std::fclose(f);
+  return s;
+}
+
+TEST(SweepJournal, RecordsExactlyAndRefusesAnotherSweep) {
+  const auto dir = (fs::temp_directory_path() / "ferro_sweep_journal_test").string();
+  fs::remove_all(dir);
+  SweepPointResult r;
+  r.index = 7;
+  r.point = {38.123456789012345, {0.9, 0.7}};
+  r.outcome = Oscillation::kSteady;
+  r.amplitude = {1.0 / 3.0, 2e-7, NAN};
+  r.period = 0.4567891234567891;
+  r.time = 20.0;
+  r.rhs_evaluations = 12345;
+  {
+    SweepJournal j(dir, "sweep A");
+    j.record(r);
+  }
+  const auto loaded = SweepJournal(dir, "sweep A").load();
+  ASSERT_EQ(loaded.size(), 1u);
+  const auto& l = loaded.at(7);
+  EXPECT_EQ(l.point.speed, r.point.speed);  // exact: 17 significant digits
+  EXPECT_EQ(l.point.k.k22, 0.7);
+  EXPECT_EQ(l.amplitude[0], r.amplitude[0]);
+  EXPECT_TRUE(std::isnan(l.amplitude[2]));
+  EXPECT_EQ(l.period, r.period);
+  EXPECT_EQ(l.outcome, Oscillation::kSteady);
+  EXPECT_THROW(SweepJournal(dir, "sweep B"), std::invalid_argument);
+  fs::remove_all(dir);
+}
+
+TEST(ParallelFor, EveryIndexOnceAndErrorsPropagate) {
+  std::vector<int> hits(100, 0);
+  parallel_for(hits.size(), [&](std::size_t i) { hits[i] += 1; }, 3);
+  for (int h : hits) EXPECT_EQ(h, 1);
+  EXPECT_THROW(parallel_for(10, [](std::size_t i) { if (i == 5) throw std::runtime_error("x"); }, 2),
+               std::runtime_error);
+}
+
+struct SweepData {
+  std::vector<double> speed, outcome, amplitude;
+};
+
+SweepData read(const std::string& path) {
+  const auto f = H5File::open_read(path);
+  return {f.read_vector("/sweep/speed"), f.read_vector("/sweep/outcome"),
+          f.read_vector("/sweep/amplitude")};
+}
+
+void expect_identical(const SweepData& a, const SweepData& b, const std::string& what) {
+  ASSERT_EQ(a.speed.size(), b.speed.size()) << what;
+  ASSERT_EQ(a.amplitude.size(), b.amplitude.size()) << what;
+  for (std::size_t i = 0; i < a.speed.size(); ++i) {
+    EXPECT_EQ(a.speed[i], b.speed[i]) << what << " point " << i;
+    EXPECT_EQ(a.outcome[i], b.outcome[i]) << what << " point " << i;
+    EXPECT_EQ(a.amplitude[i], b.amplitude[i]) << what << " point " << i;  // bitwise: same runs
+  }
+}
+
+class SweepCli : public ::testing::Test {
+ protected:
+  std::string dir = std::string(FERRO_BINARY_DIR) + "/sweep_cli_test";
+  std::string scene = std::string(FERRO_SOURCE_DIR) + "/scenarios/scenes/wheelset_hunting.yaml";
+  // Speeds across the linear critical speed 38.93 m/s: decayed, slowly decaying, growing.
+  std::string args = " sweep " + scene +
+                     " --speed-min 30 --speed-max 48 --points 4 --k 1,0.8 --disturbance 1e-3"
+                     " --segment 2 --t-max 4 --no-plots -q";
+  void SetUp() override {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  std::string exe() const { return std::string(FERRODYN_EXE); }
+};
+
+TEST_F(SweepCli, SerialThreadsResumeAndMpiAgree) {
+  ASSERT_EQ(run(exe() + args + " -o " + dir + "/serial.h5", dir + "/serial.log"), 0)
+      << slurp(dir + "/serial.log");
+  const auto serial = read(dir + "/serial.h5");
+  ASSERT_EQ(serial.speed.size(), 8u);
+  // The sweep straddles the linear critical speed, eq. (151) 38.93 m/s, which for equal primary
+  // stiffnesses does not depend on the creep coefficients (K): sustained (steady 1, diverged 2,
+  // growing 3) exactly above it.
+  for (std::size_t i = 0; i < serial.speed.size(); ++i) {
+    const bool sustained = serial.outcome[i] >= 1.0 && serial.outcome[i] <= 3.0;
+    EXPECT_EQ(sustained, serial.speed[i] > 38.93) << serial.speed[i];
+  }
+
+  ASSERT_EQ(run(exe() + args + " --jobs 2 -o " + dir + "/threads.h5", dir + "/threads.log"), 0)
+      << slurp(dir + "/threads.log");
+  expect_identical(serial, read(dir + "/threads.h5"), "2 threads");
+
+  // Stopped after 3 points (exit 1, points kept), then resumed without redoing them.
+  EXPECT_EQ(run(exe() + args + " --max-new-points 3 -o " + dir + "/resumed.h5", dir + "/r1.log"),
+            1);
+  EXPECT_FALSE(fs::exists(dir + "/resumed.h5"));
+  ASSERT_EQ(run(exe() + args + " --jobs 2 -o " + dir + "/resumed.h5", dir + "/r2.log"), 0)
+      << slurp(dir + "/r2.log");
+  EXPECT_NE(slurp(dir + "/r2.log").find("(3 already finished"), std::string::npos)
+      << slurp(dir + "/r2.log");
+  expect_identical(serial, read(dir + "/resumed.h5"), "resumed");
+
+#ifdef FERRO_WITH_MPI
+  ASSERT_EQ(run("mpirun --allow-run-as-root --oversubscribe -n 2 " + exe() + args + " -o " + dir +
+                    "/mpi.h5",
+                dir + "/mpi.log"),
+            0)
+      << slurp(dir + "/mpi.log");
+  EXPECT_NE(slurp(dir + "/mpi.log").find("2 rank(s)"), std::string::npos) << slurp(dir + "/mpi.log");
+  expect_identical(serial, read(dir + "/mpi.h5"), "mpirun -n 2");
+#else
+  GTEST_SKIP() << "built without MPI: the mpirun comparison is not run";
+#endif
+}
+
+TEST_F(SweepCli, BadInputExits2) {
+  EXPECT_EQ(run(exe() + " sweep " + scene + " --speed-min 30 --speed-max 20 -o " + dir + "/x.h5",
+                dir + "/bad.log"),
+            2);
+  EXPECT_EQ(run(exe() + " sweep " + scene + " --speed-min 30 --speed-max 40 --k 0 -o " + dir +
+                    "/x.h5",
+                dir + "/bad.log"),
+            2);
+}
+
+}  // namespace
+}  // namespace ferro::scenarios::analysis

@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""Plots of the analysis files of ferrodyn (docs/ANALYSES.md), by their 'kind' attribute:
+derailment_assessment, ramp, bifurcation, kij_study, sweep. Called through ferroplot.py
+(`ferroplot.py auto FILE.h5 --out DIR`), which `ferrodyn` runs after each analysis verb.
+"""
+import sys
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+KINDS = ("derailment_assessment", "ramp", "bifurcation", "kij_study", "sweep")
+OUTCOMES = ["decayed", "steady", "diverged", "growing", "decaying"]
+
+
+def _attr(obj, name, default=""):
+    v = obj.attrs.get(name, default)
+    return v.decode() if isinstance(v, bytes) else v
+
+
+def _num(obj, name):
+    try:
+        return float(obj.attrs.get(name, float("nan")))
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def derailment(f, save):
+    g = f["derailment"]
+    fig, ax = plt.subplots(figsize=(9, 4))
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    wheels = [n for n in g if "y_over_q_mean" in g[n]]
+    for i, n in enumerate(wheels):
+        w = g[n]
+        c = colors[i % len(colors)]
+        ax.plot(w["position"][:], w["y_over_q_mean"][:], color=c, lw=1.0, label=f"{n} (max {_num(w, 'max_y_over_q'):.3f})")
+        nadal = _num(w, "nadal_limit")
+        if nadal == nadal:
+            ax.axhline(nadal, color=c, ls="--", lw=0.8)
+            ax.annotate(f"Nadal {nadal:.2f} ({np.degrees(_num(w, 'flange_angle')):.1f} deg)", (0.01, nadal),
+                        xycoords=("axes fraction", "data"), fontsize=7, color=c, va="bottom")
+    ax.axhline(0.8, color="grey", ls=":", lw=0.8, label="0.8 dynamic limit")
+    ax.set_xlabel("position along the track [m]")
+    ax.set_ylabel("Y/Q, 2 m sliding mean [-]")
+    ax.set_title(f"derailment: {_attr(f, 'source')} (mu = {_num(f, 'mu'):g})", fontsize=9)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    save(fig, "derailment_y_over_q")
+    axles = [n for n in g if "sum_y_mean" in g[n]]
+    if axles:
+        fig, ax = plt.subplots(figsize=(9, 3.5))
+        for i, n in enumerate(axles):
+            a = g[n]
+            c = colors[i % len(colors)]
+            ax.plot(a["sum_y_position"][:], a["sum_y_mean"][:] / 1e3, color=c, lw=1.0, label=n)
+            lim = _num(a, "prudhomme_limit") / 1e3
+            ax.axhline(lim, color=c, ls="--", lw=0.8)
+            ax.axhline(-lim, color=c, ls="--", lw=0.8)
+        ax.set_xlabel("position along the track [m]")
+        ax.set_ylabel("sum Y per axle, 2 m mean [kN]")
+        ax.set_title("Prud'homme limit 0.85 (10 kN + P/3) dashed", fontsize=9)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+        save(fig, "derailment_sum_y")
+
+
+def ramp(f, save):
+    g = f["ramp"]
+    t, v = g["time"][:], g["speed"][:]
+    fig, ax = plt.subplots(figsize=(9, 4))
+    ax.plot(t, g["signal"][:] * 1e3, lw=0.6, label=_attr(g, "signal_name"))
+    ax.plot(t, g["envelope"][:] * 1e3, lw=1.0, color="k", label="envelope")
+    thr = _num(g, "threshold") * 1e3
+    ax.axhline(thr, color="grey", ls=":", lw=0.8, label=f"threshold {thr:g} mm")
+    vd = _num(g, "decay_speed")
+    if vd == vd:
+        td = (_num(g, "speed_initial") - vd) / _num(g, "deceleration")
+        ax.axvline(td, color="r", ls="--", lw=0.9, label=f"dies out at {vd:.2f} m/s = {vd * 3.6:.1f} km/h")
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("lateral displacement [mm]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7, loc="upper right")
+    top = ax.secondary_xaxis("top", functions=(lambda x: (v[0] + (v[-1] - v[0]) * (x - t[0]) / max(t[-1] - t[0], 1e-12)) * 3.6,
+                                               lambda s: t[0] + (s / 3.6 - v[0]) * (t[-1] - t[0]) / (v[-1] - v[0])))
+    top.set_xlabel("speed [km/h]")
+    ax.set_title(f"ramping: {_attr(f, 'scene_name')}, K11 = {_num(g, 'k11'):g}, K22 = {_num(g, 'k22'):g}", fontsize=9)
+    save(fig, "ramp")
+
+
+def bifurcation(f, save):
+    g = f["branch"]
+    v = g["speed"][:]
+    amp = np.atleast_2d(g["amplitude"][:])
+    out = g["outcome"][:].astype(int)
+    names = str(_attr(g, "wheelsets")).split(",")
+    order = np.argsort(v)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for j, n in enumerate(names):
+        # The branch: settled cycles and decayed runs (amplitude 0); unsettled runs are markers.
+        a = np.where(out == 0, 0.0, np.where(out == 1, amp[:, j], np.nan))
+        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"{n} (steady / decayed)")
+    for code, marker in ((2, "^"), (3, "2"), (4, "v")):
+        sel = out == code
+        if sel.any():
+            ax.plot(v[sel] * 3.6, amp[sel, 0] * 1e3, marker, color="k", ms=5, ls="none", label=OUTCOMES[code])
+    lo, hi = _num(g, "bracket_low"), _num(g, "bracket_high")
+    if lo == lo and hi == hi:
+        ax.axvspan(lo * 3.6, hi * 3.6, color="r", alpha=0.25, label=f"fold in [{lo * 3.6:.2f}, {hi * 3.6:.2f}] km/h")
+    hopf = _num(g, "hopf_speed")
+    if hopf == hopf:
+        ax.axvline(hopf * 3.6, color="g", ls="--", lw=0.9, label=f"Hopf (eigenvalues) {hopf * 3.6:.1f} km/h")
+    ax.set_xlabel("speed [km/h]")
+    ax.set_ylabel("limit-cycle amplitude [mm]")
+    ax.set_title(f"bifurcation diagram: {_attr(f, 'scene_name')}, K11 = {_num(g, 'k11'):g}, K22 = {_num(g, 'k22'):g}", fontsize=9)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    save(fig, "bifurcation")
+
+
+def kij_study(f, save):
+    g = f["kij"]
+    k = g["k22"][:]
+    vc = g["critical_speed"][:]
+    hopf = g["hopf_speed"][:]
+    tk, tv = g["thesis_k"][:], g["thesis_critical_speed"][:]
+    ref = vc[np.argmin(np.abs(k - 1.0))] if np.any(np.abs(k - 1.0) < 1e-9) else vc[0]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(k, vc / ref, "o-", label="ferrodyn: nonlinear Vc(K)/Vc(1)")
+    if np.isfinite(hopf).any():
+        ax.plot(k, hopf / ref, "s--", ms=4, label="ferrodyn: Hopf speed / Vc(1)")
+    ax.plot(tk, tv / tv[0], "k^:", label="Toumi 2016 Table 4.1")
+    ax.set_xlabel("reduction factor K [-]")
+    ax.set_ylabel("critical speed ratio [-]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title(f"reduction factors: {_attr(f, 'scene_name')}", fontsize=9)
+    save(fig, "kij_study")
+
+
+def sweep(f, save):
+    g = f["sweep"]
+    v, k11, k22 = g["speed"][:], g["k11"][:], g["k22"][:]
+    amp = np.atleast_2d(g["amplitude"][:])
+    out = g["outcome"][:].astype(int)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for kk in sorted(set(zip(k11, k22)), reverse=True):
+        sel = (k11 == kk[0]) & (k22 == kk[1])
+        order = np.argsort(v[sel])
+        a = np.where(out[sel] == 0, 0.0, amp[sel, 0])
+        ax.plot(v[sel][order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"K = ({kk[0]:g}, {kk[1]:g})")
+    ax.set_xlabel("speed [km/h]")
+    ax.set_ylabel(f"{str(_attr(g, 'wheelsets')).split(',')[0]} amplitude [mm]")
+    ax.set_title(f"sweep from a lateral disturbance: {_attr(f, 'scene_name')}", fontsize=9)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7)
+    save(fig, "sweep")
+
+
+def plot(f, kind, save):
+    {"derailment_assessment": derailment, "ramp": ramp, "bifurcation": bifurcation,
+     "kij_study": kij_study, "sweep": sweep}[kind](f, save)
+    return 0
+
+
+if __name__ == "__main__":
+    print(__doc__, file=sys.stderr)
+    sys.exit(2)
