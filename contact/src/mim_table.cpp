@@ -9,6 +9,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -402,8 +403,20 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
     p.xi_x = -p.xi_x;
     sign_fx = -1.0;
   }
-  // Outside the box: scale the creepage vector down onto it (spin in psi at the query a/b).
-  const double psi = p.spin * mim_table_spin_scale(ratio, spec_.poisson);
+  // Outside the box: scale the creepage vector down onto it (spin in psi at the query a/b, its
+  // scale interpolated linearly in log a/b between the ratio nodes).
+  const AxisWeights wr = axis_weights(log_ratio_, std::log(ratio));
+  double psi_scale = 0.0;
+  {
+    const double lr = std::clamp(std::log(ratio), log_ratio_.front(), log_ratio_.back());
+    const auto it = std::upper_bound(log_ratio_.begin(), log_ratio_.end(), lr);
+    const std::size_t i = std::min<std::size_t>(
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - log_ratio_.begin() - 1, 0)),
+        log_ratio_.size() - 2);
+    const double t = (lr - log_ratio_[i]) / (log_ratio_[i + 1] - log_ratio_[i]);
+    psi_scale = spin_scale_[i] + t * (spin_scale_[i + 1] - spin_scale_[i]);
+  }
+  const double psi = p.spin * psi_scale;
   const double over = std::max({p.xi_x / spec_.xi_x.back(), p.xi_y / spec_.xi_y.back(),
                                 psi / spec_.spin.back(), psi / spec_.spin.front()});
   if (over > 1.0) {
@@ -411,7 +424,6 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
     p.xi_y /= over;
     p.spin /= over;
   }
-  const AxisWeights wr = axis_weights(log_ratio_, std::log(ratio));
   const AxisWeights wx = axis_weights(spec_.xi_x, p.xi_x);
   const AxisWeights wy = axis_weights(spec_.xi_y, p.xi_y);
   MimTableValue v;
