@@ -109,6 +109,10 @@ void BM_fastsim(benchmark::State& s) {
 void BM_fastsim_weighted(benchmark::State& s) {
   run_tangential(s, "fastsim", {{"flexibility", "weighted"}});
 }
+void BM_fastsim_elliptic(benchmark::State& s) {
+  const std::string n = std::to_string(s.range(0));
+  run_tangential(s, "fastsim", {{"mx", n}, {"my", n}, {"bound", "elliptic"}});
+}
 void BM_fastsim_semi_hertz_20_strips(benchmark::State& s) {
   run_tangential(s, "fastsim", {}, true);
 }
@@ -121,6 +125,7 @@ BENCHMARK(BM_chopaya_voco_fit);
 BENCHMARK(BM_polach);
 BENCHMARK(BM_fastsim)->Arg(10)->Arg(20)->Arg(40);
 BENCHMARK(BM_fastsim_weighted);
+BENCHMARK(BM_fastsim_elliptic)->Arg(10)->Arg(20);
 BENCHMARK(BM_fastsim_semi_hertz_20_strips);
 
 }  // namespace

@@ -31,7 +31,7 @@ def main():
             ax.annotate(r["model"], (e, t), fontsize=7, xytext=(3, 3), textcoords="offset points")
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xlabel(f"{title} against fine-grid MIM [mu Fn]")
+        ax.set_xlabel(f"{title} against converged MIM [mu Fn]")
         ax.set_title(title)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("CPU time per evaluation [us]")

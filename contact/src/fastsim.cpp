@@ -3,12 +3,16 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 namespace ferro::contact {
 namespace {
+
+// tau^2 beyond which the adaptive stiffening stays constant (tau = 3: full slip everywhere).
+constexpr double kAdaptiveCap = 9.0;
 
 struct Inverse {
   double f1, f2, f3;  // 1/L1, 1/L2, 1/L3 [Pa/m]
@@ -19,10 +23,29 @@ struct Accumulator {
   double area = 0.0, adhesion_area = 0.0;
 };
 
-// One strip: leading edge at x = xc + l, material flows towards x = xc - l.
+// Pressure shape along a strip, s = (x - xc) / l in [-1, 1].
+inline double bound_shape(TractionBound bound, double s2) {
+  return bound == TractionBound::kParabolic ? 1.0 - s2 : std::sqrt(std::max(0.0, 1.0 - s2));
+}
+
+// Midpoint sum of the shape over mx elements of [-1, 1] times 2/mx, and the exact integral
+// (4/3 parabolic, pi/2 elliptic): their ratio scales the element pressures so that the strip
+// carries its load exactly (the full-slip force is then mu F_n, never above).
+inline double strip_load_correction(TractionBound bound, int mx) {
+  double sum = 0.0;
+  for (int k = 0; k < mx; ++k) {
+    const double s = 1.0 - (k + 0.5) * 2.0 / mx;
+    sum += bound_shape(bound, s * s);
+  }
+  const double exact = bound == TractionBound::kParabolic ? 4.0 / 3.0 : 0.5 * std::numbers::pi;
+  return exact / (sum * 2.0 / mx);
+}
+
+// One strip: leading edge at x = xc + l, material flows towards x = xc - l. ppar: peak of the
+// strip's pressure (already corrected by strip_load_correction).
 inline void strip_sweep(double y, double w, double xc, double l, double ppar, int mx,
-                        const Creepage& cr, const Inverse& inv, double mu, Accumulator& acc,
-                        TractionMap* map) {
+                        TractionBound shape, const Creepage& cr, const Inverse& inv, double mu,
+                        Accumulator& acc, TractionMap* map) {
   const double dx = 2.0 * l / mx;
   const double slip_x = cr.longitudinal * inv.f1 - cr.spin * y * inv.f3;  // d(px)/dx * -1
   const double half_spin = 0.5 * cr.spin * inv.f3;
@@ -37,7 +60,8 @@ inline void strip_sweep(double y, double w, double xc, double l, double ppar, in
     px -= slip_x * d;
     py -= cr.lateral * inv.f2 * d + half_spin * (x_prev * x_prev - x * x);
     const double u = x - xc;
-    const double bound = mu * ppar * (1.0 - u * u * inv_l2);
+    const double pressure = ppar * bound_shape(shape, u * u * inv_l2);
+    const double bound = mu * pressure;
     const double t2 = px * px + py * py;
     bool slipping = false;
     if (t2 > bound * bound) {
@@ -56,7 +80,7 @@ inline void strip_sweep(double y, double w, double xc, double l, double ppar, in
       map->y.push_back(y);
       map->dx.push_back(dx);
       map->dy.push_back(w);
-      map->pressure.push_back(ppar * (1.0 - u * u * inv_l2));
+      map->pressure.push_back(pressure);
       map->traction_x.push_back(px);
       map->traction_y.push_back(py);
       map->slip.push_back(slipping ? 1 : 0);
@@ -98,6 +122,13 @@ TangentialSolution FastsimModel::solve(const TangentialProblem& problem) const {
   const double l3 = kPi * a * a / (4.0 * g * std::sqrt(a * b) * k.c.c23);
   Inverse inv{1.0 / l1, 1.0 / l2, 1.0 / l3};
   const Creepage& cr = problem.creepage;
+  if (options_.flexibility == Flexibility::kAdaptive) {
+    const TangentialSolution lin = k.forces(cr);
+    const double limit = problem.friction * patch.normal_force;
+    const double tau = limit > 0.0 ? std::hypot(lin.force_x, lin.force_y) / limit : 0.0;
+    const double stiff = 1.0 + options_.stiffening * std::min(tau * tau, kAdaptiveCap);
+    inv = Inverse{stiff / l1, stiff / l2, stiff / l3};
+  }
   if (options_.flexibility == Flexibility::kWeighted) {
     const double c = std::sqrt(a * b);
     const double norm = std::sqrt(cr.longitudinal * cr.longitudinal + cr.lateral * cr.lateral +
@@ -111,21 +142,38 @@ TangentialSolution FastsimModel::solve(const TangentialProblem& problem) const {
   const double mu = problem.friction;
   if (problem.map != nullptr) problem.map->clear();
   Accumulator acc;
+  const TractionBound shape = options_.bound;
+  const bool parabolic = shape == TractionBound::kParabolic;
+  const double along = strip_load_correction(shape, options_.mx);
   if (patch.elliptic()) {
     const int my = options_.my;
     const double dy = 2.0 * b / my;
-    const double p_scale = 2.0 * patch.normal_force / (kPi * a * b);  // parabolic pressure
+    // Strip peak pressures p_j = p_scale r_j^e (parabolic: p = 2F/(pi ab)(1 - x^2/a^2 - y^2/b^2),
+    // e = 1; Hertz: p0 = 3F/(2 pi ab), e = 1/2), strip loads p_j l_j * (4/3 or pi/2); their sum
+    // over the strips is scaled to F_n.
+    double p_scale = parabolic ? 2.0 * patch.normal_force / (kPi * a * b)
+                               : 1.5 * patch.normal_force / (kPi * a * b);
+    double load = 0.0;
     for (int j = 0; j < my; ++j) {
       const double y = -b + (j + 0.5) * dy;
       const double r = 1.0 - (y / b) * (y / b);
-      strip_sweep(y, dy, 0.0, a * std::sqrt(r), p_scale * r, options_.mx, cr, inv, mu, acc,
+      const double peak = parabolic ? p_scale * r : p_scale * std::sqrt(r);
+      load += peak * a * std::sqrt(r) * dy * (parabolic ? 4.0 / 3.0 : 0.5 * kPi);
+    }
+    p_scale *= patch.normal_force / load * along;
+    for (int j = 0; j < my; ++j) {
+      const double y = -b + (j + 0.5) * dy;
+      const double r = 1.0 - (y / b) * (y / b);
+      const double peak = parabolic ? p_scale * r : p_scale * std::sqrt(r);
+      strip_sweep(y, dy, 0.0, a * std::sqrt(r), peak, options_.mx, shape, cr, inv, mu, acc,
                   problem.map);
     }
   } else {
     for (const PatchStrip& s : patch.strips) {
       if (!(s.half_length > 0.0)) continue;
-      strip_sweep(s.y, s.width, s.x_center, s.half_length, 3.0 * kPi / 8.0 * s.peak_pressure,
-                  options_.mx, cr, inv, mu, acc, problem.map);
+      const double peak = (parabolic ? 3.0 * kPi / 8.0 : 1.0) * s.peak_pressure * along;
+      strip_sweep(s.y, s.width, s.x_center, s.half_length, peak, options_.mx, shape, cr, inv, mu,
+                  acc, problem.map);
     }
   }
   TangentialSolution out;

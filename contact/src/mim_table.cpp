@@ -8,11 +8,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <random>
 #include <stdexcept>
 #include <thread>
 
@@ -24,7 +26,7 @@ namespace ferro::contact {
 
 namespace {
 
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;  // 2: spin axis in psi = phi* kappa(a/b) / kappa(1)
 
 void check_axis(const std::vector<double>& v, const char* name, bool starts_at_zero,
                 bool positive) {
@@ -117,6 +119,15 @@ Scales scales(double a, double b, double normal_force, double mu, double shear_m
 
 }  // namespace
 
+double mim_table_spin_scale(double ratio, double poisson) {
+  const auto kappa = [&](double r) {
+    const double a = std::sqrt(r), b = 1.0 / std::sqrt(r);  // c = sqrt(ab) = 1
+    const KalkerCoefficients cij = kalker_coefficients_table(a, b, poisson);
+    return std::max(cij.c11 * b, cij.c22 * a) / cij.c23;
+  };
+  return kappa(ratio) / kappa(1.0);
+}
+
 void MimTableSpec::validate() const {
   check_axis(ratio, "ratio", false, true);
   check_axis(xi_x, "xi_x", true, false);
@@ -132,6 +143,27 @@ void MimTableSpec::validate() const {
   if (threads < 1) {
     throw std::invalid_argument(fmt::format("mim table threads: must be >= 1, got {}", threads));
   }
+  if (density < 1 || density > 8) {
+    throw std::invalid_argument(
+        fmt::format("mim table density: must lie in [1, 8], got {}", density));
+  }
+}
+
+MimTableSpec MimTableSpec::densified() const {
+  MimTableSpec out = *this;
+  const auto refine = [&](const std::vector<double>& v) {
+    std::vector<double> r;
+    for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+      for (int k = 0; k < density; ++k) r.push_back(v[i] + (v[i + 1] - v[i]) * k / density);
+    }
+    r.push_back(v.back());
+    return r;
+  };
+  out.xi_x = refine(xi_x);
+  out.xi_y = refine(xi_y);
+  out.spin = refine(spin);
+  out.density = 1;
+  return out;
 }
 
 MimTableSpec MimTableSpec::default_spec() {
@@ -139,12 +171,21 @@ MimTableSpec MimTableSpec::default_spec() {
   for (int k = -2; k <= 2; ++k) s.ratio.push_back(std::pow(5.0, k / 2.0));  // 0.2 ... 5
   s.xi_x = {0.0, 0.3, 0.6, 1.0, 1.5, 2.2, 3.2, 5.0};
   s.xi_y = s.xi_x;
-  const std::vector<double> half = {0.6, 1.4, 2.8, 5.0, 9.0};
+  const std::vector<double> half = {0.25, 0.6, 1.0, 1.6, 2.6, 4.5, 9.0};
   for (auto it = half.rbegin(); it != half.rend(); ++it) s.spin.push_back(-*it);
   s.spin.push_back(0.0);
   for (double v : half) s.spin.push_back(v);
   s.elements = 16;
   return s;
+}
+
+void MimTable::init_axes() {
+  log_ratio_.clear();
+  spin_scale_.clear();
+  for (double r : spec_.ratio) {
+    log_ratio_.push_back(std::log(r));
+    spin_scale_.push_back(mim_table_spin_scale(r, spec_.poisson));
+  }
 }
 
 std::size_t MimTable::index(int ir, int ix, int iy, int is) const {
@@ -157,11 +198,12 @@ MimTableValue MimTable::node(int ir, int ix, int iy, int is) const {
   return {fx_[k], fy_[k], mz_[k]};
 }
 
-MimTable MimTable::build(const MimTableSpec& spec) {
-  spec.validate();
+MimTable MimTable::build(const MimTableSpec& requested) {
+  requested.validate();
+  const MimTableSpec spec = requested.densified();
   MimTable t;
   t.spec_ = spec;
-  for (double r : spec.ratio) t.log_ratio_.push_back(std::log(r));
+  t.init_axes();
   const std::size_t n = spec.ratio.size() * spec.xi_x.size() * spec.xi_y.size() * spec.spin.size();
   t.fx_.assign(n, 0.0);
   t.fy_.assign(n, 0.0);
@@ -192,7 +234,7 @@ MimTable MimTable::build(const MimTableSpec& spec) {
             in.semi_axis_y = b;
             in.normal_force = normal_force;
             in.rolling = mim::RollingInput{spec.xi_x[ix] / sc.kx, spec.xi_y[iy] / sc.ky,
-                                           spec.spin[is] / sc.ks, mu};
+                                           spec.spin[is] / t.spin_scale_[ir] / sc.ks, mu};
             in.body1 = in.body2 = steel;
             in.elements_minor = spec.elements;
             const mim::MimResult r = solver.solve(in);
@@ -256,8 +298,10 @@ MimTable MimTable::read_hdf5(const std::string& path) {
   };
   const double version = attribute("format_version");
   if (version != kFormatVersion) {
-    throw std::invalid_argument(fmt::format("{}: format_version {} (expected {})", path, version,
-                                            kFormatVersion));
+    throw std::invalid_argument(
+        fmt::format("{}: format_version {} (expected {}; rebuild it with `ferrodyn contact "
+                    "mim-table`)",
+                    path, version, kFormatVersion));
   }
   MimTable t;
   t.spec_.poisson = attribute("poisson");
@@ -271,7 +315,7 @@ MimTable MimTable::read_hdf5(const std::string& path) {
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(fmt::format("{}: {}", path, e.what()));
   }
-  for (double r : t.spec_.ratio) t.log_ratio_.push_back(std::log(r));
+  t.init_axes();
   const io::Dims expect = {t.spec_.ratio.size(), t.spec_.xi_x.size(), t.spec_.xi_y.size(),
                            t.spec_.spin.size()};
   for (const char* name : {"f_x", "f_y", "m_z"}) {
@@ -299,20 +343,33 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
     p.xi_x = -p.xi_x;
     sign_fx = -1.0;
   }
-  // Outside the box: scale the creepage vector down onto it.
+  // Outside the box: scale the creepage vector down onto it (spin in psi at the query a/b, its
+  // scale interpolated linearly in log a/b between the ratio nodes).
+  const AxisWeights wr = axis_weights(log_ratio_, std::log(ratio));
+  double psi_scale = 0.0;
+  {
+    const double lr = std::clamp(std::log(ratio), log_ratio_.front(), log_ratio_.back());
+    const auto it = std::upper_bound(log_ratio_.begin(), log_ratio_.end(), lr);
+    const std::size_t i = std::min<std::size_t>(
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - log_ratio_.begin() - 1, 0)),
+        log_ratio_.size() - 2);
+    const double t = (lr - log_ratio_[i]) / (log_ratio_[i + 1] - log_ratio_[i]);
+    psi_scale = spin_scale_[i] + t * (spin_scale_[i + 1] - spin_scale_[i]);
+  }
+  const double psi = p.spin * psi_scale;
   const double over = std::max({p.xi_x / spec_.xi_x.back(), p.xi_y / spec_.xi_y.back(),
-                                p.spin / spec_.spin.back(), p.spin / spec_.spin.front()});
+                                psi / spec_.spin.back(), psi / spec_.spin.front()});
   if (over > 1.0) {
     p.xi_x /= over;
     p.xi_y /= over;
     p.spin /= over;
   }
-  const AxisWeights wr = axis_weights(log_ratio_, std::log(ratio));
   const AxisWeights wx = axis_weights(spec_.xi_x, p.xi_x);
   const AxisWeights wy = axis_weights(spec_.xi_y, p.xi_y);
-  const AxisWeights ws = axis_weights(spec_.spin, p.spin);
   MimTableValue v;
   for (int a = 0; a < wr.count; ++a) {
+    // Spin in each ratio node's own saturation scale.
+    const AxisWeights ws = axis_weights(spec_.spin, p.spin * spin_scale_[wr.first + a]);
     for (int b = 0; b < wx.count; ++b) {
       const double wab = wr.w[a] * wx.w[b];
       if (wab == 0.0) continue;
@@ -332,6 +389,12 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
   v.f_x *= sign_fx;
   v.f_y *= sign_fy;
   v.m_z *= sign_fy;
+  // Coulomb bound: the interpolant may overshoot mu F_n near full slip; |f| <= 1.
+  const double f = std::hypot(v.f_x, v.f_y);
+  if (f > 1.0) {
+    v.f_x /= f;
+    v.f_y /= f;
+  }
   return v;
 }
 
@@ -340,17 +403,15 @@ MimTablePoint MimTable::normalise(const TangentialProblem& problem) const {
   const ContactPatch& patch = *problem.patch;
   const Scales sc = scales(patch.semi_axis_x, patch.semi_axis_y, patch.normal_force,
                            problem.friction, m.shear_modulus, spec_.poisson);
-  return {problem.creepage.longitudinal * sc.kx, problem.creepage.lateral * sc.ky,
-          problem.creepage.spin * sc.ks};
+  // K_ij: the reduced coefficients K_ij C_ij enter the normalisation (linear slopes K_ij C_ij,
+  // the same saturation to mu F_n).
+  const ReductionFactors& k = problem.reduction;
+  return {problem.creepage.longitudinal * sc.kx * k.k11, problem.creepage.lateral * sc.ky * k.k22,
+          problem.creepage.spin * sc.ks * k.k23};
 }
 
 TangentialSolution MimTable::forces(const TangentialProblem& problem) const {
   problem.validate();
-  const ReductionFactors& k = problem.reduction;
-  if (k.k11 != 1.0 || k.k22 != 1.0 || k.k23 != 1.0 || k.k33 != 1.0) {
-    throw std::invalid_argument(
-        "tangential problem.reduction: mim_table takes no K_ij reduction factors (all must be 1)");
-  }
   const CombinedMaterial m = combine(problem.body1, problem.body2);
   if (std::abs(m.poisson - spec_.poisson) > 0.02) {
     throw std::invalid_argument(fmt::format(
@@ -366,6 +427,64 @@ TangentialSolution MimTable::forces(const TangentialProblem& problem) const {
   s.force_y = v.f_y * mu_fn;
   s.moment_z = v.m_z * mu_fn * std::sqrt(patch.semi_axis_x * patch.semi_axis_y);
   return s;
+}
+
+std::vector<MimTableErrorPoint> mim_table_error_map(const MimTable& table, int points,
+                                                    unsigned seed, int threads) {
+  if (points < 1 || threads < 1) {
+    throw std::invalid_argument(fmt::format(
+        "mim table error map: points and threads must be >= 1, got {} and {}", points, threads));
+  }
+  const MimTableSpec& spec = table.spec();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<MimTableErrorPoint> out(static_cast<std::size_t>(points));
+  const double lr0 = std::log(spec.ratio.front()), lr1 = std::log(spec.ratio.back());
+  const double psi_max = std::min(spec.spin.back(), -spec.spin.front());
+  for (MimTableErrorPoint& e : out) {  // drawn in order: the map depends on the seed only
+    e.ratio = std::exp(lr0 + (lr1 - lr0) * unit(rng));
+    e.xi_x = kErrorMapCreepMax * unit(rng);
+    e.xi_y = kErrorMapCreepMax * unit(rng);
+    e.spin = (2.0 * unit(rng) - 1.0) * std::min(psi_max, kErrorMapCreepMax) /
+             mim_table_spin_scale(e.ratio, spec.poisson);
+  }
+  const Material steel = Material::from_young(210.0e9, spec.poisson);
+  const double g = combine(steel, steel).shear_modulus;
+  const double b = 5.0e-3, normal_force = 100.0e3, mu = 0.3;
+  std::atomic<int> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto worker = [&] {
+    mim::HertzMimSolver solver;
+    try {
+      for (int k = next++; k < points; k = next++) {
+        MimTableErrorPoint& e = out[static_cast<std::size_t>(k)];
+        const double a = e.ratio * b;
+        const Scales sc = scales(a, b, normal_force, mu, g, spec.poisson);
+        mim::HertzRollingInput in;
+        in.semi_axis_x = a;
+        in.semi_axis_y = b;
+        in.normal_force = normal_force;
+        in.rolling = mim::RollingInput{e.xi_x / sc.kx, e.xi_y / sc.ky, e.spin / sc.ks, mu};
+        in.body1 = in.body2 = steel;
+        in.elements_minor = spec.elements;
+        const mim::MimResult r = solver.solve(in);
+        e.direct = {r.force_x / sc.s, r.force_y / sc.s, r.moment_z / (sc.s * sc.c)};
+        e.table = table.at(e.ratio, {e.xi_x, e.xi_y, e.spin});
+        e.error = std::hypot(e.table.f_x - e.direct.f_x, e.table.f_y - e.direct.f_y);
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = points;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
+  return out;
 }
 
 TangentialSolution MimTableModel::solve(const TangentialProblem& problem) const {

@@ -106,6 +106,7 @@ mim::MimResult MimTangentialModel::solve_full(const TangentialProblem& problem) 
   in.body1 = problem.body1;
   in.body2 = problem.body2;
   in.elements_minor = options_.elements;
+  in.grid_over_patch = options_.grid_over_patch;
   const std::lock_guard<std::mutex> lock(mutex_);
   return solver_->solve(in);
 }

@@ -141,7 +141,8 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
     return std::make_unique<PolachModel>(o);
   }
   if (name == "fastsim") {
-    check_option_keys(name, options, {"coefficients", "mx", "my", "flexibility"});
+    check_option_keys(name, options,
+                      {"coefficients", "mx", "my", "flexibility", "bound", "stiffening"});
     FastsimOptions o;
     o.source = source;
     o.mx = option_int(options, "mx", o.mx);
@@ -151,16 +152,42 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
       o.flexibility = Flexibility::kThree;
     } else if (flex == "weighted") {
       o.flexibility = Flexibility::kWeighted;
+    } else if (flex == "adaptive") {
+      o.flexibility = Flexibility::kAdaptive;
     } else {
       throw std::invalid_argument(fmt::format(
-          "fastsim option 'flexibility': unknown value '{}'; allowed: three, weighted", flex));
+          "fastsim option 'flexibility': unknown value '{}'; allowed: three, weighted, adaptive",
+          flex));
+    }
+    o.stiffening = option_double(options, "stiffening", o.stiffening);
+    if (!(o.stiffening >= 0.0 && o.stiffening <= 1.0)) {
+      throw std::invalid_argument(
+          fmt::format("fastsim option 'stiffening': must lie in [0, 1], got {}", o.stiffening));
+    }
+    const std::string bound = option_string(options, "bound", "parabolic");
+    if (bound == "parabolic") {
+      o.bound = TractionBound::kParabolic;
+    } else if (bound == "elliptic") {
+      o.bound = TractionBound::kElliptic;
+    } else {
+      throw std::invalid_argument(fmt::format(
+          "fastsim option 'bound': unknown value '{}'; allowed: parabolic, elliptic", bound));
     }
     return std::make_unique<FastsimModel>(o);
   }
   if (name == "mim") {
-    check_option_keys(name, options, {"elements"});
+    check_option_keys(name, options, {"elements", "grid"});
     MimModelOptions o;
     o.elements = option_int(options, "elements", o.elements);
+    const std::string grid = option_string(options, "grid", "minor");
+    if (grid == "minor") {
+      o.grid_over_patch = false;
+    } else if (grid == "patch") {
+      o.grid_over_patch = true;
+    } else {
+      throw std::invalid_argument(
+          fmt::format("mim option 'grid': unknown value '{}'; allowed: minor, patch", grid));
+    }
     return std::make_unique<MimTangentialModel>(o);
   }
   if (name == "mim_table") {

@@ -2,13 +2,19 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <fstream>
 #include <memory>
 #include <string>
+#include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "ferro/contact/mim_table.hpp"
 #include "cli.hpp"
+#include "ferro/contact/io/text_writer.hpp"
 
 namespace ferro::cli {
 
@@ -27,8 +33,22 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
   cmd->add_option("--threads", spec->threads, "build threads")->capture_default_str();
   cmd->add_option("--poisson", spec->poisson, "combined Poisson ratio of the table")
       ->capture_default_str();
-  cmd->callback([&handler, out, spec] {
-    handler = [out, spec] {
+  cmd->add_option("--density", spec->density,
+                  "node density: split every creepage and spin interval into N parts (1-8)")
+      ->capture_default_str();
+  auto map_path = std::make_shared<std::string>();
+  auto map_points = std::make_shared<int>(200);
+  cmd->add_option("--error-map", *map_path,
+                  "CSV of table-versus-direct MIM errors at random points (empty: none)");
+  cmd->add_option("--error-map-points", *map_points, "points of the error map")
+      ->capture_default_str();
+  cmd->callback([&handler, out, spec, map_path, map_points] {
+    handler = [out, spec, map_path, map_points] {
+      spec->validate();
+      if (*map_points < 1) {
+        throw std::invalid_argument(
+            fmt::format("--error-map-points: must be >= 1, got {}", *map_points));
+      }
       if (out->empty()) throw std::invalid_argument("contact mim-table: -o/--output is required");
       const auto t0 = std::chrono::steady_clock::now();
       const contact::MimTable table = contact::MimTable::build(*spec);
@@ -36,8 +56,31 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       fmt::print("wrote {} ({} x {} x {} x {} nodes, {} elements, nu {}) in {:.1f} s\n", *out,
-                 spec->ratio.size(), spec->xi_x.size(), spec->xi_y.size(), spec->spin.size(),
+                 table.spec().ratio.size(), table.spec().xi_x.size(), table.spec().xi_y.size(),
+                 table.spec().spin.size(),
                  spec->elements, spec->poisson, s);
+      if (!map_path->empty()) {
+        std::vector<contact::MimTableErrorPoint> map =
+            contact::mim_table_error_map(table, *map_points, 1, spec->threads);
+        io::TextWriter csv(*map_path);
+        csv.write("ratio,xi_x,xi_y,phi,fx_table,fy_table,fx_mim,fy_mim,error_mu_fn\n");
+        std::vector<double> err;
+        for (const auto& e : map) {
+          csv.print("{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n",
+                             e.ratio, e.xi_x, e.xi_y, e.spin, e.table.f_x, e.table.f_y,
+                             e.direct.f_x, e.direct.f_y, e.error);
+          err.push_back(e.error);
+        }
+        csv.close();
+        std::sort(err.begin(), err.end());
+        double sum = 0.0;
+        for (double v : err) sum += v;
+        fmt::print("error map {} ({} points): table vs direct MIM mean {:.4f}, p95 {:.4f}, max "
+                   "{:.4f} mu Fn\n",
+                   *map_path, err.size(), sum / static_cast<double>(err.size()),
+                   err[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(err.size()))) - 1],
+                   err.back());
+      }
       return kExitOk;
     };
   });

@@ -39,7 +39,7 @@ const fc::MimTable& coarse_table() {
 
 // Interpolated forces against the direct MIM at the table's own grid (12 elements across the
 // short axis), so that only the interpolation error is measured, at 40 seeded random off-node
-// points: a/b in [0.55, 1.9], creepages of any sign with |xi*| <= 3.5, |phi*| <= 5 (micro-slip
+// points: a/b in [0.55, 1.9], creepages of any sign with |xi*| <= 3.5, |psi| <= 5 (micro-slip
 // to full slip). Tolerances kTolTable = 0.06 mu F_n (max) and kTolTableMean = 0.015 mu F_n
 // (mean): with 3 nodes per unit of normalised creepage at the saturation knee the cubic
 // interpolant follows pure and moderately combined creepage to ~1 %, but where lateral creepage
@@ -66,7 +66,10 @@ TEST(mim_table, interpolation_matches_direct_mim_off_nodes) {
     // Pick normalised creepages, convert back with the table's own scaling (linear in xi).
     p.creepage = {1.0, 1.0, 1.0};
     const fc::MimTablePoint unit = table.normalise(p);
-    p.creepage = {3.5 * u(rng) / unit.xi_x, 3.5 * u(rng) / unit.xi_y, 5.0 * u(rng) / unit.spin};
+    // Spin drawn in the table's spin axis units (psi, its saturation scale), |psi| <= 5.
+    const double psi_scale = fc::mim_table_spin_scale(ratio, table.spec().poisson);
+    p.creepage = {3.5 * u(rng) / unit.xi_x, 3.5 * u(rng) / unit.xi_y,
+                  5.0 * u(rng) / psi_scale / unit.spin};
     const fc::TangentialSolution t = model.solve(p);
     const fc::TangentialSolution d = mim.solve(p);
     const double mu_fn = 0.3 * 70.0e3, c = std::sqrt(a * b);
@@ -97,7 +100,9 @@ TEST(mim_table, nodes_exact_and_linear_slope) {
   const fc::MimTable& t = coarse_table();
   const fc::MimTableSpec& s = t.spec();
   for (int ir = 0; ir < 3; ++ir) {
-    const fc::MimTableValue v = t.at(s.ratio[ir], {s.xi_x[2], s.xi_y[3], s.spin[6]});
+    // Spin node psi = phi* x mim_table_spin_scale(a/b).
+    const double phi_node = s.spin[6] / fc::mim_table_spin_scale(s.ratio[ir], s.poisson);
+    const fc::MimTableValue v = t.at(s.ratio[ir], {s.xi_x[2], s.xi_y[3], phi_node});
     const fc::MimTableValue nd = t.node(ir, 2, 3, 6);
     EXPECT_NEAR(v.f_x, nd.f_x, 1e-12);
     EXPECT_NEAR(v.f_y, nd.f_y, 1e-12);

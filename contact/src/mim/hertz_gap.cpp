@@ -63,6 +63,17 @@ Grid grid_for_ellipse(double a, double b, int elements_minor, double margin) {
   return Grid::centred(nx, ny, h, h);
 }
 
+Grid grid_over_ellipse(double a, double b, int elements, double margin) {
+  if (!(a > 0.0) || !(b > 0.0) || elements < 2 || !(margin >= 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "grid_over_ellipse: need semi axes > 0 m, elements >= 2 and margin >= 0, got "
+        "a = {}, b = {}, elements = {}, margin = {}",
+        a, b, elements, margin));
+  }
+  return Grid::centred(elements, elements, 2.0 * a * (1.0 + margin) / elements,
+                       2.0 * b * (1.0 + margin) / elements);
+}
+
 Field quadratic_gap(const Grid& grid, double cx, double cy) {
   return sample(grid, [&](double x, double y) { return cx * x * x + cy * y * y; });
 }

@@ -91,6 +91,7 @@ struct HertzMimSolver::Entry {
   int nx = 0;
   int ny = 0;
   double poisson = 0.0;
+  double aspect = 1.0;  // dy / dx
   std::unique_ptr<InfluenceOperator> op;
 };
 
@@ -104,13 +105,16 @@ MimResult HertzMimSolver::solve(const HertzRollingInput& input) {
   const CombinedMaterial m = combine(input.body1, input.body2);
   const double a = input.semi_axis_x, b = input.semi_axis_y;
   const HertzGap hg = hertz_gap_for_ellipse(a, b, input.normal_force, m.contact_modulus);
-  const Grid grid = grid_for_ellipse(a, b, input.elements_minor);
-  const double h = grid.dx;  // square elements
+  const Grid grid = input.grid_over_patch ? grid_over_ellipse(a, b, input.elements_minor)
+                                          : grid_for_ellipse(a, b, input.elements_minor);
+  const double h = grid.dx;
+  const double aspect = grid.dy / grid.dx;  // 1 for square elements
 
-  // Unit grid and material: lengths in h, stresses in G.
+  // Unit grid and material: lengths in h = dx, stresses in G.
   Entry* entry = nullptr;
   for (auto& e : cache_) {
-    if (e->nx == grid.nx && e->ny == grid.ny && e->poisson == m.poisson) entry = e.get();
+    if (e->nx == grid.nx && e->ny == grid.ny && e->poisson == m.poisson && e->aspect == aspect)
+      entry = e.get();
   }
   if (entry == nullptr) {
     if (cache_.size() >= max_cached_) cache_.erase(cache_.begin());  // oldest first
@@ -118,11 +122,13 @@ MimResult HertzMimSolver::solve(const HertzRollingInput& input) {
     e->nx = grid.nx;
     e->ny = grid.ny;
     e->poisson = m.poisson;
+    e->aspect = aspect;
     CombinedMaterial unit;
     unit.shear_modulus = 1.0;
     unit.poisson = m.poisson;
     unit.contact_modulus = 1.0 / (1.0 - m.poisson);  // E*/G for the pair; not used by the operator
-    e->op = std::make_unique<InfluenceOperator>(Grid::centred(grid.nx, grid.ny, 1.0, 1.0), unit);
+    e->op =
+        std::make_unique<InfluenceOperator>(Grid::centred(grid.nx, grid.ny, 1.0, aspect), unit);
     ++operators_built_;
     entry = e.get();
     cache_.push_back(std::move(e));

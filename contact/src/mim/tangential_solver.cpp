@@ -74,18 +74,31 @@ double norm(const Vec& a) {
   return std::sqrt(dot(a, a));
 }
 
-// The problem v = M tau + q with M = A^tt (sliding) or -(B^tt - A^tt)/h (rolling).
+// The problem v = M tau + q with M = A^tt (sliding) or minus the x-derivative of the
+// displacement (rolling). Rolling: the operator's first-order difference D u_i = (u_{i+1} -
+// u_i) / h (eq. 113) is combined into the second-order upwind (leading-edge side) difference
+// du/dx(x_i) = (-3 u_i + 4 u_{i+1} - u_{i+2}) / (2h) = 1.5 D u_i - 0.5 D u_{i+1}, so that the
+// derivative and the rigid slip are both taken at the element centre to O(h^2) (the first-order
+// difference is centred at x_i + h/2 and leaves an O(h) error in the spin term). The last column
+// (x + 2h outside the grid, in the margin around the patch) keeps the first-order difference.
 class Problem {
  public:
-  Problem(ComplianceOperator& op, bool rolling) : op_(op), rolling_(rolling), n_(op.grid().size()) {}
+  Problem(ComplianceOperator& op, bool rolling)
+      : op_(op), rolling_(rolling), n_(op.grid().size()), nx_(op.grid().nx), ny_(op.grid().ny) {}
   // Full-grid product (vx, vy) = M (tx, ty).
   void apply(const double* tx, const double* ty, double* vx, double* vy) {
     ++matvecs;
     if (rolling_) {
       op_.rolling_difference(tx, ty, vx, vy);
-      for (std::size_t i = 0; i < n_; ++i) {
-        vx[i] = -vx[i];
-        vy[i] = -vy[i];
+      for (int iy = 0; iy < ny_; ++iy) {
+        double* rx = vx + static_cast<std::size_t>(iy) * nx_;
+        double* ry = vy + static_cast<std::size_t>(iy) * nx_;
+        for (int ix = 0; ix + 1 < nx_; ++ix) {  // ascending: D_{i+1} is still unmodified
+          rx[ix] = -(1.5 * rx[ix] - 0.5 * rx[ix + 1]);
+          ry[ix] = -(1.5 * ry[ix] - 0.5 * ry[ix + 1]);
+        }
+        rx[nx_ - 1] = -rx[nx_ - 1];
+        ry[nx_ - 1] = -ry[nx_ - 1];
       }
     } else {
       op_.tangential(tx, ty, vx, vy);
@@ -98,6 +111,7 @@ class Problem {
   ComplianceOperator& op_;
   bool rolling_;
   std::size_t n_;
+  int nx_, ny_;
 };
 
 // Work vectors of GMRES, kept across the Newton steps of one solve (no page faults per call).
@@ -547,7 +561,8 @@ TangentialSolution solve_steady_rolling(ComplianceOperator& op, const Field& pre
                                         const RollingInput& input,
                                         const TangentialSolverOptions& options) {
   input.validate();
-  // w/V = c - (B - A) tau / h with c = (xi_x - y phi, xi_y + x phi) (eqs. 111, 119-120).
+  // w/V = c - (B - A) tau / h with c = (xi_x - y phi, xi_y + x phi) (eqs. 111, 119-120); the
+  // difference is taken at second order (Problem::apply).
   const RigidSlip q = [&](const Grid& g, Field& qx, Field& qy) {
     qx = sample(g, [&](double, double y) { return input.creepage_x - y * input.spin; });
     qy = sample(g, [&](double x, double) { return input.creepage_y + x * input.spin; });

@@ -1,20 +1,28 @@
-// `ferrodyn bench contact`: speed versus error of every tangential model, fine MIM as reference.
+// `ferrodyn bench contact`: speed versus error of every tangential model against converged MIM
+// (grids N x N and 2N x 2N over the patch, Richardson-extrapolated at second order).
 #include "ferro/scenarios/contact_bench.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <mutex>
+#include <numbers>
+#include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include <unistd.h>
 
+#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/mim/mim.hpp"
 #include "ferro/contact/mim_table.hpp"
 #include "ferro/contact/tangential_model.hpp"
 
@@ -27,41 +35,207 @@ namespace {
 constexpr double kPatchScale = 5.0e-3;  // c = sqrt(ab) [m]
 constexpr double kNormalForce = 80.0e3;
 constexpr double kFriction = 0.3;
-
-struct Prepared {
-  fc::ContactPatch patch;
-  fc::Creepage creepage;
-};
+constexpr double kPoisson = 0.28;
+// Two reference values agree when their inputs match to this relative precision (CSV digits).
+constexpr double kInputMatch = 1e-9;
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+fc::Material steel() { return fc::Material::from_young(210.0e9, kPoisson); }
+
+double semi_axis_x(double ratio) { return kPatchScale * std::sqrt(ratio); }
+double semi_axis_y(double ratio) { return kPatchScale / std::sqrt(ratio); }
+
+// Creepages [-, -, 1/m] of a case from its normalised ones (mim_table.hpp units, Kalker C_ij).
+fc::Creepage creepage_of(const ContactBenchCase& c) {
+  const double a = semi_axis_x(c.ratio), b = semi_axis_y(c.ratio);
+  const double g = fc::combine(steel(), steel()).shear_modulus;
+  const fc::KalkerCoefficients cij = fc::kalker_coefficients_table(a, b, kPoisson);
+  const double s = kFriction * kNormalForce;
+  return {c.xi_x * s / (g * a * b * cij.c11), c.xi_y * s / (g * a * b * cij.c22),
+          c.spin * s / (g * a * b * std::sqrt(a * b) * cij.c23)};
+}
 
 }  // namespace
 
 std::vector<ContactBenchCase> contact_bench_cases() {
   std::vector<ContactBenchCase> cases;
   const double ratios[] = {0.2, 0.5, 1.0, 2.0, 5.0};
-  const double magnitudes[] = {0.3, 1.0, 3.0};  // micro-slip, transition, full slip
-  for (double g : ratios) {
-    for (double m : magnitudes) {
-      cases.push_back({g, m, 0.0, 0.0, "x"});
-      cases.push_back({g, 0.0, m, 0.0, "y"});
-      cases.push_back({g, 0.0, 0.0, 2.0 * m, "spin"});
-      cases.push_back({g, 0.7 * m, -0.7 * m, 0.0, "x+y"});
-      cases.push_back({g, 0.0, 0.7 * m, 1.4 * m, "y+spin"});
-      cases.push_back({g, -0.6 * m, 0.5 * m, -1.2 * m, "x+y+spin"});
+  const double spins[] = {0.0, 0.5, 1.0, 2.0};
+  const double magnitudes[] = {0.2, 0.5, 0.8, 1.2, 2.0, 4.0};  // micro-slip ... full slip
+  for (double r : ratios) {
+    for (double s : spins) {
+      const std::string suffix = s > 0.0 ? "+spin" : "";
+      if (s > 0.0) cases.push_back({r, 0.0, 0.0, s, "spin"});
+      for (int d = 0; d <= 6; ++d) {
+        const double angle = d * std::numbers::pi / 6.0;
+        const double cx = d == 3 ? 0.0 : std::cos(angle), sy = d == 6 ? 0.0 : std::sin(angle);
+        const std::string kind = (d == 0 || d == 6 ? "x" : d == 3 ? "y" : "x+y") + suffix;
+        for (double m : magnitudes) cases.push_back({r, m * cx, m * sy, s, kind});
+      }
     }
   }
   return cases;
 }
 
+std::vector<ContactBenchReference> contact_bench_reference(
+    const std::vector<ContactBenchCase>& cases, int elements, int threads) {
+  if (elements < 8 || threads < 1) {
+    throw std::invalid_argument(fmt::format(
+        "bench contact reference: elements >= 8 and threads >= 1 required, got {} and {}",
+        elements, threads));
+  }
+  std::vector<ContactBenchReference> out(cases.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto worker = [&] {
+    fc::mim::HertzMimSolver solver;
+    try {
+      for (std::size_t k = next++; k < cases.size(); k = next++) {
+        const ContactBenchCase& c = cases[k];
+        const fc::Creepage cr = creepage_of(c);
+        fc::mim::HertzRollingInput in;
+        in.semi_axis_x = semi_axis_x(c.ratio);
+        in.semi_axis_y = semi_axis_y(c.ratio);
+        in.normal_force = kNormalForce;
+        in.rolling = {cr.longitudinal, cr.lateral, cr.spin, kFriction};
+        in.body1 = in.body2 = steel();
+        in.grid_over_patch = true;
+        const double s = kFriction * kNormalForce;
+        const double sc = s * kPatchScale;
+        double f[2][3];
+        for (int level = 0; level < 2; ++level) {
+          in.elements_minor = elements << level;
+          const fc::mim::MimResult r = solver.solve(in);
+          if (!r.converged) {
+            throw std::runtime_error(fmt::format(
+                "bench contact reference: MIM {} x {} did not converge at a/b = {}, xi* = ({}, "
+                "{}, {})",
+                in.elements_minor, in.elements_minor, c.ratio, c.xi_x, c.xi_y, c.spin));
+          }
+          f[level][0] = r.force_x / s;
+          f[level][1] = r.force_y / s;
+          f[level][2] = r.moment_z / sc;
+        }
+        ContactBenchReference& ref = out[k];
+        ref.fx_n = f[0][0];
+        ref.fy_n = f[0][1];
+        ref.fx_2n = f[1][0];
+        ref.fy_2n = f[1][1];
+        ref.fx = f[1][0] + (f[1][0] - f[0][0]) / 3.0;
+        ref.fy = f[1][1] + (f[1][1] - f[0][1]) / 3.0;
+        ref.mz = f[1][2] + (f[1][2] - f[0][2]) / 3.0;
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = cases.size();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
+  return out;
+}
+
+bool read_contact_bench_reference(const std::string& path,
+                                  const std::vector<ContactBenchCase>& cases,
+                                  std::vector<ContactBenchReference>& out, int& elements) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::vector<ContactBenchReference> ref;
+  std::string line;
+  int line_no = 0;
+  elements = 0;
+  std::size_t k = 0;
+  const auto same = [](double a, double b) {
+    return std::abs(a - b) <= kInputMatch * std::max(1.0, std::abs(b));
+  };
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty()) continue;
+    if (line[0] == '#') {
+      const auto pos = line.find("elements=");
+      if (pos != std::string::npos) elements = std::stoi(line.substr(pos + 9));
+      continue;
+    }
+    if (line.rfind("ratio", 0) == 0) continue;  // header
+    std::stringstream ss(line);
+    std::string cell;
+    std::vector<double> v;
+    while (std::getline(ss, cell, ',')) {
+      try {
+        v.push_back(std::stod(cell));
+      } catch (const std::exception&) {
+        throw std::invalid_argument(
+            fmt::format("{}:{}: '{}' is not a number", path, line_no, cell));
+      }
+    }
+    if (v.size() != 11) {
+      throw std::invalid_argument(
+          fmt::format("{}:{}: expected 11 columns, got {}", path, line_no, v.size()));
+    }
+    if (k >= cases.size() || !same(v[0], cases[k].ratio) || !same(v[1], cases[k].xi_x) ||
+        !same(v[2], cases[k].xi_y) || !same(v[3], cases[k].spin)) {
+      return false;  // another case set
+    }
+    ref.push_back({v[4], v[5], v[6], v[7], v[8], v[9], v[10]});
+    ++k;
+  }
+  if (k != cases.size() || elements < 8) return false;
+  out = std::move(ref);
+  return true;
+}
+
+void write_contact_bench_reference(const std::string& path,
+                                   const std::vector<ContactBenchCase>& cases,
+                                   const std::vector<ContactBenchReference>& ref, int elements) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path));
+  out << fmt::format(
+      "# ferrodyn bench contact reference: MIM grids N x N and 2N x 2N over the patch, "
+      "elements={}\n# forces F = F_2N + (F_2N - F_N)/3 in mu F_n, moment in mu F_n sqrt(ab); "
+      "inputs: a/b, normalised xi_x*, xi_y*, phi* (contact/mim_table.hpp units)\n",
+      elements);
+  out << "ratio,xi_x,xi_y,spin,fx,fy,mz,fx_n,fy_n,fx_2n,fy_2n\n";
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const ContactBenchCase& c = cases[k];
+    const ContactBenchReference& r = ref[k];
+    out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
+                       "{:.9g}\n",
+                       c.ratio, c.xi_x, c.xi_y, c.spin, r.fx, r.fy, r.mz, r.fx_n, r.fy_n, r.fx_2n,
+                       r.fy_2n);
+  }
+  if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
+}
+
 ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
+  ContactBenchResult result;
   std::vector<ContactBenchCase> cases = contact_bench_cases();
-  if (opt.quick) {
+  if (opt.quick) {  // 15 cases spread over the ratios, spins, directions and magnitudes
     std::vector<ContactBenchCase> sub;
-    for (std::size_t k = 0; k < cases.size(); k += 6) sub.push_back(cases[k + (k / 6) % 6]);
+    for (std::size_t k = 0; k < 15; ++k) sub.push_back(cases[(k * 571 + 13) % cases.size()]);
     cases = sub;
   }
-  const fc::Material steel = fc::Material::from_young(210.0e9, 0.28);
+  result.cases = cases;
+
+  // Reference: from the file when it holds this case set, else computed (and cached).
+  const int ref_elements = opt.quick ? 12 : opt.reference_elements;
+  int file_elements = 0;
+  if (!opt.reference.empty() && !opt.quick &&
+      read_contact_bench_reference(opt.reference, cases, result.reference, file_elements)) {
+    result.reference_from_file = true;
+    result.reference_elements = file_elements;
+  } else {
+    result.reference = contact_bench_reference(cases, ref_elements, opt.threads);
+    result.reference_elements = ref_elements;
+    if (!opt.reference.empty() && !opt.quick) {
+      write_contact_bench_reference(opt.reference, cases, result.reference, ref_elements);
+    }
+  }
 
   // mim_table: given or built (default spec) into a temporary file.
   std::string table_path = opt.table;
@@ -74,30 +248,29 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
       spec.spin = {-9.0, -3.0, -1.0, 0.0, 1.0, 3.0, 9.0};
       spec.elements = 8;
     }
-    spec.threads = 2;
+    spec.threads = std::max(1, opt.threads);
     table_path = (std::filesystem::temp_directory_path() /
                   fmt::format("ferrodyn_bench_mim_table_{}.h5", static_cast<long>(::getpid())))
                      .string();
     fc::MimTable::build(spec).write_hdf5(table_path);
   }
 
-  // Problems (creepages from the normalised ones with the table's scaling, Kalker C_ij).
-  const fc::MimTable scaling = fc::MimTable::read_hdf5(table_path);
-  std::vector<Prepared> prepared(cases.size());
+  std::vector<fc::ContactPatch> patches(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    const double a = kPatchScale * std::sqrt(cases[k].ratio), b = kPatchScale / std::sqrt(cases[k].ratio);
-    prepared[k].patch = fc::elliptic_patch(a, b, kNormalForce);
+    patches[k] = fc::elliptic_patch(semi_axis_x(cases[k].ratio), semi_axis_y(cases[k].ratio),
+                                    kNormalForce);
   }
-  const auto problem = [&](std::size_t k) {
-    fc::TangentialProblem p;
-    p.patch = &prepared[k].patch;
+  // Problems prepared once: the timed loops contain the model evaluations only.
+  const fc::Material mat = steel();
+  std::vector<fc::TangentialProblem> problems(cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    fc::TangentialProblem& p = problems[k];
+    p.patch = &patches[k];
     p.friction = kFriction;
-    p.body1 = p.body2 = steel;
-    p.creepage = {1.0, 1.0, 1.0};
-    const fc::MimTablePoint unit = scaling.normalise(p);
-    p.creepage = {cases[k].xi_x / unit.xi_x, cases[k].xi_y / unit.xi_y, cases[k].spin / unit.spin};
-    return p;
-  };
+    p.body1 = p.body2 = mat;
+    p.creepage = creepage_of(cases[k]);
+  }
+  const auto problem = [&](std::size_t k) -> const fc::TangentialProblem& { return problems[k]; };
 
   struct Entry {
     std::string label, name;
@@ -110,31 +283,26 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
       {"shen_hedrick_elkins", "shen_hedrick_elkins", {}},
       {"chopaya", "chopaya", {}},
       {"polach", "polach", {}},
-      {"fastsim 10x10", "fastsim", {{"mx", "10"}, {"my", "10"}}},
       {"fastsim 20x20", "fastsim", {{"mx", "20"}, {"my", "20"}}},
       {"fastsim 50x50", "fastsim", {{"mx", "50"}, {"my", "50"}}},
-      {"fastsim 100x100", "fastsim", {{"mx", "100"}, {"my", "100"}}},
+      {"fastsim 20x20 elliptic", "fastsim", {{"mx", "20"}, {"my", "20"}, {"bound", "elliptic"}}},
+      {"fastsim 10x10 adaptive", "fastsim", {{"mx", "10"}, {"my", "10"}, {"flexibility", "adaptive"}}},
+      {"fastsim 20x20 adaptive", "fastsim", {{"mx", "20"}, {"my", "20"}, {"flexibility", "adaptive"}}},
+      {"fastsim 50x50 adaptive", "fastsim", {{"mx", "50"}, {"my", "50"}, {"flexibility", "adaptive"}}},
       {"mim_table", "mim_table", {{"table", table_path}}},
-      {"mim 8", "mim", {{"elements", "8"}}},
-      {"mim 12", "mim", {{"elements", "12"}}},
-      {"mim 16", "mim", {{"elements", "16"}}},
-      {"mim 24", "mim", {{"elements", "24"}}},
+      {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
+      {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},
   };
-  const int ref_elements = opt.quick ? 16 : opt.reference_elements;
-  models.push_back({fmt::format("mim {} (reference)", ref_elements), "mim",
-                    {{"elements", std::to_string(ref_elements)}}});
 
-  // Forces of every model (first pass, also warms caches), then timing passes.
-  std::vector<std::vector<fc::TangentialSolution>> forces(models.size());
-  std::vector<double> us(models.size());
-  for (std::size_t m = 0; m < models.size(); ++m) {
-    const auto model = fc::make_tangential_model(models[m].name, models[m].options);
-    const bool reference = m + 1 == models.size();
+  const double s = kFriction * kNormalForce;
+  for (const Entry& e : models) {
+    const auto model = fc::make_tangential_model(e.name, e.options);
+    std::vector<fc::TangentialSolution> forces;
     double t0 = cpu_seconds();
-    for (std::size_t k = 0; k < cases.size(); ++k) forces[m].push_back(model->solve(problem(k)));
+    for (std::size_t k = 0; k < cases.size(); ++k) forces.push_back(model->solve(problem(k)));
     double elapsed = cpu_seconds() - t0;
     long evaluations = static_cast<long>(cases.size());
-    if (!reference) {  // timed passes with warm caches
+    if (elapsed < opt.min_time_s) {  // timed passes with warm caches
       evaluations = 0;
       t0 = cpu_seconds();
       do {
@@ -143,42 +311,47 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
         elapsed = cpu_seconds() - t0;
       } while (elapsed < opt.min_time_s);
     }
-    us[m] = 1e6 * elapsed / static_cast<double>(evaluations);
-  }
-  if (opt.table.empty()) std::filesystem::remove(table_path);
-
-  ContactBenchResult result;
-  result.cases = static_cast<int>(cases.size());
-  const auto& ref = forces.back();
-  for (std::size_t m = 0; m < models.size(); ++m) {
-    std::vector<double> err;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      err.push_back(std::hypot(forces[m][k].force_x - ref[k].force_x,
-                               forces[m][k].force_y - ref[k].force_y) /
-                    (kFriction * kNormalForce));
-    }
-    std::sort(err.begin(), err.end());
     ContactBenchRow row;
-    row.label = models[m].label;
-    row.us_per_eval = us[m];
+    row.label = e.label;
+    row.us_per_eval = 1e6 * elapsed / static_cast<double>(evaluations);
+    std::vector<double> err;
+    double sum_spin = 0.0, sum_plain = 0.0, sum_mz = 0.0;
+    int n_spin = 0, n_plain = 0;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      const double fx = forces[k].force_x / s, fy = forces[k].force_y / s;
+      const double ex = std::hypot(fx - result.reference[k].fx, fy - result.reference[k].fy);
+      err.push_back(ex);
+      (cases[k].spin != 0.0 ? sum_spin : sum_plain) += ex;
+      (cases[k].spin != 0.0 ? n_spin : n_plain) += 1;
+      sum_mz += std::abs(forces[k].moment_z / (s * kPatchScale) - result.reference[k].mz);
+      row.max_force = std::max(row.max_force, std::hypot(fx, fy));
+    }
     double sum = 0.0;
-    for (double e : err) sum += e;
+    for (double v : err) sum += v;
+    std::sort(err.begin(), err.end());
     row.mean_error = sum / static_cast<double>(err.size());
-    row.p95_error = err[static_cast<std::size_t>(std::ceil(0.95 * err.size())) - 1];
+    row.p95_error = err[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(err.size()))) - 1];
     row.max_error = err.back();
+    row.mean_no_spin = n_plain > 0 ? sum_plain / n_plain : 0.0;
+    row.mean_spin = n_spin > 0 ? sum_spin / n_spin : 0.0;
+    row.mz_mean_error = sum_mz / static_cast<double>(cases.size());
     result.rows.push_back(row);
   }
+  if (opt.table.empty()) std::filesystem::remove(table_path);
   return result;
 }
 
 void write_contact_bench_csv(const ContactBenchResult& result, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path));
-  out << "model,us_per_eval,mean_error_mu_fn,p95_error_mu_fn,max_error_mu_fn\n";
+  out << "model,us_per_eval,mean_error_mu_fn,p95_error_mu_fn,max_error_mu_fn,mean_no_spin,"
+         "mean_spin,mz_mean_error,max_force_mu_fn\n";
   for (const auto& r : result.rows) {
-    out << fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.label, r.us_per_eval, r.mean_error,
-                       r.p95_error, r.max_error);
+    out << fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.label,
+                       r.us_per_eval, r.mean_error, r.p95_error, r.max_error, r.mean_no_spin,
+                       r.mean_spin, r.mz_mean_error, r.max_force);
   }
+  if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
 }
 
 }  // namespace ferro::scenarios

@@ -12,7 +12,14 @@
 // f_x = -xi_x*), and saturation starts near 1. Symmetries of the Hertzian problem (reversal of
 // all creepages negates the forces; the y-mirror maps (xi_y, phi) -> (-xi_y, -phi) and
 // (f_y, m_z) -> (-f_y, -m_z)) give f_x(-xi_x) = -f_x, f_y(-xi_x) = f_y, m_z(-xi_x) = m_z, so
-// the table stores xi_x* >= 0 and xi_y* >= 0 only. HDF5 layout: docs/OUTPUT.md.
+// the table stores xi_x* >= 0 and xi_y* >= 0 only. HDF5 layout: docs/OUTPUT.md
+// (format_version 2: the spin axis holds psi = phi* kappa(a/b) / kappa(1), see
+// mim_table_spin_scale, so that every a/b saturates at about the same psi: at a/b = 0.2 the
+// force saturates by phi* ~ 0.25, at a/b = 1 near phi* ~ 1).
+// The interpolated force is bounded by Coulomb: |(f_x, f_y)| <= 1.
+// K_ij reduction factors enter through the normalisation: xi_x* = G a b K11 C11 xi_x / s etc.
+// (the linear slopes become K_ij C_ij as in the other models, the full-slip limit stays mu F_n;
+// the shape of the transition is the full theory's, stretched along each creepage axis).
 //
 // References: Toumi (2016) chapter 2 (MIM), eqs. (38)-(40) (signs, C_ij), annex A.2; Kalker,
 // "Three-dimensional elastic bodies in rolling contact" (1990) ch. 2 (normalisation).
@@ -33,14 +40,24 @@ struct MimTableSpec {
   std::vector<double> ratio;  ///< a/b nodes [-], increasing, > 0 (interpolated in log a/b)
   std::vector<double> xi_x;   ///< xi_x* nodes, increasing, first 0 [-]
   std::vector<double> xi_y;   ///< xi_y* nodes, increasing, first 0 [-]
-  std::vector<double> spin;   ///< phi* nodes, increasing (negative and positive) [-]
+  std::vector<double> spin;   ///< psi nodes (spin in its saturation scale), increasing [-]
   double poisson = 0.28;      ///< combined nu of the table [-]
   int elements = 20;          ///< MIM elements across the shorter axis [-]
   int threads = 1;            ///< build threads (one MIM solver each)
+  /// Node density: each interval of xi_x, xi_y and spin is split into `density` equal parts
+  /// before the build (1 = the nodes as given) [-].
+  int density = 1;
   void validate() const;
-  /// Default table: 5 ratios 0.2 ... 5 (log-spaced), 8 x 8 x 11 creepage nodes, 16 elements.
+  /// The spec with the density applied (density 1).
+  [[nodiscard]] MimTableSpec densified() const;
+  /// Default table: 5 ratios 0.2 ... 5 (log-spaced), 8 x 8 x 15 creepage nodes, 16 elements.
   static MimTableSpec default_spec();
 };
+
+/// Spin saturation scale kappa(a/b) / kappa(1), kappa = max(C11 b, C22 a) / (sqrt(ab) C23): the
+/// largest rigid slip of the spin across the patch (phi b along x, phi a along y) in the linear
+/// units of that direction, per unit phi*. Table spin nodes are psi = phi* times this factor.
+[[nodiscard]] double mim_table_spin_scale(double ratio, double poisson);
 
 /// Normalised creepages/forces of one evaluation (see the file comment).
 struct MimTablePoint {
@@ -74,8 +91,29 @@ class MimTable {
   MimTableSpec spec_;
   std::vector<double> fx_, fy_, mz_;  ///< [ratio][xi_x][xi_y][spin]
   std::vector<double> log_ratio_;     ///< log of spec_.ratio
+  std::vector<double> spin_scale_;    ///< mim_table_spin_scale at each ratio node
+  void init_axes();
   [[nodiscard]] std::size_t index(int ir, int ix, int iy, int is) const;
 };
+
+/// One point of the table-versus-direct error map (normalised units of the file comment).
+struct MimTableErrorPoint {
+  double ratio = 0.0;                      ///< a/b [-]
+  double xi_x = 0.0, xi_y = 0.0, spin = 0.0;  ///< xi_x*, xi_y*, phi* [-]
+  MimTableValue table;                     ///< interpolated
+  MimTableValue direct;                    ///< MIM on the table's grid
+  double error = 0.0;                      ///< |f_table - f_direct| (x, y) [mu F_n]
+};
+
+/// Largest xi_x*, xi_y* and |psi| drawn by the error map (the transition and the onset of full
+/// slip, where interpolation is hardest).
+constexpr double kErrorMapCreepMax = 3.0;
+
+/// Table against direct MIM (same elements) at `points` seeded random points: a/b log-uniform
+/// over the table, xi_x*, xi_y* uniform in [0, kErrorMapCreepMax], psi uniform in +-3.
+[[nodiscard]] std::vector<MimTableErrorPoint> mim_table_error_map(const MimTable& table,
+                                                                  int points, unsigned seed = 1,
+                                                                  int threads = 1);
 
 /// Tangential model "mim_table": option "table" (HDF5 path; default $FERRO_MIM_TABLE).
 class MimTableModel final : public TangentialModel {

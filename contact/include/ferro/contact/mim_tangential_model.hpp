@@ -29,6 +29,10 @@ struct MimResult;
 
 struct MimModelOptions {
   int elements = 30;  ///< elements across the shorter extent of the patch [-] (>= 6)
+  /// Elliptic patches: false = `elements` square elements across the shorter axis (the grid
+  /// grows to elements x 5 elements at a/b = 5); true = `elements` x `elements` rectangular
+  /// elements over the patch (dx/dy = a/b), the same cost at every a/b.
+  bool grid_over_patch = false;
   void validate() const;
 };
 

@@ -14,8 +14,14 @@
 //   problem's friction, A = friction_ratio (mu_inf/mu0), B = friction_decay [s/m].
 // With k_A = k_S = 1 the initial slopes equal Kalker's linear theory (times K_ij); in general
 // they are (k_A + k_S)/2 of it. The falling branch of traction curves comes from A < 1, B > 0.
-// Known deviations: s = sqrt(xi_x^2 + s_yc^2) uses the spin-corrected lateral creepage; M_z is
-// Kalker's linear moment scaled by F/F_linear (the model gives none).
+// Known deviations: s = sqrt(xi_x^2 + s_yc^2) uses the spin-corrected lateral creepage; M_z (the
+// model gives none) is the coupling term of Kalker's linear moment scaled by F/F_linear plus the
+// saturated spin moment of saturation_laws.hpp. Guard where the published spin term fails: with
+// the spin opposing s_y and |phi a| > |s_y| (s_y + phi a changes sign, s_c becomes small and
+// F_yS alone exceeds mu Q: at a/b = 5 it gives F_y = -0.77 mu Q where the full theory gives
+// +0.08), the forces and moment are FASTSIM's (10 x 10, three flexibilities, same K_ij, the
+// friction of the speed law at the slip speed V |(s_x, s_y)|). The sum of creep and spin forces is bounded by
+// mu Q.
 
 #include "ferro/contact/tangential_model.hpp"
 

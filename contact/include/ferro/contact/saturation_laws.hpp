@@ -10,10 +10,17 @@
 //   shen_hedrick_elkins  the same cubic on the linear force including spin
 //   chopaya            F_t/(mu F_n) = 1 - exp(-xi_t)                        (eqs. 52/155)
 // The saturated force keeps the direction of the linear force.
-// Known deviations: M_z is the linear-theory moment scaled by the same factor F_t/F_t,linear
-// (none of these laws defines a spin moment); vermeulen_johnson ignores spin altogether, so its
-// moment is only the C23 xi_y coupling term, scaled. For non-elliptic patches the equivalent
-// ellipse a, b is used.
+// Spin moment (none of these laws defines one): M_z = the coupling term G (ab)^1.5 C23 xi_y scaled
+// by the force factor F_t/F_t,linear, plus the spin term -G (ab)^2 C33 phi saturated on its own
+// full-slip limit (saturated_spin_moment): M_s,full = mu F_n (3/32) P(a, b), P the perimeter of
+// the ellipse (the moment of Coulomb tractions mu p circling the centre of a Hertzian patch,
+// mu F_n 3 pi a / 16 on a circle), with the cubic 1 - (1 - t/3)^3 of t = |M_s,lin| / M_s,full,
+// times sqrt(1 - u^2), u = the law's force fraction for xi_x, xi_y alone (full slip under
+// creepage leaves no spin moment).
+// Known deviations: the spin-moment saturation is an approximation of this library (no published
+// law defines one), checked against MIM in `ferrodyn bench contact` (M_z column); vermeulen_johnson ignores spin
+// altogether, so its moment is only the C23 xi_y coupling term, scaled. For non-elliptic patches
+// the equivalent ellipse a, b is used.
 
 #include "ferro/contact/tangential_model.hpp"
 
@@ -23,6 +30,18 @@ enum class SaturationLaw { kNone, kLinear, kVermeulenJohnson, kShenHedrickElkins
 
 /// F_t/(mu F_n) as a function of the reduced creepage xi_t >= 0.
 [[nodiscard]] double saturation_ratio(SaturationLaw law, double reduced_creepage);
+
+/// Full-slip spin moment of a Hertzian patch a x b: mu F_n (3/32) x perimeter of the ellipse [N m].
+[[nodiscard]] double full_slip_spin_moment(double semi_axis_x, double semi_axis_y, double mu_fn);
+
+/// M_z of the linear theory with its spin term -G (ab)^2 C33 phi saturated on
+/// full_slip_spin_moment and reduced by sqrt(1 - u^2), u = creep_utilisation (the model's
+/// |F_t| / (mu F_n) for the creepages xi_x, xi_y alone: a patch in full slip under creepage
+/// carries no spin moment), and its coupling term G (ab)^1.5 C23 xi_y scaled by force_factor
+/// (F_t/F_t,linear of the model) [N m].
+[[nodiscard]] double saturated_spin_moment(const LinearCreepStiffness& k, const Creepage& creepage,
+                                           double force_factor, double mu_fn,
+                                           double creep_utilisation);
 
 class SaturatedCreepModel final : public TangentialModel {
  public:

@@ -78,7 +78,10 @@ class TangentialModel {
 /// Creates a model. Common option: "coefficients" = kalker_table (default) | voco_fit.
 /// polach: "k_a", "k_s" (default 1), "friction_ratio" (A, default 1), "friction_decay" (B [s/m],
 /// default 0). fastsim: "mx", "my" (default 20, 20),
-/// "flexibility" = three (default) | weighted. mim: "elements" (default 30).
+/// "flexibility" = three (default) | weighted | adaptive, "stiffening" (adaptive, default 0.05),
+/// "bound" = parabolic (default) | elliptic.
+/// mim: "elements" (default 30), "grid" = minor (default: N square elements across the shorter
+/// axis, so N x 5N at a/b = 5) | patch (N x N rectangular elements over the ellipse).
 /// mim_table: "table" (HDF5 path, default $FERRO_MIM_TABLE). Unknown names/options throw
 /// std::invalid_argument listing the allowed values.
 [[nodiscard]] std::unique_ptr<TangentialModel> make_tangential_model(

@@ -1,6 +1,6 @@
 #pragma once
 // Speed-versus-error report of the tangential (creep-force) models: every model over a fixed set
-// of Hertzian cases, against fine-grid MIM (`ferrodyn bench contact`).
+// of Hertzian cases, against converged MIM (`ferrodyn bench contact`).
 
 #include <string>
 #include <vector>
@@ -9,41 +9,75 @@ namespace ferro::scenarios {
 
 /// One Hertzian rolling case: semi-axes from a/b at c = sqrt(ab) = 5 mm, F_n = 80 kN,
 /// mu = 0.3, steel (E = 210 GPa, nu = 0.28); creepages given in the normalised units of
-/// contact/mim_table.hpp (1 = where Kalker's linear force reaches mu F_n along that axis).
+/// contact/mim_table.hpp (1 = where Kalker's linear force reaches mu F_n along that axis; spin
+/// phi* = G c^3 C23 phi / (mu F_n)).
 struct ContactBenchCase {
-  double ratio = 1.0;                            ///< a/b [-]
-  double xi_x = 0.0, xi_y = 0.0, spin = 0.0;     ///< normalised creepages [-]
-  std::string kind;                              ///< "x", "y", "spin", "x+y", "y+spin", "x+y+spin"
+  double ratio = 1.0;                         ///< a/b [-]
+  double xi_x = 0.0, xi_y = 0.0, spin = 0.0;  ///< normalised creepages [-]
+  std::string kind;  ///< "x", "y", "x+y" (creepage direction), "+spin" appended, or "spin"
 };
 
-/// The fixed case set: a/b in {0.2, 0.5, 1, 2, 5} x 6 creepage kinds x 3 magnitudes (micro-slip,
-/// transition, full slip) = 90 cases.
+/// The fixed case set: a/b in {0.2, 0.5, 1, 2, 5} x normalised spin in {0, 0.5, 1, 2} x seven
+/// creepage directions (0, 30, ..., 180 deg in the (xi_x*, xi_y*) plane) x magnitudes {0.2, 0.5,
+/// 0.8, 1.2, 2, 4} (micro-slip to full slip), plus pure spin at each spin level: 855 cases.
 [[nodiscard]] std::vector<ContactBenchCase> contact_bench_cases();
 
+/// Reference value of one case: converged MIM in units of mu F_n (forces) and mu F_n c (moment).
+struct ContactBenchReference {
+  double fx = 0.0, fy = 0.0, mz = 0.0;  ///< Richardson-extrapolated
+  double fx_n = 0.0, fy_n = 0.0;        ///< on the N x N grid over the patch
+  double fx_2n = 0.0, fy_2n = 0.0;      ///< on the 2N x 2N grid
+};
+
 struct ContactBenchOptions {
-  int reference_elements = 48;  ///< fine MIM grid (elements across the shorter axis)
+  int reference_elements = 40;  ///< reference MIM: N (grids N x N and 2N x 2N over the patch)
+  std::string reference;        ///< reference CSV: read if it matches the case set, else written
   std::string table;            ///< mim_table HDF5 file; empty: build the default table
   double min_time_s = 0.2;      ///< timing: repeat the case set until this much time passed
-  bool quick = false;           ///< every 6th case and a coarse reference (smoke test)
+  int threads = 2;              ///< threads of the reference computation
+  bool quick = false;           ///< 15 cases, coarse reference and table (smoke test)
 };
 
 struct ContactBenchRow {
-  std::string label;          ///< model and options
-  double us_per_eval = 0.0;   ///< CPU time per evaluation [us]
-  double mean_error = 0.0;    ///< |F_t - F_t,ref| / (mu F_n), mean over the cases
-  double p95_error = 0.0;     ///< 95th percentile
-  double max_error = 0.0;     ///< maximum
+  std::string label;            ///< model and options
+  double us_per_eval = 0.0;     ///< CPU time per evaluation [us]
+  double mean_error = 0.0;      ///< |F_t - F_t,ref| / (mu F_n), mean over the cases
+  double p95_error = 0.0;       ///< 95th percentile
+  double max_error = 0.0;       ///< maximum
+  double mean_no_spin = 0.0;    ///< mean over the cases without spin
+  double mean_spin = 0.0;       ///< mean over the cases with spin
+  double mz_mean_error = 0.0;   ///< |M_z - M_z,ref| / (mu F_n c), mean
+  double max_force = 0.0;       ///< largest |F_t| / (mu F_n) returned (Coulomb: <= 1)
 };
 
 struct ContactBenchResult {
-  std::vector<ContactBenchRow> rows;  ///< the reference is the last row (error 0)
-  int cases = 0;
+  std::vector<ContactBenchRow> rows;
+  std::vector<ContactBenchCase> cases;
+  std::vector<ContactBenchReference> reference;
+  int reference_elements = 0;
+  bool reference_from_file = false;
 };
 
 /// Runs every model over the cases. Throws std::runtime_error when a model fails.
 [[nodiscard]] ContactBenchResult run_contact_bench(const ContactBenchOptions& options);
 
-/// Writes the rows as CSV (label, us_per_eval, mean, p95, max).
+/// Converged-MIM reference of the cases: MIM on N x N and 2N x 2N grids over the patch, the
+/// forces extrapolated as second order (F = F_2N + (F_2N - F_N) / 3).
+[[nodiscard]] std::vector<ContactBenchReference> contact_bench_reference(
+    const std::vector<ContactBenchCase>& cases, int elements, int threads);
+
+/// Reference CSV I/O (ratio, xi_x, xi_y, spin, fx, fy, mz, fx_n, fy_n, fx_2n, fy_2n; '#' lines
+/// are comments; the first comment names N). read returns false when the file is missing or its
+/// cases differ from `cases`.
+bool read_contact_bench_reference(const std::string& path,
+                                  const std::vector<ContactBenchCase>& cases,
+                                  std::vector<ContactBenchReference>& out, int& elements);
+void write_contact_bench_reference(const std::string& path,
+                                   const std::vector<ContactBenchCase>& cases,
+                                   const std::vector<ContactBenchReference>& ref, int elements);
+
+/// Writes the rows as CSV (label, us_per_eval, mean, p95, max, mean without / with spin, M_z mean,
+/// largest force).
 void write_contact_bench_csv(const ContactBenchResult& result, const std::string& path);
 
 }  // namespace ferro::scenarios

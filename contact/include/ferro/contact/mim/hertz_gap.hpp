@@ -33,6 +33,12 @@ struct HertzGap {
 [[nodiscard]] Grid grid_for_ellipse(double semi_axis_x, double semi_axis_y, int elements_minor,
                                     double margin = 0.05);
 
+/// Grid sized to the patch: `elements` x `elements` elements over the ellipse a x b with the
+/// same relative margin (dx = 2a (1 + margin) / elements, dy = 2b (1 + margin) / elements, so
+/// the elements are rectangular with dx / dy = a / b).
+[[nodiscard]] Grid grid_over_ellipse(double semi_axis_x, double semi_axis_y, int elements,
+                                     double margin = 0.05);
+
 /// Samples z = A x^2 + B y^2 on the grid.
 [[nodiscard]] Field quadratic_gap(const Grid& grid, double curvature_x, double curvature_y);
 

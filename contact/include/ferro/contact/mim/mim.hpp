@@ -74,6 +74,10 @@ struct HertzRollingInput {
   Material body1;
   Material body2;
   int elements_minor = 40;  ///< elements across the shorter axis of the ellipse [-]
+  /// false: `elements_minor` square elements across the shorter axis (N x N a/b elements at
+  /// a/b >= 1); true: `elements_minor` x `elements_minor` rectangular elements over the patch
+  /// (grid_over_ellipse), the same resolution of each axis at every a/b.
+  bool grid_over_patch = false;
   void validate(const std::string& where = "HertzRollingInput") const;
 };
 

@@ -17,6 +17,11 @@
 // leading edge). Sets are updated (stick -> slip when
 // |tau| > mu p_n as eq. 107, slip -> stick when w turns along tau) until the stick velocity and
 // slip direction residuals are below tolerance.
+// Steady rolling: the thesis's difference (B^tt - A^tt) tau / h (eq. 113) is first order at the
+// element centre (it is centred half an element downstream, which leaves an O(h) error in the
+// spin term, phi h / 2 of lateral rigid slip); it is used as D in the second-order upwind
+// difference 1.5 D_i - 0.5 D_{i+1} = (-3 u_i + 4 u_{i+1} - u_{i+2}) / (2h) (first order only in
+// the last grid column, outside the patch).
 // Quasi-identical bodies (K = 0): tangential tractions do not change the pressure.
 
 #include <cstdint>
