@@ -4,8 +4,10 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "ferro/contact/mim_table.hpp"
 #include "cli.hpp"
@@ -29,6 +31,19 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
       ->capture_default_str();
   cmd->callback([&handler, out, spec] {
     handler = [out, spec] {
+      try {
+        spec->validate();
+      } catch (const std::invalid_argument& e) {
+        // Name the command-line options, not the table fields.
+        std::string msg = e.what();
+        for (const auto& [field, option] :
+             {std::pair<std::string, std::string>{"mim table elements", "--elements"},
+              {"mim table threads", "--threads"},
+              {"mim table poisson", "--poisson"}}) {
+          if (msg.rfind(field, 0) == 0) msg = option + msg.substr(field.size());
+        }
+        throw std::invalid_argument(msg);
+      }
       const auto t0 = std::chrono::steady_clock::now();
       const contact::MimTable table = contact::MimTable::build(*spec);
       table.write_hdf5(*out);

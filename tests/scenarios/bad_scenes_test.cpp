@@ -36,6 +36,13 @@ const BadScene kBadScenes[] = {
     {"unknown_model_type", 4, "model.type", "allowed: suspended_wheelset"},
     {"list_at_top", 1, "(document)", "expected a mapping"},
     {"duplicate_speed", 19, "simulation.speed_kmh", "not both"},
+    {"duplicate_key", 19, "simulation.speed", "first given at line 18, again at line 19"},
+    {"complex_key", 17, "(key)", "a key must be a plain word, got a list"},
+    {"second_document", 27, "(document)", "2 YAML documents in one file"},
+    {"deep_nesting", 20, "(document)", "nested deeper than"},
+    {"include_directory", 12, "track", "is a directory"},
+    {"include_name_too_long", 12, "track", "File name too long"},
+    {"leading_comma", 1, "(document)", "cannot start with ','"},
 };
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};
