@@ -6,6 +6,16 @@ if(FERRO_SANITIZE)
   target_compile_options(ferro_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(ferro_options INTERFACE -fsanitize=address,undefined)
 endif()
+if(FERRO_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "FERRO_FUZZ needs clang: configure with -DCMAKE_C_COMPILER=clang "
+                        "-DCMAKE_CXX_COMPILER=clang++ (see tools/fuzz.sh)")
+  endif()
+  # Coverage instrumentation for every project library; the fuzz targets link libFuzzer.
+  target_compile_options(ferro_options INTERFACE -fsanitize=fuzzer-no-link,address
+    -fno-omit-frame-pointer)
+  target_link_options(ferro_options INTERFACE -fsanitize=address)
+endif()
 
 # ferro_add_library(<folder> DEPS <targets...>)
 # One library per top-level folder: sources in <folder>/src (recursively), public

@@ -6,7 +6,9 @@
 //   a^3 = 3 F E(e) / (2 pi E* k^2 (A + B)),  delta = 3 F K(e) / (2 pi E* a),
 //   p_max = 3 F / (2 pi a b).
 // Toumi (2016) eqs. (5)-(13) give the same solution through the tabulated m, n, r.
-// Known deviations: none.
+// K and E are the C++17 special functions std::comp_ellint_1/2 (modulus convention).
+// Known deviations: curvature ratios beyond kMaxCurvatureRatio (axis ratios below
+// kMinAxisRatio) are rejected: the modulus then rounds to 1 in double precision.
 #include "ferro/contact/hertz.hpp"
 
 #include <fmt/format.h>
@@ -17,12 +19,19 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "ferro/contact/elliptic_integrals.hpp"
-
 namespace ferro::contact {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+
+struct EllipticKE {
+  double first = 0.0;   // K(e)
+  double second = 0.0;  // E(e)
+};
+
+EllipticKE complete_elliptic_integrals(double modulus) {
+  return {std::comp_ellint_1(modulus), std::comp_ellint_2(modulus)};
+}
 
 // Curvature ratio rho(k) and d(rho)/dk for the axis ratio k in (0, 1).
 struct RatioAndSlope {
@@ -60,26 +69,30 @@ constexpr double kCircleE2 = 1e-13;
 }  // namespace
 
 double hertz_curvature_ratio(double axis_ratio) {
-  if (!(axis_ratio > 0.0 && axis_ratio <= 1.0)) {
-    throw std::invalid_argument(
-        fmt::format("hertz_curvature_ratio: axis ratio must lie in (0, 1], got {}", axis_ratio));
+  if (!(axis_ratio >= kMinAxisRatio && axis_ratio <= 1.0)) {
+    throw std::invalid_argument(fmt::format(
+        "hertz_curvature_ratio: the axis ratio b/a must lie in [{}, 1], got {} (a thinner "
+        "ellipse is a line contact, outside the elliptic Hertz theory)",
+        kMinAxisRatio, axis_ratio));
   }
   if (1.0 - axis_ratio * axis_ratio < kCircleE2) return 1.0;
   return ratio_of_axis(axis_ratio).rho;
 }
 
 double hertz_axis_ratio(double curvature_ratio) {
-  if (!(curvature_ratio >= 1.0) || !std::isfinite(curvature_ratio)) {
+  if (!(curvature_ratio >= 1.0) || !(curvature_ratio <= kMaxCurvatureRatio)) {
     throw std::invalid_argument(fmt::format(
-        "hertz_axis_ratio: curvature ratio must be finite and >= 1, got {}", curvature_ratio));
+        "hertz_axis_ratio: the curvature ratio (larger/smaller) must lie in [1, {:g}], got {} "
+        "(a larger ratio is a line contact, outside the elliptic Hertz theory)",
+        kMaxCurvatureRatio, curvature_ratio));
   }
   if (curvature_ratio - 1.0 < 1e-13) return 1.0;
   // Newton on ln(rho(k)) - ln(rho_target) with a bracket [lo, hi] kept for safety.
   // Start from Brewe & Hamrock's fit k ~ rho^(-0.636) / 1.0339 (a few % off).
   const double target = std::log(curvature_ratio);
-  double lo = 0.0, hi = 1.0;
+  double lo = kMinAxisRatio, hi = 1.0;  // rho(kMinAxisRatio) > kMaxCurvatureRatio
   double k = std::exp(-0.636 * target) / 1.0339;
-  k = std::clamp(k, 1e-12, 1.0 - 1e-9);
+  k = std::clamp(k, kMinAxisRatio, 1.0 - 1e-9);
   for (int iter = 0; iter < 100; ++iter) {
     const RatioAndSlope rs = ratio_of_axis(k);
     const double f = std::log(rs.rho) - target;  // decreasing in k
@@ -150,6 +163,13 @@ HertzSolution hertz_solve(double curvature_x_in, double curvature_y_in, double n
   }
   const double small = std::min(curvature_x, curvature_y);
   const double large = std::max(curvature_x, curvature_y);
+  if (large / small > kMaxCurvatureRatio) {
+    throw std::invalid_argument(fmt::format(
+        "hertz_solve: the curvatures A = {} and B = {} [1/m] differ by a factor {:.3g}, beyond "
+        "{:g}: the patch is a line contact, outside the elliptic Hertz theory (check the "
+        "curvatures or radii; semi_hertz takes a non-elliptic gap)",
+        curvature_x, curvature_y, large / small, kMaxCurvatureRatio));
+  }
   const double k = hertz_axis_ratio(large / small);
   double kfirst = 0.5 * kPi, ksecond = 0.5 * kPi;
   if (k < 1.0) {

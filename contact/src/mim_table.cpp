@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <random>
 #include <stdexcept>
@@ -137,8 +138,16 @@ void MimTableSpec::validate() const {
     throw std::invalid_argument(fmt::format("mim table poisson: must be in [0, 0.5), got {}",
                                             poisson));
   }
-  if (elements < 6) {
-    throw std::invalid_argument(fmt::format("mim table elements: must be >= 6, got {}", elements));
+  // The most elongated ellipse of the table sets the largest grid.
+  int most = std::numeric_limits<int>::max();
+  for (double r : {ratio.front(), ratio.back()}) {
+    most = std::min(most, mim::max_elements_minor(r, 1.0));
+  }
+  if (elements < 6 || elements > most) {
+    throw std::invalid_argument(fmt::format(
+        "mim table elements: must lie in [6, {}] for a/b in [{}, {}] (at most {} grid elements "
+        "per solve), got {}",
+        most, ratio.front(), ratio.back(), mim::kMaxGridElements, elements));
   }
   if (threads < 1) {
     throw std::invalid_argument(fmt::format("mim table threads: must be >= 1, got {}", threads));

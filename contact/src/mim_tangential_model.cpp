@@ -107,6 +107,15 @@ mim::MimResult MimTangentialModel::solve_full(const TangentialProblem& problem) 
   in.body2 = problem.body2;
   in.elements_minor = options_.elements;
   in.grid_over_patch = options_.grid_over_patch;
+  try {
+    in.validate("mim");
+  } catch (const std::invalid_argument& e) {
+    // The grid bound depends on the patch shape: name the model option, not the field.
+    std::string msg = e.what();
+    const std::string field = "mim.elements_minor";
+    if (msg.rfind(field, 0) == 0) msg = "mim option 'elements'" + msg.substr(field.size());
+    throw std::invalid_argument(msg);
+  }
   const std::lock_guard<std::mutex> lock(mutex_);
   return solver_->solve(in);
 }

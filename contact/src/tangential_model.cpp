@@ -1,21 +1,16 @@
-// Tangential-model registry, problem validation and Kalker's linear theory with K_ij.
+// Tangential problem validation and Kalker's linear theory with K_ij (the model registry is
+// in model_registry.cpp).
 //
 // References: Toumi (2016) eqs. (38)-(40), (156).
 // Known deviations: none.
 #include "ferro/contact/tangential_model.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
-#include "ferro/contact/fastsim.hpp"
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/mim_tangential_model.hpp"
-#include "ferro/contact/polach.hpp"
-#include "ferro/contact/saturation_laws.hpp"
 
 namespace ferro::contact {
 
@@ -84,125 +79,6 @@ LinearCreepStiffness linear_creep_stiffness(const TangentialProblem& problem,
   k.c.c23 *= problem.reduction.k23;
   k.c.c33 *= problem.reduction.k33;
   return k;
-}
-
-namespace {
-
-class KalkerLinearModel final : public TangentialModel {
- public:
-  explicit KalkerLinearModel(CoefficientSource source) : source_(source) {}
-  std::string_view name() const override { return "kalker_linear"; }
-  TangentialSolution solve(const TangentialProblem& problem) const override {
-    problem.validate();
-    return linear_creep_stiffness(problem, source_).forces(problem.creepage);
-  }
-
- private:
-  CoefficientSource source_;
-};
-
-}  // namespace
-
-std::vector<std::string> tangential_model_names() {
-  return {
-      "kalker_linear", "linear_saturated", "vermeulen_johnson", "shen_hedrick_elkins", "chopaya",
-      "polach",        "fastsim",           "mim",
-      "mim_table"};
-}
-
-std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
-                                                       const ModelOptions& options) {
-  const CoefficientSource source =
-      coefficient_source_from_name(option_string(options, "coefficients", "kalker_table"));
-  if (name == "kalker_linear") {
-    check_option_keys(name, options, {"coefficients"});
-    return std::make_unique<KalkerLinearModel>(source);
-  }
-  const std::pair<const char*, SaturationLaw> laws[] = {
-      {"linear_saturated", SaturationLaw::kLinear},
-      {"vermeulen_johnson", SaturationLaw::kVermeulenJohnson},
-      {"shen_hedrick_elkins", SaturationLaw::kShenHedrickElkins},
-      {"chopaya", SaturationLaw::kChopaya}};
-  for (const auto& [law_name, law] : laws) {
-    if (name == law_name) {
-      check_option_keys(name, options, {"coefficients"});
-      return std::make_unique<SaturatedCreepModel>(law, source);
-    }
-  }
-  if (name == "polach") {
-    check_option_keys(name, options,
-                      {"coefficients", "k_a", "k_s", "friction_ratio", "friction_decay"});
-    PolachOptions o;
-    o.source = source;
-    o.k_a = option_double(options, "k_a", o.k_a);
-    o.k_s = option_double(options, "k_s", o.k_s);
-    o.friction_ratio = option_double(options, "friction_ratio", o.friction_ratio);
-    o.friction_decay = option_double(options, "friction_decay", o.friction_decay);
-    return std::make_unique<PolachModel>(o);
-  }
-  if (name == "fastsim") {
-    check_option_keys(name, options,
-                      {"coefficients", "mx", "my", "flexibility", "bound", "stiffening"});
-    FastsimOptions o;
-    o.source = source;
-    o.mx = option_int(options, "mx", o.mx);
-    o.my = option_int(options, "my", o.my);
-    const std::string flex = option_string(options, "flexibility", "three");
-    if (flex == "three") {
-      o.flexibility = Flexibility::kThree;
-    } else if (flex == "weighted") {
-      o.flexibility = Flexibility::kWeighted;
-    } else if (flex == "adaptive") {
-      o.flexibility = Flexibility::kAdaptive;
-    } else {
-      throw std::invalid_argument(fmt::format(
-          "fastsim option 'flexibility': unknown value '{}'; allowed: three, weighted, adaptive",
-          flex));
-    }
-    o.stiffening = option_double(options, "stiffening", o.stiffening);
-    if (!(o.stiffening >= 0.0 && o.stiffening <= 1.0)) {
-      throw std::invalid_argument(
-          fmt::format("fastsim option 'stiffening': must lie in [0, 1], got {}", o.stiffening));
-    }
-    const std::string bound = option_string(options, "bound", "parabolic");
-    if (bound == "parabolic") {
-      o.bound = TractionBound::kParabolic;
-    } else if (bound == "elliptic") {
-      o.bound = TractionBound::kElliptic;
-    } else {
-      throw std::invalid_argument(fmt::format(
-          "fastsim option 'bound': unknown value '{}'; allowed: parabolic, elliptic", bound));
-    }
-    return std::make_unique<FastsimModel>(o);
-  }
-  if (name == "mim") {
-    check_option_keys(name, options, {"elements", "grid"});
-    MimModelOptions o;
-    o.elements = option_int(options, "elements", o.elements);
-    const std::string grid = option_string(options, "grid", "minor");
-    if (grid == "minor") {
-      o.grid_over_patch = false;
-    } else if (grid == "patch") {
-      o.grid_over_patch = true;
-    } else {
-      throw std::invalid_argument(
-          fmt::format("mim option 'grid': unknown value '{}'; allowed: minor, patch", grid));
-    }
-    return std::make_unique<MimTangentialModel>(o);
-  }
-  if (name == "mim_table") {
-    check_option_keys(name, options, {"table"});
-    const char* env = std::getenv("FERRO_MIM_TABLE");
-    const std::string path = option_string(options, "table", env != nullptr ? env : "");
-    if (path.empty()) {
-      throw std::invalid_argument(
-          "mim_table option 'table': give the HDF5 table path (table=PATH or $FERRO_MIM_TABLE; "
-          "build one with `ferrodyn contact mim-table --out PATH`)");
-    }
-    return std::make_unique<MimTableModel>(MimTable::read_hdf5(path));
-  }
-  throw std::invalid_argument(fmt::format("unknown tangential contact model '{}'; allowed: {}",
-                                          name, fmt::join(tangential_model_names(), ", ")));
 }
 
 }  // namespace ferro::contact

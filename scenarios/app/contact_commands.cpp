@@ -106,6 +106,7 @@ EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,
   if (!(in.mu >= 0.0))
     throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
   out.forces = model.solve(p);
+  scenarios::require_finite_forces(out.forces, fmt::format("model '{}'", in.model));
   out.c = fc::linear_creep_stiffness(p, source).c;
   return out;
 }

@@ -6,7 +6,6 @@
 // files); every option and field says its unit in its name.
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -25,34 +24,19 @@
 #include <string>
 #include <vector>
 
+#include "cli.hpp"
 #include "ferro/contact/geometry/contact_table.hpp"
 #include "ferro/contact/io/text_writer.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 #include "cli.hpp"
 #include "ferro/scenarios/csv_batch.hpp"
+#include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
 
 namespace ferro::cli {
 namespace {
 
 namespace fc = ferro::contact;
-
-// "1:40" -> atan(1/40); "0" -> 0; a plain number is an angle in rad.
-double parse_inclination(const std::string& text, const std::string& where) {
-  const auto colon = text.find(':');
-  try {
-    if (colon != std::string::npos) {
-      const double a = std::stod(text.substr(0, colon));
-      const double b = std::stod(text.substr(colon + 1));
-      if (a == 0.0 || b == 0.0) return 0.0;
-      return std::atan(a / b);
-    }
-    return std::stod(text);
-  } catch (const std::exception&) {
-    throw std::invalid_argument(fmt::format(
-        "{}: '{}' is not an inclination; use a ratio like 1:40 or an angle in rad", where, text));
-  }
-}
 
 struct PairOptions {
   std::string wheel, rail;
@@ -70,7 +54,7 @@ fc::WheelRailPair make_pair(const PairOptions& o) {
   p.flange_back_distance = o.flange_back_mm * 1e-3;
   p.flange_back_y = o.flange_back_y_mm * 1e-3;
   p.nominal_radius = o.radius_mm * 1e-3;
-  p.rail_inclination = parse_inclination(o.inclination, "--inclination");
+  p.rail_inclination = scenarios::parse_inclination(o.inclination, "--inclination");
   p.section_step = o.section_step_mm * 1e-3;
   return fc::WheelRailPair(fc::read_profile(o.wheel, fc::ProfileKind::wheel),
                            fc::read_profile(o.rail, fc::ProfileKind::rail), p);
@@ -223,37 +207,9 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
 
 // --- PAIR.yaml: tables, diagram data, conicity, plots -------------------------------------
 
-template <typename T>
-T yaml_get(const YAML::Node& node, const std::string& key, const std::string& file) {
-  if (!node || !node[key]) {
-    throw std::invalid_argument(fmt::format("{}: missing key '{}'", file, key));
-  }
-  try {
-    return node[key].as<T>();
-  } catch (const YAML::Exception&) {
-    throw std::invalid_argument(fmt::format("{}: key '{}' has the wrong type", file, key));
-  }
-}
-
 int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bool plot) {
-  YAML::Node doc;
-  try {
-    doc = YAML::LoadFile(yaml_path);
-  } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(fmt::format("{}: cannot read YAML: {}", yaml_path, e.what()));
-  }
-  const std::filesystem::path base = std::filesystem::path(yaml_path).parent_path();
-  const YAML::Node track = doc["track"], ws = doc["wheelset"];
-  PairOptions o;
-  o.rail = (base / yaml_get<std::string>(track, "rail_profile", yaml_path + " track")).string();
-  o.wheel = (base / yaml_get<std::string>(ws, "wheel_profile", yaml_path + " wheelset")).string();
-  o.gauge_mm = yaml_get<double>(track, "gauge", yaml_path + " track");
-  if (track["gauge_height"]) o.gauge_depth_mm = track["gauge_height"].as<double>();
-  if (track["rail_inclination"]) o.inclination = track["rail_inclination"].as<std::string>();
-  o.flange_back_mm = yaml_get<double>(ws, "flange_back_distance", yaml_path + " wheelset");
-  if (ws["flange_back_position"]) o.flange_back_y_mm = ws["flange_back_position"].as<double>();
-  o.radius_mm = yaml_get<double>(ws, "nominal_radius", yaml_path + " wheelset");
-  const fc::WheelRailPair pair = make_pair(o);
+  const fc::WheelRailPair pair =
+      scenarios::make_wheel_rail_pair(scenarios::load_pair_file(yaml_path));
   std::filesystem::create_directories(out_dir);
   const std::filesystem::path dir(out_dir);
 
@@ -314,6 +270,19 @@ int run_pair_report(const std::string& yaml_path, const std::string& out_dir, bo
   return kExitOk;
 }
 
+// Numeric options must be finite: "nan" or "inf" is bad input, not a position.
+const CLI::Validator kFiniteNumber(
+    [](std::string& text) {
+      try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(v)) return std::string();
+      } catch (const std::exception&) {
+      }
+      return fmt::format("expected a finite number, got '{}'", text);
+    },
+    "FINITE");
+
 }  // namespace
 
 void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
@@ -354,33 +323,52 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   auto poisson = std::make_shared<double>(0.28);
   search->add_option("--wheel", po->wheel, "wheel profile (.prw or two-column mm)")->required();
   search->add_option("--rail", po->rail, "rail profile (.prr or two-column mm)")->required();
-  search->add_option("--gauge-mm", po->gauge_mm, "track gauge")->capture_default_str();
+  search->add_option("--gauge-mm", po->gauge_mm, "track gauge")
+      ->check(kFiniteNumber)
+      ->capture_default_str();
   search->add_option("--gauge-depth-mm", po->gauge_depth_mm, "gauge measured below top of rail")
+      ->check(kFiniteNumber)
       ->capture_default_str();
   search
       ->add_option("--inclination", po->inclination,
                    "rail inclination applied to the rail file: 1:40, 1:20, 0 or an angle in rad")
       ->capture_default_str();
   search->add_option("--flange-back-mm", po->flange_back_mm, "flange-back distance")
+      ->check(kFiniteNumber)
       ->capture_default_str();
-  search->add_option("--flange-back-y-mm", po->flange_back_y_mm,
-                     "flange-back position in wheel-profile coordinates (default: first point)");
+  search
+      ->add_option("--flange-back-y-mm", po->flange_back_y_mm,
+                   "flange-back position in wheel-profile coordinates (default: first point)")
+      ->check(kFiniteNumber);
   search->add_option("--radius-mm", po->radius_mm, "nominal wheel radius at the taping line")
+      ->check(kFiniteNumber)
       ->capture_default_str();
   search->add_option("--section-step-mm", po->section_step_mm, "wheel section spacing")
+      ->check(kFiniteNumber)
       ->capture_default_str();
-  search->add_option("--y-mm", pin->y_mm, "lateral shift, + to the right")->capture_default_str();
-  search->add_option("--roll-rad", pin->roll_rad,
-                     "roll, + lowers the right wheel (0 with "
-                     "neither --height-mm nor --load-n: solved for rigid contact)");
-  search->add_option("--yaw-rad", pin->yaw_rad, "yaw, + turns the front to the right");
+  search->add_option("--y-mm", pin->y_mm, "lateral shift, + to the right")
+      ->check(kFiniteNumber)
+      ->capture_default_str();
+  search
+      ->add_option("--roll-rad", pin->roll_rad,
+                   "roll, + lowers the right wheel (0 with "
+                   "neither --height-mm nor --load-n: solved for rigid contact)")
+      ->check(kFiniteNumber);
+  search->add_option("--yaw-rad", pin->yaw_rad, "yaw, + turns the front to the right")
+      ->check(kFiniteNumber);
   auto* h =
-      search->add_option("--height-mm", pin->height_mm, "axle-centre drop below nominal (+ down)");
+      search->add_option("--height-mm", pin->height_mm, "axle-centre drop below nominal (+ down)")
+          ->check(kFiniteNumber);
   search->add_option("--load-n", pin->load_n, "total vertical load: solve the height (Hertz)")
+      ->check(kFiniteNumber)
       ->excludes(h);
-  search->add_option("--shear-modulus", *shear, "for --load-n [Pa]")->capture_default_str();
+  search->add_option("--shear-modulus", *shear, "for --load-n [Pa]")
+      ->check(kFiniteNumber)
+      ->capture_default_str();
   add_hidden_alias(search, "--shear-modulus-mpa", *shear_mpa);
-  search->add_option("--poisson", *poisson, "for --load-n")->capture_default_str();
+  search->add_option("--poisson", *poisson, "for --load-n")
+      ->check(kFiniteNumber)
+      ->capture_default_str();
   search->add_option("--batch", *batch,
                      "CSV in (header with y_mm and optional roll_rad, yaw_rad, height_mm, "
                      "load_n): one CSV row per contact point out");

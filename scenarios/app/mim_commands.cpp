@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "ferro/contact/mim/mim.hpp"
 #include "cli.hpp"
@@ -50,6 +51,28 @@ int run_mim(const MimArgs& args) {
   in.body1 = in.body2 = contact::Material::from_young(
       std::isnan(args.young_gpa) ? args.young : args.young_gpa * 1.0e9, args.poisson);
   in.elements_minor = args.elements;
+  // Name the command-line options, not the library's fields, in bad-input messages.
+  try {
+    in.validate("mim");
+  } catch (const std::invalid_argument& e) {
+    std::string msg = e.what();
+    const std::pair<const char*, const char*> names[] = {
+        {"mim.semi_axis_x/semi_axis_y", "--a-mm/--b-mm"},
+        {"mim.normal_force", "--fn"},
+        {"mim.elements_minor", "--elements"},
+        {"mim.rolling.creepage_x", "--xi-x"},
+        {"mim.rolling.creepage_y", "--xi-y"},
+        {"mim.rolling.spin", "--spin"},
+        {"mim.rolling.friction", "--mu"},
+        {"mim.body1", "--young-gpa/--poisson"}};
+    for (const auto& [field, option] : names) {
+      if (msg.rfind(field, 0) == 0) {
+        msg = option + msg.substr(std::string(field).size());
+        break;
+      }
+    }
+    throw std::invalid_argument(msg);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const contact::mim::MimResult r = contact::mim::solve_hertz_rolling(in);
   const double ms =
@@ -64,8 +87,9 @@ int run_mim(const MimArgs& args) {
   fmt::print("Fn = {:.6g} N, Fx = {:.6g} N, Fy = {:.6g} N, Mz = {:.6g} N m, approach = {:.6g} mm\n",
              r.normal_force, r.force_x, r.force_y, r.moment_z, r.approach * 1.0e3);
   fmt::print("Fx/(mu Fn) = {:.5f}, Fy/(mu Fn) = {:.5f}; converged: {}; {:.1f} ms (incl. set-up)\n",
-             r.force_x / (args.friction * r.normal_force),
-             r.force_y / (args.friction * r.normal_force), r.converged ? "yes" : "NO", ms);
+             args.friction > 0.0 ? r.force_x / (args.friction * r.normal_force) : 0.0,
+             args.friction > 0.0 ? r.force_y / (args.friction * r.normal_force) : 0.0,
+             r.converged ? "yes" : "NO", ms);
   if (r.patch_truncated) {
     fmt::print("warning: the pressure reaches the grid boundary (patch truncated)\n");
   }

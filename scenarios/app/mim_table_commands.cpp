@@ -7,9 +7,11 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "ferro/contact/mim_table.hpp"
@@ -44,7 +46,20 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
       ->capture_default_str();
   cmd->callback([&handler, out, spec, map_path, map_points] {
     handler = [out, spec, map_path, map_points] {
-      spec->validate();
+      try {
+        spec->validate();
+      } catch (const std::invalid_argument& e) {
+        // Name the command-line options, not the table fields.
+        std::string msg = e.what();
+        for (const auto& [field, option] :
+             {std::pair<std::string, std::string>{"mim table elements", "--elements"},
+              {"mim table threads", "--threads"},
+              {"mim table poisson", "--poisson"},
+              {"mim table density", "--density"}}) {
+          if (msg.rfind(field, 0) == 0) msg = option + msg.substr(field.size());
+        }
+        throw std::invalid_argument(msg);
+      }
       if (*map_points < 1) {
         throw std::invalid_argument(
             fmt::format("--error-map-points: must be >= 1, got {}", *map_points));

@@ -1,5 +1,7 @@
 #include "ferro/scenarios/csv_batch.hpp"
 
+#include <cmath>
+#include <string_view>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -89,8 +91,14 @@ double CsvBatchReader::number(const std::vector<std::string>& cells, std::size_t
   try {
     std::size_t used = 0;
     const double v = std::stod(cell, &used);
-    if (used == cell.size()) return v;
-  } catch (const std::exception&) {
+    if (used == cell.size() && std::isfinite(v)) return v;
+    if (used == cell.size()) {
+      throw std::invalid_argument(fmt::format("{}:{}, column '{}': not a finite number: '{}'",
+                                              source_, line_, header_.at(column), cell));
+    }
+  } catch (const std::invalid_argument& e) {
+    if (std::string_view(e.what()).find("not a finite number") != std::string_view::npos) throw;
+  } catch (const std::out_of_range&) {
   }
   throw std::invalid_argument(fmt::format("{}:{}, column '{}': not a number: '{}'", source_, line_,
                                           header_.at(column), cell));

@@ -35,9 +35,16 @@ MapReader open_part(MapReader& scene, const std::string& key, Scene& out,
     const YAML::Node ref = scene.node(key);
     const fs::path base = fs::path(scene.file()).parent_path();
     const std::string file = (base / ref.Scalar()).string();
-    if (!fs::exists(file)) {
-      scene.fail(key, fmt::format("included file '{}' does not exist (looked for {})", ref.Scalar(),
-                                  file));
+    std::error_code ec;
+    const fs::file_status st = fs::status(file, ec);
+    if (!fs::exists(st)) {
+      scene.fail(key, fmt::format("included file '{}' does not exist (looked for {}{})",
+                                  ref.Scalar(), file, ec ? ": " + ec.message() : std::string()));
+    }
+    if (fs::is_directory(st)) {
+      scene.fail(key, fmt::format("included file '{}' is a directory (looked for {}); name a "
+                                  "YAML file",
+                                  ref.Scalar(), file));
     }
     keep.push_back(load_yaml_file(file));
     out.text += fmt::format("\n# ---- included: {} ----\n{}", file, keep.back().text);

@@ -2,11 +2,18 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <yaml-cpp/depthguard.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <string_view>
+#include <utility>
 
 namespace ferro::scenarios {
 namespace {
@@ -33,6 +40,74 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return prev[b.size()];
 }
 
+// Deepest nesting and largest node count an input file may have. Scenes, cases and pair files
+// nest a handful of levels and hold a few thousand nodes; the node bound also stops alias
+// expansion ("billion laughs") from exhausting memory.
+constexpr int kMaxNesting = 64;
+constexpr std::size_t kMaxNodes = 1'000'000;
+
+// Rejects what yaml-cpp accepts but a ferrodyn file never means: non-scalar (complex) keys,
+// a key given twice in one mapping (yaml-cpp keeps both and lookups see the first), nesting
+// beyond kMaxNesting and alias expansion beyond kMaxNodes.
+void check_structure(const YAML::Node& root, const std::string& path) {
+  struct Item {
+    YAML::Node node;
+    int depth;
+    std::string key_path;  // of the node, or of its parent sequence when index >= 0
+    long index;            // position in the parent sequence, or -1
+  };
+  std::vector<Item> stack{{root, 0, "", -1}};
+  std::size_t visited = 0;
+  while (!stack.empty()) {
+    Item item = std::move(stack.back());
+    stack.pop_back();
+    const YAML::Node& node = item.node;
+    const int depth = item.depth;
+    // Key paths are formatted only for containers: long lists of scalars stay cheap.
+    if (item.index >= 0 && (node.IsMap() || node.IsSequence())) {
+      item.key_path = fmt::format("{}[{}]", item.key_path, item.index);
+    }
+    if (++visited > kMaxNodes) {
+      throw YamlInputError(path, 1, 1, "(document)",
+                           fmt::format("more than {} nodes (after expanding aliases); ferrodyn "
+                                       "input files are far smaller",
+                                       kMaxNodes));
+    }
+    if (depth > kMaxNesting) {
+      const auto [l, c] = position_of(node);
+      throw YamlInputError(path, l, c, "(document)",
+                           fmt::format("nested deeper than {} levels; ferrodyn input files "
+                                       "nest a few levels",
+                                       kMaxNesting));
+    }
+    if (node.IsSequence()) {
+      long i = 0;
+      for (const auto& child : node) stack.push_back({child, depth + 1, item.key_path, i++});
+    } else if (node.IsMap()) {
+      std::map<std::string, int> first_line;
+      for (const auto& kv : node) {
+        const auto [l, c] = position_of(kv.first);
+        if (!kv.first.IsScalar()) {
+          throw YamlInputError(path, l, c, item.key_path.empty() ? "(key)" : item.key_path,
+                               fmt::format("a key must be a plain word, got {} (complex keys "
+                                           "written with '? ' are not supported)",
+                                           describe(kv.first)));
+        }
+        const std::string key_path =
+            item.key_path.empty() ? kv.first.Scalar() : item.key_path + "." + kv.first.Scalar();
+        const auto [it, inserted] = first_line.emplace(kv.first.Scalar(), l);
+        if (!inserted) {
+          throw YamlInputError(path, l, c, key_path,
+                               fmt::format("duplicate key '{}' (first given at line {}, again at "
+                                           "line {}); keep one",
+                                           kv.first.Scalar(), it->second, l));
+        }
+        stack.push_back({kv.second, depth + 1, key_path, -1});
+      }
+    }
+  }
+}
+
 }  // namespace
 
 YamlInputError::YamlInputError(const std::string& file, int line, int column,
@@ -51,27 +126,92 @@ std::pair<int, int> position_of(const YAML::Node& node) {
   return {m.line + 1, m.column + 1};
 }
 
+namespace {
+
+// Line (1-based) of a document whose first token is ',' (after comments, blank lines and a
+// '---' marker), or 0. yaml-cpp 0.7 loops without end, allocating, on such a document.
+int leading_flow_entry_line(const std::string& text) {
+  bool at_document_start = true;
+  int line_no = 0;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    const std::string_view line(text.data() + pos, end - pos);
+    ++line_no;
+    pos = end + 1;
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos || line[first] == '#') continue;
+    if (line.substr(0, 3) == "---" || line.substr(0, 3) == "...") {
+      at_document_start = true;
+      const std::size_t rest = line.find_first_not_of(" \t\r", 3);
+      if (rest == std::string_view::npos || line[rest] == '#') continue;
+      if (line[rest] == ',') return line_no;
+      at_document_start = false;
+      continue;
+    }
+    if (line[0] == '%') continue;  // directive
+    if (at_document_start && line[first] == ',') return line_no;
+    at_document_start = false;
+  }
+  return 0;
+}
+
+}  // namespace
+
 YamlFile parse_yaml_text(const std::string& text, const std::string& path) {
+  if (const int line = leading_flow_entry_line(text); line > 0) {
+    throw YamlInputError(path, line, 1, "(document)",
+                         "malformed YAML: a document cannot start with ','");
+  }
   YamlFile f{path, text, {}};
+  std::vector<YAML::Node> documents;
   try {
-    f.root = YAML::Load(text);
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw YamlInputError(path, e.mark.line + 1, e.mark.column + 1, "(document)",
+                         fmt::format("nested deeper than {} levels; ferrodyn input files nest a "
+                                     "few levels",
+                                     kMaxNesting));
   } catch (const YAML::ParserException& e) {
     throw YamlInputError(path, e.mark.line + 1, e.mark.column + 1, "(document)",
                          fmt::format("malformed YAML: {}", e.msg));
   }
+  if (documents.size() > 1) {
+    const auto [l, c] = position_of(documents[1]);
+    throw YamlInputError(path, l, c, "(document)",
+                         fmt::format("{} YAML documents in one file (separated by '---'); a "
+                                     "ferrodyn file holds exactly one",
+                                     documents.size()));
+  }
+  if (!documents.empty()) f.root = documents.front();
   if (!f.root.IsMap()) {
     throw YamlInputError(
         path, 1, 1, "(document)",
         fmt::format("expected a mapping of keys at the top level, got {}", describe(f.root)));
   }
+  check_structure(f.root, path);
   return f;
 }
 
 YamlFile load_yaml_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec) {
+    throw YamlInputError(path, 0, 0, "(file)",
+                         fmt::format("cannot open the file: {}", ec.message()));
+  }
+  if (fs::is_directory(st)) {
+    throw YamlInputError(path, 0, 0, "(file)", "is a directory; expected a YAML file");
+  }
   std::ifstream in(path);
-  if (!in) throw YamlInputError(path, 0, 0, "(file)", "cannot open the file for reading");
+  if (!in) {
+    throw YamlInputError(path, 0, 0, "(file)",
+                         fmt::format("cannot open the file for reading: {}", std::strerror(errno)));
+  }
   std::stringstream ss;
   ss << in.rdbuf();
+  if (in.bad()) throw YamlInputError(path, 0, 0, "(file)", "read error");
   return parse_yaml_text(ss.str(), path);
 }
 

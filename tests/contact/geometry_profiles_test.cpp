@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "ferro/contact/geometry/profile.hpp"
@@ -235,4 +238,63 @@ TEST(geometry_profiles, uic60_generator_matches_benchmark_rail_after_1_40) {
   EXPECT_GT(used, 300);
   EXPECT_LT(worst, kTolerance);
   RecordProperty("uic60_max_deviation_mm", std::to_string(worst * 1e3));
+}
+
+// A million-point profile: the validity check is linear for a valid (monotone)
+// profile and bounded for an invalid one. kLargeProfileSeconds is some 50 times
+// the measured CPU time on a loaded two-core machine; the former pairwise check
+// needed hours.
+TEST(geometry_profiles, million_point_profile_checked_in_bounded_time) {
+  constexpr std::size_t kPoints = 1'000'000;
+  constexpr double kLargeProfileSeconds = 5.0;
+  fc::Profile p;
+  p.source = "generated";
+  for (std::size_t i = 0; i < kPoints; ++i) {
+    const double y = -0.07 + 0.14 * static_cast<double>(i) / (kPoints - 1);
+    p.y.push_back(y);
+    p.z.push_back(1e-3 * std::sin(40.0 * y));
+  }
+  fc::Profile bad = p;
+  std::swap(bad.y[kPoints - 10], bad.y[kPoints - 11]);  // a fold near the end
+  const auto t0 = std::clock();
+  EXPECT_NO_THROW(fc::check_profile(p));
+  try {
+    fc::check_profile(bad);
+    ADD_FAILURE() << "a folded profile was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not monotone"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(static_cast<double>(std::clock() - t0) / CLOCKS_PER_SEC, kLargeProfileSeconds);
+}
+
+// A profile written in metres but read as mm (or in mm with a SIMPACK unit
+// factor of 1) is rejected at the file with the unit named, instead of failing
+// later as "no contact".
+TEST(geometry_profiles, implausible_profile_scale_names_the_unit) {
+  std::string metres;
+  for (int i = 0; i <= 20; ++i) {
+    const double y = -0.07 + 0.007 * i;
+    metres += std::to_string(y) + " " + std::to_string(0.01 * y * y) + "\n";
+  }
+  const std::string plain = write_temp("metres.txt", metres);
+  try {
+    (void)fc::read_profile(plain, fc::ProfileKind::rail);
+    ADD_FAILURE() << "a profile in metres was read as mm";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("implausible profile size"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("in mm"), std::string::npos) << e.what();
+  }
+  std::ifstream in(kRailFile);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("+1.000000000000000e+03");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 22, "+1.000000000000000e+00");
+  const std::string simpack = write_temp("unit_one.prr", text);
+  try {
+    (void)fc::read_profile(simpack, fc::ProfileKind::rail);
+    ADD_FAILURE() << "a SIMPACK profile in mm with units.len.f = 1 was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("units.len.f"), std::string::npos) << e.what();
+  }
 }

@@ -6,23 +6,55 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
-#include "ferro/contact/elliptic_integrals.hpp"
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/normal_model.hpp"
 
 namespace fc = ferro::contact;
 constexpr double kPi = std::numbers::pi;
 
-// The AGM against the C++17 special functions (an independent implementation).
-TEST(elliptic_integrals, agm_matches_std_comp_ellint) {
-  constexpr double kTol = 1e-12;  // both double precision; K(k) is ill-conditioned near k = 1
-  for (double k : {0.0, 0.1, 0.5, 0.9, 0.99, 0.999999}) {
-    const fc::EllipticKE ke = fc::complete_elliptic_integrals(k);
-    EXPECT_NEAR(ke.first / std::comp_ellint_1(k), 1.0, kTol) << "k=" << k;
-    EXPECT_NEAR(ke.second / std::comp_ellint_2(k), 1.0, kTol) << "k=" << k;
+// K(k), E(k) (std::comp_ellint_1/2, used by the Hertz solution) against closed forms that
+// owe nothing to a series or an AGM: the lemniscatic case k = 1/sqrt(2), where
+// K = Gamma(1/4)^2 / (4 sqrt(pi)) and E = (K^2 + pi/2) / (2 K), and Legendre's relation
+// E K' + E' K - K K' = pi/2 (primes: complementary modulus sqrt(1 - k^2)) from k = 0.01 to
+// 0.999999. Tolerance: a few ulps of the double-precision special functions.
+TEST(elliptic_integrals, std_comp_ellint_against_closed_forms) {
+  constexpr double kTol = 1e-13;
+  const double k_lemn = 1.0 / std::sqrt(2.0);
+  const double big_k = std::pow(std::tgamma(0.25), 2) / (4.0 * std::sqrt(kPi));
+  EXPECT_NEAR(std::comp_ellint_1(k_lemn) / big_k, 1.0, kTol);
+  EXPECT_NEAR(std::comp_ellint_2(k_lemn) / ((big_k * big_k + 0.5 * kPi) / (2.0 * big_k)), 1.0,
+              kTol);
+  for (double k : {0.01, 0.1, 0.5, 0.9, 0.99, 0.999999}) {
+    const double kc = std::sqrt((1.0 - k) * (1.0 + k));
+    const double kk = std::comp_ellint_1(k), ee = std::comp_ellint_2(k);
+    const double kk1 = std::comp_ellint_1(kc), ee1 = std::comp_ellint_2(kc);
+    EXPECT_NEAR((ee * kk1 + ee1 * kk - kk * kk1) / (0.5 * kPi), 1.0, 1e3 * kTol) << "k=" << k;
   }
-  EXPECT_THROW((void)fc::complete_elliptic_integrals(1.0), std::invalid_argument);
+}
+
+// A curvature ratio beyond what the elliptic solution resolves is refused with a message about
+// the curvatures, not about an elliptic modulus.
+TEST(hertz_ellipse, extreme_curvature_ratio_is_a_located_error) {
+  const fc::Material steel = fc::Material::from_young(210e9, 0.28);
+  const double e_star = fc::combine(steel, steel).contact_modulus;
+  try {
+    (void)fc::hertz_solve(1.0, 1e13, 1e4, e_star);
+    ADD_FAILURE() << "ratio 1e13 accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("line contact"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("curvatures A = 1"), std::string::npos) << msg;
+    EXPECT_EQ(msg.find("modulus"), std::string::npos) << msg;
+  }
+  // The largest accepted ratio still gives a finite, consistent ellipse.
+  const fc::HertzSolution h = fc::hertz_solve(1.0, fc::kMaxCurvatureRatio, 1e4, e_star);
+  EXPECT_TRUE(std::isfinite(h.semi_axis_x) && std::isfinite(h.semi_axis_y));
+  // Its axis ratio maps back to the curvature ratio through the forward formula (Johnson 3.69).
+  EXPECT_NEAR(fc::hertz_curvature_ratio(h.semi_axis_y / h.semi_axis_x) / fc::kMaxCurvatureRatio,
+              1.0, 1e-6);
+  EXPECT_NEAR(fc::hertz_curvature_ratio(fc::hertz_axis_ratio(1e9)) / 1e9, 1.0, 1e-6);
 }
 
 // Spheres R1 = 300 mm, R2 = 460 mm, E = 210 GPa, nu = 0.28 (Toumi eqs. 88-91):

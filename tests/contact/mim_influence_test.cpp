@@ -1,6 +1,7 @@
 // Influence coefficients (annex B.3) and the FFT influence products against independent methods.
 #include <gtest/gtest.h>
 
+#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -19,34 +20,46 @@ CombinedMaterial steel_pair() {
   return combine(m, m);
 }
 
-// Gauss-Legendre (8 points per direction, 4 x 4 panels) quadrature of the surface kernels of
-// eqs. (70)-(72) over an element that does not contain the field point: an independent check
-// of the closed-form primitives.
+// Gauss-Legendre quadrature (Boost.Math, 8 points per direction, 4 x 4 panels) of the surface
+// kernels of eqs. (70)-(72) over an element that does not contain the field point: an
+// independent check of the closed-form primitives.
 InfluenceCoefficients quadrature(double x, double y, double dx, double dy,
                                  const CombinedMaterial& m) {
-  static const double xg[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                               0.7966664774136267,  0.9602898564975363};
-  static const double wg[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                               0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                               0.2223810344533745, 0.1012285362903763};
+  using Gauss = boost::math::quadrature::gauss<double, 8>;
+  const double nu = m.poisson;
+  const double scale = 1.0 / (std::numbers::pi * m.shear_modulus);
+  // Integral over the element of one kernel k(u, v), u = x - zeta, v = y - eta.
+  auto integrate = [&](auto kernel) {
+    constexpr int kPanels = 4;
+    const double pdx = dx / kPanels, pdy = dy / kPanels;
+    double sum = 0.0;
+    for (int px = 0; px < kPanels; ++px) {
+      for (int py = 0; py < kPanels; ++py) {
+        const double x0 = -0.5 * dx + px * pdx, y0 = -0.5 * dy + py * pdy;
+        sum += Gauss::integrate(
+            [&](double zeta) {
+              return Gauss::integrate([&](double eta) { return kernel(x - zeta, y - eta); }, y0,
+                                      y0 + pdy);
+            },
+            x0, x0 + pdx);
+      }
+    }
+    return scale * sum;
+  };
   InfluenceCoefficients s;
-  const int panels = 4;
-  const double pdx = dx / panels, pdy = dy / panels;
-  for (int px = 0; px < panels; ++px)
-    for (int py = 0; py < panels; ++py)
-      for (int i = 0; i < 8; ++i)
-        for (int j = 0; j < 8; ++j) {
-          const double zeta = -0.5 * dx + (px + 0.5) * pdx + 0.5 * pdx * xg[i];
-          const double eta = -0.5 * dy + (py + 0.5) * pdy + 0.5 * pdy * xg[j];
-          const double u = x - zeta, v = y - eta, r = std::hypot(u, v);
-          const double w = wg[i] * wg[j] * 0.25 * pdx * pdy / (std::numbers::pi * m.shear_modulus);
-          const double nu = m.poisson;
-          s.zz += w * (1.0 - nu) / r;
-          s.xx += w * ((1.0 - nu) / r + nu * u * u / (r * r * r));
-          s.yy += w * ((1.0 - nu) / r + nu * v * v / (r * r * r));
-          s.xy += w * nu * u * v / (r * r * r);
-        }
+  s.zz = integrate([&](double u, double v) { return (1.0 - nu) / std::hypot(u, v); });
+  s.xx = integrate([&](double u, double v) {
+    const double r = std::hypot(u, v);
+    return (1.0 - nu) / r + nu * u * u / (r * r * r);
+  });
+  s.yy = integrate([&](double u, double v) {
+    const double r = std::hypot(u, v);
+    return (1.0 - nu) / r + nu * v * v / (r * r * r);
+  });
+  s.xy = integrate([&](double u, double v) {
+    const double r = std::hypot(u, v);
+    return nu * u * v / (r * r * r);
+  });
   return s;
 }
 

@@ -64,33 +64,63 @@ void check_profile(Profile& p) {
         fmt::format("{}: a profile needs at least 4 points, got {}", p.source, n));
   }
   if (p.line.size() != n) p.line.assign(n, 0);
-  // Self-intersection: any two non-adjacent segments crossing (O(n^2), n is a few hundred).
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    for (std::size_t j = i + 2; j + 1 < n; ++j) {
-      if (segments_intersect(p.y[i], p.z[i], p.y[i + 1], p.z[i + 1], p.y[j], p.z[j], p.y[j + 1],
-                             p.z[j + 1])) {
-        throw std::invalid_argument(fmt::format(
-            "{}:{}: profile is self-intersecting: segment at lines {}-{} crosses segment at "
-            "lines {}-{}",
-            p.source, p.line[j], p.line[i], p.line[i + 1], p.line[j], p.line[j + 1]));
+  // A polyline strictly monotone in y is the graph of a function and cannot cross itself, so
+  // the O(n) monotonicity test settles valid profiles. Only a non-monotone profile is searched
+  // for a crossing pair (a sharper diagnostic), pairwise and therefore only up to
+  // kMaxPairwiseCheck points; larger ones get the monotonicity message directly.
+  constexpr std::size_t kMaxPairwiseCheck = 4000;
+  const bool decreasing = p.y.back() < p.y.front();
+  std::size_t bad = 0;  // first index breaking strict monotonicity, 0 if none
+  for (std::size_t i = 1; i < n && bad == 0; ++i) {
+    if (!(decreasing ? p.y[i] < p.y[i - 1] : p.y[i] > p.y[i - 1])) bad = i;
+  }
+  if (bad != 0 && n <= kMaxPairwiseCheck) {
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      for (std::size_t j = i + 2; j + 1 < n; ++j) {
+        if (segments_intersect(p.y[i], p.z[i], p.y[i + 1], p.z[i + 1], p.y[j], p.z[j], p.y[j + 1],
+                               p.z[j + 1])) {
+          throw std::invalid_argument(fmt::format(
+              "{}:{}: profile is self-intersecting: segment at lines {}-{} crosses segment at "
+              "lines {}-{}",
+              p.source, p.line[j], p.line[i], p.line[i + 1], p.line[j], p.line[j + 1]));
+        }
       }
     }
   }
-  // Order by increasing y (reverse a decreasing file), then require strict monotonicity.
-  if (p.y.back() < p.y.front()) {
+  if (bad != 0) {
+    throw std::invalid_argument(fmt::format(
+        "{}:{}: profile is not monotone in y (y = {:.6f} mm after y = {:.6f} mm at line {}); "
+        "the contact search needs a profile that is single-valued in y",
+        p.source, p.line[bad], p.y[bad] * 1e3, p.y[bad - 1] * 1e3, p.line[bad - 1]));
+  }
+  // Order by increasing y (reverse a decreasing file).
+  if (decreasing) {
     std::reverse(p.y.begin(), p.y.end());
     std::reverse(p.z.begin(), p.z.end());
     std::reverse(p.line.begin(), p.line.end());
   }
-  for (std::size_t i = 1; i < n; ++i) {
-    if (!(p.y[i] > p.y[i - 1])) {
-      throw std::invalid_argument(fmt::format(
-          "{}:{}: profile is not monotone in y (y = {:.6f} mm after y = {:.6f} mm at line {}); "
-          "the contact search needs a profile that is single-valued in y",
-          p.source, p.line[i], p.y[i] * 1e3, p.y[i - 1] * 1e3, p.line[i - 1]));
-    }
+}
+
+namespace {
+
+// Every wheel or rail profile spans some 50-200 mm laterally. A span outside
+// [kMinProfileSpan, kMaxProfileSpan] means a unit mistake (mm read as m or the reverse), which
+// would otherwise surface far away as "no contact" or a conicity of 0.
+constexpr double kMinProfileSpan = 5e-3;  // m
+constexpr double kMaxProfileSpan = 1.0;   // m
+
+void check_profile_scale(const Profile& p, const std::string& unit_hint) {
+  const double span = p.y.back() - p.y.front();
+  const auto [zmin, zmax] = std::minmax_element(p.z.begin(), p.z.end());
+  if (span < kMinProfileSpan || span > kMaxProfileSpan || *zmax - *zmin > kMaxProfileSpan) {
+    throw std::invalid_argument(fmt::format(
+        "{}: implausible profile size: {:.6g} m wide and {:.6g} m high once read; a wheel or "
+        "rail profile is {} mm to {} m wide. Check the length unit ({})",
+        p.source, span, *zmax - *zmin, kMinProfileSpan * 1e3, kMaxProfileSpan, unit_hint));
   }
 }
+
+}  // namespace
 
 Profile read_simpack_profile(const std::string& path) {
   std::ifstream in(path);
@@ -190,6 +220,7 @@ Profile read_simpack_profile(const std::string& path) {
     std::reverse(p.line.begin(), p.line.end());
   }
   check_profile(p);
+  check_profile_scale(p, fmt::format("units.len.f = {} user units per metre; 1000 for mm", unit));
   return p;
 }
 
@@ -218,6 +249,7 @@ Profile read_two_column_profile(const std::string& path, ProfileKind kind) {
     p.line.push_back(line_no);
   }
   check_profile(p);
+  check_profile_scale(p, "two-column profile files are read in mm");
   return p;
 }
 

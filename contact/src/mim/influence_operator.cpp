@@ -9,12 +9,14 @@
 #include "ferro/contact/mim/influence_operator.hpp"
 
 #include <fftw3.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <complex>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <vector>
@@ -49,9 +51,25 @@ int offset_of(int m, int n, int padded) {
   return kUnused;
 }
 
+// fftw_malloc that reports failure (and size overflow) as an exception instead of returning
+// a null pointer that the next write would dereference.
+void* checked_fftw_malloc(std::size_t element_size, std::size_t count) {
+  if (count > std::numeric_limits<std::size_t>::max() / element_size) {
+    throw std::length_error(
+        fmt::format("InfluenceOperator: a buffer of {} x {} bytes overflows", count, element_size));
+  }
+  void* p = fftw_malloc(element_size * count);
+  if (p == nullptr) {
+    throw std::runtime_error(
+        fmt::format("InfluenceOperator: out of memory allocating {:.3g} MB for an FFT buffer",
+                    static_cast<double>(element_size * count) / 1e6));
+  }
+  return p;
+}
+
 struct FftwBuffer {
   explicit FftwBuffer(std::size_t n) : size(n) {
-    data = static_cast<double*>(fftw_malloc(sizeof(double) * n));
+    data = static_cast<double*>(checked_fftw_malloc(sizeof(double), n));
     std::fill(data, data + n, 0.0);
   }
   ~FftwBuffer() { fftw_free(data); }
@@ -63,7 +81,7 @@ struct FftwBuffer {
 
 struct ComplexBuffer {
   explicit ComplexBuffer(std::size_t n) : size(n) {
-    data = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * n));
+    data = static_cast<fftw_complex*>(checked_fftw_malloc(sizeof(fftw_complex), n));
     std::memset(data, 0, sizeof(fftw_complex) * n);
   }
   ~ComplexBuffer() { fftw_free(data); }

@@ -33,6 +33,32 @@ void NormalLoad::validate(const std::string& where) const {
   }
 }
 
+namespace {
+
+// Largest aspect ratio for which 4 elements across the shorter axis stay within the cap.
+int max_resolved_aspect() {
+  int r = 1;
+  while (max_elements_minor(1.0, 2.0 * r) >= 4) r *= 2;
+  int lo = r / 2, hi = r;  // max_elements_minor(1, lo) >= 4 > max_elements_minor(1, hi)
+  while (hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    (max_elements_minor(1.0, mid) >= 4 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+int max_elements_minor(double a, double b) {
+  if (!(a > 0.0) || !(b > 0.0) || !std::isfinite(a) || !std::isfinite(b)) return 0;
+  const double aspect = std::max(a, b) / std::min(a, b);
+  // The grid has about e^2 * aspect elements: settle hopeless ratios before counting.
+  if (16.0 * aspect > static_cast<double>(kMaxGridElements)) return 0;
+  int e = static_cast<int>(std::sqrt(static_cast<double>(kMaxGridElements) / aspect)) + 2;
+  while (e >= 2 && grid_for_ellipse(a, b, e).size() > kMaxGridElements) --e;
+  return e;
+}
+
 void HertzRollingInput::validate(const std::string& where) const {
   if (!(semi_axis_x > 0.0) || !(semi_axis_y > 0.0)) {
     throw std::invalid_argument(
@@ -43,9 +69,20 @@ void HertzRollingInput::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.normal_force: must be > 0 N, got {}", where, normal_force));
   }
-  if (elements_minor < 4) {
-    throw std::invalid_argument(
-        fmt::format("{}.elements_minor: must be >= 4, got {}", where, elements_minor));
+  const int most = max_elements_minor(semi_axis_x, semi_axis_y);
+  const double aspect = std::max(semi_axis_x, semi_axis_y) / std::min(semi_axis_x, semi_axis_y);
+  if (most < 4) {
+    throw std::invalid_argument(fmt::format(
+        "{}.semi_axis_x/semi_axis_y: an ellipse of {} m x {} m (aspect ratio {:.3g}) needs more "
+        "than {} grid elements even with 4 elements across its shorter axis; the grid resolves "
+        "aspect ratios up to about {}",
+        where, semi_axis_x, semi_axis_y, aspect, kMaxGridElements, max_resolved_aspect()));
+  }
+  if (elements_minor < 4 || elements_minor > most) {
+    throw std::invalid_argument(fmt::format(
+        "{}.elements_minor: must lie in [4, {}] for this ellipse (aspect ratio {:.3g}, at most {} "
+        "grid elements), got {}",
+        where, most, aspect, kMaxGridElements, elements_minor));
   }
   rolling.validate(where + ".rolling");
   body1.validate(where + ".body1");

@@ -21,8 +21,9 @@ namespace ferro::contact::mim {
 void SlidingInput::validate(const std::string& where) const {
   if (!std::isfinite(shift_x)) throw std::invalid_argument(where + ".shift_x: must be finite (m)");
   if (!std::isfinite(shift_y)) throw std::invalid_argument(where + ".shift_y: must be finite (m)");
-  if (!(friction > 0.0) || !std::isfinite(friction)) {
-    throw std::invalid_argument(fmt::format("{}.friction: must be > 0, got {}", where, friction));
+  if (!(friction >= 0.0) || !std::isfinite(friction)) {
+    throw std::invalid_argument(
+        fmt::format("{}.friction: must be finite and >= 0, got {}", where, friction));
   }
 }
 
@@ -32,8 +33,9 @@ void RollingInput::validate(const std::string& where) const {
   if (!std::isfinite(creepage_y))
     throw std::invalid_argument(where + ".creepage_y: must be finite");
   if (!std::isfinite(spin)) throw std::invalid_argument(where + ".spin: must be finite (1/m)");
-  if (!(friction > 0.0) || !std::isfinite(friction)) {
-    throw std::invalid_argument(fmt::format("{}.friction: must be > 0, got {}", where, friction));
+  if (!(friction >= 0.0) || !std::isfinite(friction)) {
+    throw std::invalid_argument(
+        fmt::format("{}.friction: must be finite and >= 0, got {}", where, friction));
   }
 }
 
@@ -231,6 +233,26 @@ TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double f
   }
   Field qx(n), qy(n);
   rigid_slip(grid, qx, qy);
+  if (friction == 0.0) {
+    // Frictionless contact: no traction, so no elastic tangential displacement; every loaded
+    // element slips with the rigid slip.
+    TangentialSolution out;
+    out.traction_x.assign(n, 0.0);
+    out.traction_y.assign(n, 0.0);
+    out.slip_x.assign(n, 0.0);
+    out.slip_y.assign(n, 0.0);
+    out.state.assign(n, ElementState::exterior);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(pressure[i] > 0.0)) continue;
+      out.state[i] = ElementState::slip;
+      out.slip_x[i] = qx[i];
+      out.slip_y[i] = qy[i];
+      ++out.slip_elements;
+    }
+    out.stick_residual = out.direction_residual = out.coulomb_residual = 0.0;
+    out.converged = true;
+    return out;
+  }
   Problem pb(op, rolling);
 
   // Nested iteration: solve on the grid coarsened by two (pressure averaged over the four

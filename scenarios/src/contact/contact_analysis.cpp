@@ -13,6 +13,7 @@
 #include <map>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace ferro::scenarios {
 namespace {
@@ -32,6 +33,7 @@ contact::TangentialSolution solve_all_patches(const contact::TangentialModel& mo
     p.reduction = c.reduction;
     p.gap = &c.normal;
     const contact::TangentialSolution s = model.solve(p);
+    require_finite_forces(s, fmt::format("model '{}' of case '{}'", model.name(), c.name));
     sum.force_x += s.force_x;
     sum.force_y += s.force_y;
     sum.moment_z += s.moment_z;
@@ -40,6 +42,20 @@ contact::TangentialSolution solve_all_patches(const contact::TangentialModel& mo
 }
 
 }  // namespace
+
+void require_finite_forces(const contact::TangentialSolution& s, const std::string& what) {
+  if (std::isfinite(s.force_x) && std::isfinite(s.force_y) && std::isfinite(s.moment_z)) return;
+  std::string which;
+  for (const auto& [name, v] : {std::pair<const char*, double>{"F_x", s.force_x},
+                                {"F_y", s.force_y},
+                                {"M_z", s.moment_z}}) {
+    if (!std::isfinite(v)) which += which.empty() ? name : std::string(", ") + name;
+  }
+  throw std::invalid_argument(fmt::format(
+      "{}: the result overflowed ({} not finite): the input lies outside the physical range "
+      "the model's arithmetic holds (check semi-axes, load, moduli and K_ij)",
+      what, which));
+}
 
 std::vector<CurvePoint> compute_creep_curves(const ContactCase& c,
                                              const contact::NormalSolution& normal) {
@@ -136,6 +152,7 @@ PatchPicture compute_patch_picture(const ContactCase& c, const contact::NormalSo
     p.gap = &c.normal;
     p.map = &map;
     pic.forces.push_back(model->solve(p));
+    require_finite_forces(pic.forces.back(), fmt::format("patch.model '{}'", c.patch_model.name));
     if (map.x.empty()) {
       throw std::invalid_argument(
           fmt::format("patch.model '{}' gives no traction map; use fastsim", c.patch_model.name));

@@ -4,78 +4,116 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "ferro/contact/hertz.hpp"
+#include "ferro/scenarios/yaml_reader.hpp"
 
 namespace ferro::scenarios {
 namespace {
 
-[[noreturn]] void bad(const std::string& path, const std::string& key, const std::string& what) {
-  throw std::invalid_argument(fmt::format("{}: key '{}': {}", path, key, what));
-}
-
-double number(const YAML::Node& n, const std::string& path, const std::string& key) {
-  try {
-    return n.as<double>();
-  } catch (const YAML::Exception&) {
-    bad(path, key, fmt::format("expected a number (line {})", n.Mark().line + 1));
-  }
-}
-
-double positive(const YAML::Node& n, const std::string& path, const std::string& key) {
-  const double v = number(n, path, key);
-  if (!(v > 0.0) || !std::isfinite(v))
-    bad(path, key, fmt::format("must be finite and > 0, got {}", v));
+double positive(MapReader& r, const std::string& key) {
+  const double v = r.number(key);
+  if (!(v > 0.0)) r.fail(key, fmt::format("must be > 0, got {}", v));
   return v;
 }
 
-contact::ModelOptions options_of(const YAML::Node& n, const std::string& path,
-                                 const std::string& key) {
+double positive_or(MapReader& r, const std::string& key, double fallback) {
+  r.allow(key);
+  return r.has(key) ? positive(r, key) : fallback;
+}
+
+// A free-form map of option: value, checked by the model registry afterwards.
+contact::ModelOptions options_of(MapReader& parent, const std::string& key) {
   contact::ModelOptions o;
-  if (!n) return o;
-  if (!n.IsMap()) bad(path, key, "expected a map of option: value");
-  for (const auto& kv : n) o[kv.first.as<std::string>()] = kv.second.as<std::string>();
+  MapReader m = parent.map_or_empty(key);
+  for (const auto& kv : m.yaml()) {
+    const std::string name = kv.first.Scalar();
+    m.allow(name);
+    if (!kv.second.IsScalar()) m.fail(name, "expected a single value (option: value)");
+    o[name] = kv.second.Scalar();
+  }
   return o;
 }
 
-contact::Material material_of(const YAML::Node& n, const std::string& path,
-                              const std::string& key) {
-  if (!n || !n.IsMap())
-    bad(path, key, "expected a map with 'poisson' and 'young' or 'shear_modulus' [Pa]");
-  if (!n["poisson"]) bad(path, key + ".poisson", "missing");
-  const double nu = number(n["poisson"], path, key + ".poisson");
-  contact::Material m;
-  if (n["young"]) {
-    m = contact::Material::from_young(positive(n["young"], path, key + ".young"), nu);
-  } else if (n["shear_modulus"]) {
-    m = contact::Material{positive(n["shear_modulus"], path, key + ".shear_modulus"), nu};
-  } else {
-    bad(path, key, "needs 'young' or 'shear_modulus' [Pa]");
+// A model given as a bare name or as {name, options}.
+NamedModel named_model(const YAML::Node& n, const std::string& file, const std::string& path) {
+  NamedModel m;
+  if (n.IsScalar()) {
+    m.name = n.Scalar();
+    return m;
   }
-  m.validate(path + ": " + key);
+  MapReader r(n, file, path);
+  m.name = r.string("name");
+  m.options = options_of(r, "options");
+  r.finish();
   return m;
 }
 
-// Radius -> half curvature 1/(2R); 0 or .inf means flat.
-double half_curvature(const YAML::Node& n, const std::string& path, const std::string& key) {
-  if (!n) return 0.0;
-  const double r = number(n, path, key);
-  if (r == 0.0 || std::isinf(r)) return 0.0;
-  return 0.5 / r;
+contact::Material material_of(MapReader r) {
+  const double nu = r.number("poisson");
+  contact::Material m;
+  if (r.has("young") && r.has("shear_modulus")) {
+    r.fail("shear_modulus", "give 'young' or 'shear_modulus', not both");
+  }
+  if (r.has("young")) {
+    m = contact::Material::from_young(positive(r, "young"), nu);
+  } else if (r.has("shear_modulus")) {
+    m = contact::Material{positive(r, "shear_modulus"), nu};
+  } else {
+    r.fail("young", "needs 'young' or 'shear_modulus' [Pa]");
+  }
+  r.allow("young");
+  r.allow("shear_modulus");
+  try {
+    m.validate(r.path());
+  } catch (const std::invalid_argument& e) {
+    r.fail("poisson", e.what());
+  }
+  r.finish();
+  return m;
 }
 
-CurveRequest curve_of(const YAML::Node& n, const std::string& path, const std::string& key) {
+// Radius -> half curvature 1/(2R); absent, 0 or .inf means flat.
+double half_curvature(MapReader& r, const std::string& key) {
+  const double radius = r.number_or(key, 0.0, true);
+  if (radius == 0.0 || std::isinf(radius)) return 0.0;
+  if (!(radius > 0.0)) r.fail(key, fmt::format("must be > 0 m (0 or .inf: flat), got {}", radius));
+  return 0.5 / radius;
+}
+
+CurveRequest curve_of(MapReader& parent, const std::string& key) {
   CurveRequest c;
-  if (!n) return c;
+  if (!parent.has(key)) {
+    parent.allow(key);
+    return c;
+  }
+  MapReader r = parent.map(key);
   c.enabled = true;
-  if (!n["max"]) bad(path, key + ".max", "missing (largest |creepage|)");
-  c.max = positive(n["max"], path, key + ".max");
-  if (n["points"]) c.points = n["points"].as<int>();
-  if (c.points < 3 || c.points > 100001) bad(path, key + ".points", "must lie in [3, 100001]");
-  if (n["angle_deg"]) c.angle_deg = number(n["angle_deg"], path, key + ".angle_deg");
+  c.max = positive(r, "max");
+  c.points = static_cast<int>(r.integer_or("points", c.points));
+  if (c.points < 3 || c.points > 100001) {
+    r.fail("points", fmt::format("must lie in [3, 100001], got {}", c.points));
+  }
+  c.angle_deg = r.number_or("angle_deg", c.angle_deg);
+  r.finish();
   return c;
+}
+
+std::vector<double> number_list(MapReader& r, const std::string& key) {
+  const YAML::Node n = r.node(key);
+  if (!n.IsSequence()) r.fail(key, "expected a list of numbers");
+  std::vector<double> out;
+  for (const auto& item : n) {
+    double v = 0.0;
+    if (!item.IsScalar() || !YAML::convert<double>::decode(item, v) || !std::isfinite(v)) {
+      r.fail(key, fmt::format("expected finite numbers; item {} is not", out.size()));
+    }
+    out.push_back(v);
+  }
+  return out;
 }
 
 }  // namespace
@@ -98,136 +136,178 @@ std::string NamedModel::label() const {
 }
 
 ContactCase load_contact_case(const std::string& path) {
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw std::invalid_argument(fmt::format("{}: cannot open the case file", path));
-  } catch (const YAML::Exception& e) {
-    throw std::invalid_argument(fmt::format("{}: YAML error: {}", path, e.what()));
-  }
+  const YamlFile file = load_yaml_file(path);
+  MapReader root(file.root, path, "");
   ContactCase c;
-  if (!root["schema_version"] || root["schema_version"].as<int>() != ContactCase::kSchemaVersion) {
-    bad(path, "schema_version", fmt::format("must be {}", ContactCase::kSchemaVersion));
+  if (!root.has("schema_version")) {
+    root.fail("schema_version", fmt::format("missing; this program reads schema_version {}",
+                                            ContactCase::kSchemaVersion));
   }
-  c.name = root["name"] ? root["name"].as<std::string>() : std::string("contact_case");
+  const long version = root.integer_or("schema_version", -1);
+  if (version != ContactCase::kSchemaVersion) {
+    root.fail("schema_version", fmt::format("unsupported version {}; supported: {}", version,
+                                            ContactCase::kSchemaVersion));
+  }
+  c.name = root.string_or("name", "contact_case");
   // Normal model.
-  if (const auto n = root["normal_model"]) {
-    if (n.IsMap()) {
-      c.normal_model = n["name"].as<std::string>();
-      c.normal_options = options_of(n["options"], path, "normal_model.options");
-    } else {
-      c.normal_model = n.as<std::string>();
-    }
+  if (root.has("normal_model")) {
+    const NamedModel n = named_model(root.node("normal_model"), path, "normal_model");
+    c.normal_model = n.name;
+    c.normal_options = n.options;
   }
-  (void)contact::make_normal_model(c.normal_model, c.normal_options);  // validates name/options
+  root.allow("normal_model");
+  try {
+    (void)contact::make_normal_model(c.normal_model, c.normal_options);
+  } catch (const std::invalid_argument& e) {
+    root.fail("normal_model", e.what());
+  }
   // Geometry.
-  const YAML::Node g = root["geometry"];
-  if (!g || !g.IsMap()) bad(path, "geometry", "missing (curvatures, radii or gap)");
-  if (g["curvature_x"])
-    c.normal.curvature_x = positive(g["curvature_x"], path, "geometry.curvature_x");
-  if (g["curvature_y"])
-    c.normal.curvature_y = positive(g["curvature_y"], path, "geometry.curvature_y");
-  if (const auto r = g["radii"]) {
-    c.normal.curvature_x = half_curvature(r["body1_x"], path, "geometry.radii.body1_x") +
-                           half_curvature(r["body2_x"], path, "geometry.radii.body2_x");
-    c.normal.curvature_y = half_curvature(r["body1_y"], path, "geometry.radii.body1_y") +
-                           half_curvature(r["body2_y"], path, "geometry.radii.body2_y");
-  }
-  if (const auto w = g["wells"]) {
-    // Gap z(y) = min over wells of curvature (y - y_w)^2 + depth, sampled on [y_min, y_max].
-    const double y0 = number(g["y_min"], path, "geometry.y_min");
-    const double y1 = number(g["y_max"], path, "geometry.y_max");
-    const int n = g["samples"] ? g["samples"].as<int>() : 1201;
-    if (!(y1 > y0) || n < 3) bad(path, "geometry", "needs y_min < y_max and samples >= 3");
-    for (int i = 0; i < n; ++i) {
-      const double y = y0 + (y1 - y0) * i / (n - 1);
-      double z = INFINITY;
-      for (std::size_t k = 0; k < w.size(); ++k) {
-        const std::string key = fmt::format("geometry.wells[{}]", k);
-        const double yw = number(w[k]["y"], path, key + ".y");
-        const double cw = positive(w[k]["curvature"], path, key + ".curvature");
-        const double dw = w[k]["depth"] ? number(w[k]["depth"], path, key + ".depth") : 0.0;
-        z = std::min(z, cw * (y - yw) * (y - yw) + dw);
-      }
-      c.normal.gap_y.push_back(y);
-      c.normal.gap_z.push_back(z);
+  {
+    MapReader g = root.map("geometry");
+    c.normal.curvature_x = positive_or(g, "curvature_x", c.normal.curvature_x);
+    c.normal.curvature_y = positive_or(g, "curvature_y", c.normal.curvature_y);
+    if (g.has("radii")) {
+      MapReader r = g.map("radii");
+      c.normal.curvature_x = half_curvature(r, "body1_x") + half_curvature(r, "body2_x");
+      c.normal.curvature_y = half_curvature(r, "body1_y") + half_curvature(r, "body2_y");
+      r.finish();
     }
-  }
-  if (g["gap_y"] || g["gap_z"]) {
-    c.normal.gap_y = g["gap_y"].as<std::vector<double>>();
-    c.normal.gap_z = g["gap_z"].as<std::vector<double>>();
-  }
-  if (!(c.normal.curvature_x > 0.0))
-    bad(path, "geometry.curvature_x", "missing or not > 0 (A [1/m])");
-  if (c.normal_model == "hertz" && !(c.normal.curvature_y > 0.0)) {
-    bad(path, "geometry.curvature_y", "hertz needs B > 0 [1/m]");
-  }
-  if (c.normal_model == "semi_hertz" && c.normal.gap_y.size() < 3) {
-    bad(path, "geometry", "semi_hertz needs 'wells' or 'gap_y'/'gap_z'");
+    g.allow("radii");
+    if (g.has("wells")) {
+      // Gap z(y) = min over wells of curvature (y - y_w)^2 + depth, sampled on [y_min, y_max].
+      const double y0 = g.number("y_min");
+      const double y1 = g.number("y_max");
+      const long n = g.integer_or("samples", 1201);
+      if (!(y1 > y0)) g.fail("y_max", "must be > y_min");
+      if (n < 3 || n > 1'000'000) g.fail("samples", "must lie in [3, 1000000]");
+      const YAML::Node w = g.node("wells");
+      if (!w.IsSequence() || w.size() == 0)
+        g.fail("wells", "expected a list of {y, curvature, depth}");
+      struct Well {
+        double y, curvature, depth;
+      };
+      std::vector<Well> wells;
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        MapReader wr(w[k], path, fmt::format("geometry.wells[{}]", k));
+        wells.push_back({wr.number("y"), positive(wr, "curvature"), wr.number_or("depth", 0.0)});
+        wr.finish();
+      }
+      for (long i = 0; i < n; ++i) {
+        const double y = y0 + (y1 - y0) * static_cast<double>(i) / static_cast<double>(n - 1);
+        double z = INFINITY;
+        for (const Well& well : wells) {
+          z = std::min(z, well.curvature * (y - well.y) * (y - well.y) + well.depth);
+        }
+        c.normal.gap_y.push_back(y);
+        c.normal.gap_z.push_back(z);
+      }
+    }
+    g.allow("wells");
+    if (g.has("gap_y") || g.has("gap_z")) {
+      c.normal.gap_y = number_list(g, "gap_y");
+      c.normal.gap_z = number_list(g, "gap_z");
+      if (c.normal.gap_y.size() != c.normal.gap_z.size()) {
+        g.fail("gap_z", fmt::format("must have as many values as gap_y ({}), got {}",
+                                    c.normal.gap_y.size(), c.normal.gap_z.size()));
+      }
+    }
+    g.allow("gap_y");
+    g.allow("gap_z");
+    g.finish();
+    if (!(c.normal.curvature_x > 0.0)) {
+      g.fail("curvature_x", "missing or not > 0 (A [1/m], or radii)");
+    }
+    if (c.normal_model == "hertz" && !(c.normal.curvature_y > 0.0)) {
+      g.fail("curvature_y", "hertz needs B > 0 [1/m] (or radii)");
+    }
+    if (c.normal_model == "semi_hertz" && c.normal.gap_y.size() < 3) {
+      g.fail("wells", "semi_hertz needs 'wells' or 'gap_y'/'gap_z'");
+    }
   }
   // Load.
-  const YAML::Node load = root["load"];
-  if (!load) bad(path, "load", "missing (normal_force [N] or approach [m])");
-  if (load["normal_force"]) {
-    c.normal.normal_force = positive(load["normal_force"], path, "load.normal_force");
-  } else if (load["approach"]) {
-    c.approach = positive(load["approach"], path, "load.approach");
-    if (c.normal_model != "hertz") bad(path, "load.approach", "only with normal_model hertz");
-  } else {
-    bad(path, "load", "needs normal_force [N] or approach [m]");
+  {
+    MapReader load = root.map("load");
+    if (load.has("normal_force") && load.has("approach")) {
+      load.fail("approach", "give normal_force [N] or approach [m], not both");
+    }
+    if (load.has("normal_force")) {
+      c.normal.normal_force = positive(load, "normal_force");
+    } else if (load.has("approach")) {
+      c.approach = positive(load, "approach");
+      if (c.normal_model != "hertz") load.fail("approach", "only with normal_model hertz");
+    } else {
+      load.fail("normal_force", "needs normal_force [N] or approach [m]");
+    }
+    load.allow("normal_force");
+    load.allow("approach");
+    load.finish();
   }
   // Materials, friction, K_ij.
-  const YAML::Node bodies = root["bodies"];
-  if (!bodies) bad(path, "bodies", "missing (wheel, rail)");
-  c.normal.body1 = material_of(bodies["wheel"], path, "bodies.wheel");
-  c.normal.body2 = material_of(bodies["rail"], path, "bodies.rail");
-  if (!root["friction"]) bad(path, "friction", "missing (mu [-])");
-  c.friction = positive(root["friction"], path, "friction");
-  if (const auto k = root["reduction"]) {
-    if (k["k"])
-      c.reduction = contact::ReductionFactors::uniform(positive(k["k"], path, "reduction.k"));
-    if (k["k11"]) c.reduction.k11 = positive(k["k11"], path, "reduction.k11");
-    if (k["k22"]) c.reduction.k22 = positive(k["k22"], path, "reduction.k22");
+  {
+    MapReader bodies = root.map("bodies");
+    c.normal.body1 = material_of(bodies.map("wheel"));
+    c.normal.body2 = material_of(bodies.map("rail"));
+    bodies.finish();
+  }
+  c.friction = positive(root, "friction");
+  if (root.has("reduction")) {
+    MapReader k = root.map("reduction");
+    if (k.has("k")) c.reduction = contact::ReductionFactors::uniform(positive(k, "k"));
+    c.reduction.k11 = positive_or(k, "k11", c.reduction.k11);
+    c.reduction.k22 = positive_or(k, "k22", c.reduction.k22);
     // K23 = K22 unless given (Toumi 2016, section 4.2.4).
-    if (k["k22"] && !k["k23"] && !k["k"]) c.reduction.k23 = c.reduction.k22;
-    if (k["k23"]) c.reduction.k23 = positive(k["k23"], path, "reduction.k23");
-    if (k["k33"]) c.reduction.k33 = positive(k["k33"], path, "reduction.k33");
+    if (k.has("k22") && !k.has("k23") && !k.has("k")) c.reduction.k23 = c.reduction.k22;
+    c.reduction.k23 = positive_or(k, "k23", c.reduction.k23);
+    c.reduction.k33 = positive_or(k, "k33", c.reduction.k33);
+    k.allow("k");
+    k.finish();
   }
+  root.allow("reduction");
   // Models.
-  const YAML::Node models = root["models"];
-  if (!models || !models.IsSequence() || models.size() == 0) {
-    bad(path, "models", "expected a non-empty list of {name, options}");
-  }
-  for (std::size_t i = 0; i < models.size(); ++i) {
-    const std::string key = fmt::format("models[{}]", i);
-    NamedModel m;
-    m.name = models[i].IsMap() ? models[i]["name"].as<std::string>() : models[i].as<std::string>();
-    if (models[i].IsMap()) m.options = options_of(models[i]["options"], path, key + ".options");
-    try {
-      (void)contact::make_tangential_model(m.name, m.options);
-    } catch (const std::invalid_argument& e) {
-      bad(path, key, e.what());
+  {
+    const YAML::Node models = root.node("models");
+    if (!models.IsSequence() || models.size() == 0) {
+      root.fail("models", "expected a non-empty list of {name, options}");
     }
-    c.models.push_back(std::move(m));
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      const std::string key = fmt::format("models[{}]", i);
+      NamedModel m = named_model(models[i], path, key);
+      try {
+        (void)contact::make_tangential_model(m.name, m.options);
+      } catch (const std::invalid_argument& e) {
+        const auto [l, col] = position_of(models[i]);
+        throw YamlInputError(path, l, col, key, e.what());
+      }
+      c.models.push_back(std::move(m));
+    }
   }
   // Curves and patch picture.
-  if (const auto cv = root["curves"]) {
-    c.longitudinal = curve_of(cv["longitudinal"], path, "curves.longitudinal");
-    c.lateral = curve_of(cv["lateral"], path, "curves.lateral");
-    c.spin = curve_of(cv["spin"], path, "curves.spin");
-    c.combined = curve_of(cv["combined"], path, "curves.combined");
+  if (root.has("curves")) {
+    MapReader cv = root.map("curves");
+    c.longitudinal = curve_of(cv, "longitudinal");
+    c.lateral = curve_of(cv, "lateral");
+    c.spin = curve_of(cv, "spin");
+    c.combined = curve_of(cv, "combined");
+    cv.finish();
   }
-  if (const auto p = root["patch"]) {
-    if (p["model"]) c.patch_model.name = p["model"].as<std::string>();
-    if (p["options"]) c.patch_model.options = options_of(p["options"], path, "patch.options");
-    if (const auto cr = p["creepage"]) {
-      if (cr["xi_x"])
-        c.patch_creepage.longitudinal = number(cr["xi_x"], path, "patch.creepage.xi_x");
-      if (cr["xi_y"]) c.patch_creepage.lateral = number(cr["xi_y"], path, "patch.creepage.xi_y");
-      if (cr["phi"]) c.patch_creepage.spin = number(cr["phi"], path, "patch.creepage.phi");
+  root.allow("curves");
+  if (root.has("patch")) {
+    MapReader p = root.map("patch");
+    c.patch_model.name = p.string_or("model", c.patch_model.name);
+    if (p.has("options")) c.patch_model.options = options_of(p, "options");
+    p.allow("options");
+    if (p.has("creepage")) {
+      MapReader cr = p.map("creepage");
+      c.patch_creepage.longitudinal = cr.number_or("xi_x", c.patch_creepage.longitudinal);
+      c.patch_creepage.lateral = cr.number_or("xi_y", c.patch_creepage.lateral);
+      c.patch_creepage.spin = cr.number_or("phi", c.patch_creepage.spin);
+      cr.finish();
     }
+    p.allow("creepage");
+    p.finish();
   }
+  root.allow("patch");
+  root.finish();
   return c;
 }
 

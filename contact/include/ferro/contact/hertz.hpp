@@ -66,6 +66,12 @@ inline constexpr double kHertzMaxCurvature = 1e5;        ///< [1/m]
 /// m, n, r for the angle theta of eq. (13), cos(theta) = |A - B| / (A + B), theta in (0, pi/2].
 [[nodiscard]] HertzCoefficients hertz_coefficients(double theta);
 
+/// Largest curvature ratio (larger/smaller) the elliptic solution accepts [-]; beyond it the
+/// axis ratio falls below kMinAxisRatio and the elliptic modulus sqrt(1 - k^2) rounds to 1.
+inline constexpr double kMaxCurvatureRatio = 1e10;
+/// Smallest minor/major axis ratio accepted [-] (rho(kMinAxisRatio) > kMaxCurvatureRatio).
+inline constexpr double kMinAxisRatio = 1e-7;
+
 /// Minor/major semi-axis ratio k = b_minor/a_major (in (0, 1]) of the Hertz ellipse for the
 /// curvature ratio rho = larger/smaller curvature >= 1.
 [[nodiscard]] double hertz_axis_ratio(double curvature_ratio);

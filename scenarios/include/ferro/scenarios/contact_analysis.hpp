@@ -16,6 +16,11 @@ struct CurvePoint {
   double force_x = 0.0, force_y = 0.0, moment_z = 0.0;  ///< [N], [N m], summed over patches
 };
 
+/// Throws std::invalid_argument when a force or the moment of `s` is not finite: the input
+/// was outside the range the model's arithmetic holds (overflow), and a NaN or infinite force
+/// must never be printed or written as a result. `what` names the model and the input.
+void require_finite_forces(const contact::TangentialSolution& s, const std::string& what);
+
 /// Every enabled curve for every model of the case, on the patches of `normal`.
 [[nodiscard]] std::vector<CurvePoint> compute_creep_curves(const ContactCase& c,
                                                            const contact::NormalSolution& normal);

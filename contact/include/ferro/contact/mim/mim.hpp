@@ -78,8 +78,19 @@ struct HertzRollingInput {
   /// a/b >= 1); true: `elements_minor` x `elements_minor` rectangular elements over the patch
   /// (grid_over_ellipse), the same resolution of each axis at every a/b.
   bool grid_over_patch = false;
+  /// Throws std::invalid_argument naming the field; elements_minor must lie in
+  /// [4, max_elements_minor(a, b)].
   void validate(const std::string& where = "HertzRollingInput") const;
 };
+
+/// Largest grid a Hertzian MIM solve accepts [elements]. The FFT operator needs about 0.5 kB
+/// per element (padded real and complex buffers, eleven kernel spectra), so this is some
+/// 150 MB and a solve of a few tens of seconds; larger requests are bad input, not a job.
+inline constexpr std::size_t kMaxGridElements = std::size_t{1} << 18;
+
+/// Largest elements_minor (elements across the shorter axis) whose grid for an a x b ellipse
+/// stays within kMaxGridElements; below 4 when the aspect ratio is too large for any grid.
+[[nodiscard]] int max_elements_minor(double semi_axis_x, double semi_axis_y);
 
 /// Builds the gap that reproduces the ellipse a x b under F_n (hertz_gap.hpp), a grid with
 /// `elements_minor` elements across the shorter axis, solves. One-shot: builds its influence
