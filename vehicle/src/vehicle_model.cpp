@@ -498,7 +498,10 @@ int VehicleModel::rhs(double t, std::span<const double> x, std::span<double> xdo
   try {
     impl_->evaluate(t, x, xdot, nullptr, nullptr);
   } catch (const std::out_of_range&) {
-    return kRhsFatal;  // the vehicle left the designed track
+    // The vehicle left the designed track or a contact table's range. A trial state of the
+    // integrator's corrector may do so while the solution does not: recoverable (the step is
+    // cut); a solution that really leaves it still stops the run after repeated failures.
+    return kRhsRecoverable;
   } catch (const std::exception&) {
     return kRhsRecoverable;
   }
