@@ -587,9 +587,15 @@ const VehicleModelInputs& VehicleModel::inputs() const { return impl_->in; }
 // ---------------------------------------------------------------------------------------------
 // Static equilibrium
 
-std::vector<double> VehicleModel::static_equilibrium(double t) const {
+std::vector<double> VehicleModel::static_equilibrium(double t,
+                                                     std::span<const double> start) const {
   const Impl& m = *impl_;
-  std::vector<double> x = rest_state();
+  if (!start.empty() && start.size() != m.n_states) {
+    throw std::invalid_argument(fmt::format(
+        "static_equilibrium: start has {} entries, the model {} states", start.size(), m.n_states));
+  }
+  std::vector<double> x = start.empty() ? rest_state()
+                                        : std::vector<double>(start.begin(), start.end());
   // Unknowns: positions, spin perturbations and series-damper deflections; residuals: the
   // accelerations of those positions and the rates of the other two.
   std::vector<int> unknown, residual;
@@ -617,7 +623,7 @@ std::vector<double> VehicleModel::static_equilibrium(double t) const {
     // Lower a wheelset onto the rails (touching height of the centred pose, found by bisection
     // on the source's contacts, then a typical Hertz approach) so that Newton starts with
     // contact stiffness.
-    if (b.has_contact && b.q[2] >= 0) {
+    if (b.has_contact && b.q[2] >= 0 && start.empty()) {
       std::vector<contact::WheelRailContact> points;
       double lifted = -0.02, penetrating = 0.02;  // pose.vertical bracket [m]
       for (int it = 0; it < 40; ++it) {

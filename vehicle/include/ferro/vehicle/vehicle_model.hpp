@@ -143,8 +143,10 @@ class VehicleModel final : public OdeSystem {
   /// from rest_state() with the wheelsets lowered onto the rails. Numerical Jacobian, minimum-norm
   /// steps (weakly determined directions stay near rest); the car body's x is held at rest (it
   /// defines the neutral longitudinal position of the whole vehicle). Throws
-  /// std::runtime_error when it does not converge.
-  [[nodiscard]] std::vector<double> static_equilibrium(double t = 0.0) const;
+  /// std::runtime_error when it does not converge. `start` (size() entries, optional) replaces
+  /// the rest state as the initial guess (e.g. beyond a bump stop's free play).
+  [[nodiscard]] std::vector<double> static_equilibrium(double t = 0.0,
+                                                       std::span<const double> start = {}) const;
 
   [[nodiscard]] std::size_t wheelset_count() const;  ///< wheelsets with contact in the model
   /// State index of a body's position DOF (-1 when frozen, absent, or a wheelset's pitch).
