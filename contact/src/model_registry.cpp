@@ -255,7 +255,7 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
     if (path.empty()) {
       throw std::invalid_argument(
           "mim_table option 'table': give the HDF5 table path (table=PATH or $FERRO_MIM_TABLE; "
-          "build one with `ferrodyn contact mim-table --out PATH`)");
+          "build one with `ferrodyn contact mim-table -o PATH`)");
     }
     return std::make_unique<MimTableModel>(MimTable::read_hdf5(path));
   }

@@ -254,7 +254,7 @@ void check_bump_stop_table(MapReader& r, const SuspensionElementSpec& s, const s
 
 const std::vector<std::string>& wheel_rail_keys() {
   static const std::vector<std::string> keys = {
-      "geometry",     "wheel_profile", "rail_profile",       "imported_table",
+      "geometry",     "wheel_profile", "rail_profile",       "imported_table", "table_file",
       "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
       "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
@@ -267,6 +267,7 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   if (r.has("wheel_profile")) w.wheel_profile = resolve(r, r.string("wheel_profile"));
   if (r.has("rail_profile")) w.rail_profile = resolve(r, r.string("rail_profile"));
   if (r.has("imported_table")) w.imported_table = resolve(r, r.string("imported_table"));
+  if (r.has("table_file")) w.table_file = resolve(r, r.string("table_file"));
   for (const char* key : {"wheel_profile", "rail_profile", "imported_table"}) {
     r.allow(key);
     if (r.has(key)) {

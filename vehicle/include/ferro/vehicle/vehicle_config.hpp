@@ -84,6 +84,9 @@ struct WheelRailSpec {
   std::string wheel_profile;  ///< file [path]
   std::string rail_profile;   ///< file [path]
   std::string imported_table; ///< CSV file for geometry "imported"
+  /// Geometry "table": HDF5 cache of the multi-point table, read when it was built from the
+  /// same profiles, pair and grid, otherwise built and written there; empty: in memory only.
+  std::string table_file;
   double track_gauge = 1.435;           ///< [m]
   double flange_back_distance = 1.360;  ///< [m]
   /// Flange-back position in wheel-profile coordinates [m]; NaN: the profile's smallest y
