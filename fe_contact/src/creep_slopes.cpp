@@ -121,12 +121,16 @@ SlopeResult reduction_factors(mim::ComplianceOperator& modified,
   SlopeResult r;
   r.modified = creep_stiffness(modified, gap, c, options);
   r.half_space = creep_stiffness(half_space, gap, c, options);
-  r.k.k11 = r.modified.s11 / r.half_space.s11;
-  r.k.k22 = r.modified.s22 / r.half_space.s22;
-  r.k.k23 = r.modified.s23 / r.half_space.s23;
-  r.k.k33 = r.modified.s33 / r.half_space.s33;
-  r.converged = r.modified.converged && r.half_space.converged;
+  r.update_ratios();
   return r;
+}
+
+void SlopeResult::update_ratios() {
+  k.k11 = modified.s11 / half_space.s11;
+  k.k22 = modified.s22 / half_space.s22;
+  k.k23 = modified.s23 / half_space.s23;
+  k.k33 = modified.s33 / half_space.s33;
+  converged = modified.converged && half_space.converged;
 }
 
 CreepCurve creep_curve(mim::ComplianceOperator& op, const mim::Field& gap, const SlopeCase& c,

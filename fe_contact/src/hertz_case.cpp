@@ -102,11 +102,7 @@ SlopeResult layer_reduction_factors(const HertzCase& c, const InterfaceLayer& la
   if (std::isfinite(layer.yield_shear)) {
     sc.yield_shear = layer.yield_shear;
     r.modified = creep_stiffness(layered, gap, sc, options);
-    r.k.k11 = r.modified.s11 / r.half_space.s11;
-    r.k.k22 = r.modified.s22 / r.half_space.s22;
-    r.k.k23 = r.modified.s23 / r.half_space.s23;
-    r.k.k33 = r.modified.s33 / r.half_space.s33;
-    r.converged = r.modified.converged && r.half_space.converged;
+    r.update_ratios();
   }
   return r;
 }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "a22_pair.hpp"
+
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -30,16 +32,7 @@ double a22_contact_modulus() {
   return e / (2.0 * (1.0 - 0.28 * 0.28));
 }
 
-std::shared_ptr<const fc::WheelRailPair> a22_pair() {
-  fc::WheelRailPairParams p;
-  p.track_gauge = 1.435;
-  p.flange_back_distance = 1.360;
-  p.flange_back_y = -0.070;
-  p.nominal_radius = 0.460;
-  return std::make_shared<const fc::WheelRailPair>(
-      fc::read_simpack_profile(kData + "/profiles/MBench_S1002_v3.prw"),
-      fc::read_simpack_profile(kData + "/profiles/MBench_UIC60_v3.prr"), p);
-}
+using ferro::test::a22_pair;
 
 }  // namespace
 

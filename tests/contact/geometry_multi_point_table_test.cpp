@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "a22_pair.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -33,16 +35,7 @@ constexpr double kPenetrationTol = 10.0e-6;        // [m], every point
 constexpr double kPositionTol = 3.0e-3;            // [m], every point
 constexpr double kAngleTol = 0.25;                 // [rad], every point
 
-std::shared_ptr<const fc::WheelRailPair> a22_pair() {
-  fc::WheelRailPairParams p;
-  p.track_gauge = 1.435;
-  p.flange_back_distance = 1.360;
-  p.flange_back_y = -0.070;
-  p.nominal_radius = 0.460;
-  return std::make_shared<const fc::WheelRailPair>(
-      fc::read_simpack_profile(kData + "/profiles/MBench_S1002_v3.prw"),
-      fc::read_simpack_profile(kData + "/profiles/MBench_UIC60_v3.prr"), p);
-}
+using ferro::test::a22_pair;
 
 const fc::MultiPointContactTable& a22_table() {
   static const fc::MultiPointContactTable t = [] {

@@ -63,6 +63,8 @@ struct SlopeResult {
   CreepStiffness half_space;
   contact::ReductionFactors k;  ///< K_ij = S_ij(modified) / S_ij(half-space)
   bool converged = false;
+  /// Sets k and converged from modified and half_space.
+  void update_ratios();
 };
 
 /// Pressure of a normal solve under F_n, then the probe runs. The gap is the undeformed
