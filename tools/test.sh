@@ -27,7 +27,6 @@ cmake -S . -B "$build" -G Ninja "${cmake_args[@]}"
 cmake --build "$build" -j "$jobs"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tools/lsan.supp:print_suppressions=0}
 if [ "$run_default" = 1 ]; then
   echo "== default tests ($build)"
   ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE slow
