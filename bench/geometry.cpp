@@ -198,8 +198,9 @@ void BM_MultiPointTableBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_MultiPointTableBuild)->Iterations(1)->Unit(benchmark::kMillisecond);
 
-void BM_MultiPointTableLookup(benchmark::State& state) {
-  const fc::MultiPointContactTable& t = a22_multi_point_table();
+// 256 random loaded poses (lateral and roll within the table, 20-120 um interpenetration), the
+// same for the table and the search benchmarks.
+std::vector<fc::WheelsetPose> loaded_poses() {
   std::mt19937 rng(99);
   std::uniform_real_distribution<double> lat(-0.0115, 0.0115), roll(-0.0115, 0.0115),
       depth(20e-6, 120e-6);
@@ -208,6 +209,12 @@ void BM_MultiPointTableLookup(benchmark::State& state) {
     p = fc::touching_pose(a22_pair(), fc::WheelsetPose{lat(rng), 0.0, roll(rng), 0.0});
     p.vertical += depth(rng);
   }
+  return poses;
+}
+
+void BM_MultiPointTableLookup(benchmark::State& state) {
+  const fc::MultiPointContactTable& t = a22_multi_point_table();
+  const std::vector<fc::WheelsetPose> poses = loaded_poses();
   std::vector<fc::WheelRailContact> out;
   out.reserve(2 * fc::MultiPointContactTable::kMaxPointsPerWheel);
   std::size_t i = 0, n = 0;
@@ -223,14 +230,7 @@ BENCHMARK(BM_MultiPointTableLookup);
 // The same poses through the online search (baseline for the table).
 void BM_SearchSourceLookup(benchmark::State& state) {
   const fc::SearchContactSource src(std::make_shared<const fc::WheelRailPair>(a22_pair()));
-  std::mt19937 rng(99);
-  std::uniform_real_distribution<double> lat(-0.0115, 0.0115), roll(-0.0115, 0.0115),
-      depth(20e-6, 120e-6);
-  std::vector<fc::WheelsetPose> poses(256);
-  for (auto& p : poses) {
-    p = fc::touching_pose(a22_pair(), fc::WheelsetPose{lat(rng), 0.0, roll(rng), 0.0});
-    p.vertical += depth(rng);
-  }
+  const std::vector<fc::WheelsetPose> poses = loaded_poses();
   std::vector<fc::WheelRailContact> out;
   std::size_t i = 0;
   for (auto _ : state) {

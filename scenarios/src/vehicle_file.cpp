@@ -497,41 +497,30 @@ VehicleConfig read_vehicle(MapReader& r) {
     } else {
       s2.allow("static_preload");
     }
-    // Bogie yaw stiffness (per side, both sides in one torsion element per bogie).
-    if (s2.has("bogie_yaw_stiffness")) {
-      const double k = positive(s2, "bogie_yaw_stiffness", "N m/rad");
+    // Bogie yaw stiffness (per side: both sides in one torsion element per bogie, factor 2) and
+    // the anti-roll bar (per bogie): torsion elements between the car body and each bogie.
+    const auto add_torsion = [&](const char* key, const char* element, Dof axis,
+                                 double per_bogie_factor) {
+      if (!s2.has(key)) {
+        s2.allow(key);
+        return;
+      }
+      const double k = positive(s2, key, "N m/rad");
       for (int b = 0; b < 2; ++b) {
         const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
         SuspensionElementSpec s;
-        s.name = fmt::format("secondary.{}.yaw_stiffness", bo.name);
+        s.name = fmt::format("secondary.{}.{}", bo.name, element);
         s.type = ElementType::torsion;
-        s.axis = Dof::yaw;
+        s.axis = axis;
         s.body_a = car_i;
         s.body_b = bogie_i[b];
         s.point_a = bo.position - cb.position;
-        s.k = 2.0 * k;
+        s.k = per_bogie_factor * k;
         v.elements.push_back(s);
       }
-    } else {
-      s2.allow("bogie_yaw_stiffness");
-    }
-    if (s2.has("anti_roll_bar")) {
-      const double k = positive(s2, "anti_roll_bar", "N m/rad");
-      for (int b = 0; b < 2; ++b) {
-        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
-        SuspensionElementSpec s;
-        s.name = fmt::format("secondary.{}.anti_roll_bar", bo.name);
-        s.type = ElementType::torsion;
-        s.axis = Dof::roll;
-        s.body_a = car_i;
-        s.body_b = bogie_i[b];
-        s.point_a = bo.position - cb.position;
-        s.k = k;
-        v.elements.push_back(s);
-      }
-    } else {
-      s2.allow("anti_roll_bar");
-    }
+    };
+    add_torsion("bogie_yaw_stiffness", "yaw_stiffness", Dof::yaw, 2.0);
+    add_torsion("anti_roll_bar", "anti_roll_bar", Dof::roll, 1.0);
     if (s2.has("lateral_bump_stop")) {
       MapReader bs = s2.map("lateral_bump_stop");
       SuspensionElementSpec proto;
