@@ -118,6 +118,31 @@ Scales scales(double a, double b, double normal_force, double mu, double shear_m
   return sc;
 }
 
+// Runs body(item, solver) for item = 0..count-1 on `threads` threads taking items in order, one
+// MIM solver per thread (its operators are reused across that thread's items); the first
+// exception stops the others and is rethrown.
+template <class Body>
+void for_each_item(int count, int threads, const Body& body) {
+  std::atomic<int> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto worker = [&] {
+    mim::HertzMimSolver solver;
+    try {
+      for (int item = next++; item < count; item = next++) body(item, solver);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = count;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
 }  // namespace
 
 double mim_table_spin_scale(double ratio, double poisson) {
@@ -225,51 +250,34 @@ MimTable MimTable::build(const MimTableSpec& requested) {
   // Work item = (ratio, xi_x) line; threads take lines in order (one MIM solver each, so the
   // unit-grid operators are reused along a ratio).
   const int lines = static_cast<int>(spec.ratio.size()) * nx;
-  std::atomic<int> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    mim::HertzMimSolver solver;
-    try {
-      for (int line = next++; line < lines; line = next++) {
-        const int ir = line / nx, ix = line % nx;
-        const double a = spec.ratio[ir] * b;
-        const Scales sc = scales(a, b, normal_force, mu, g, spec.poisson);
-        for (int iy = 0; iy < ny; ++iy) {
-          for (int is = 0; is < ns; ++is) {
-            if (spec.xi_x[ix] == 0.0 && spec.xi_y[iy] == 0.0 && spec.spin[is] == 0.0) continue;
-            mim::HertzRollingInput in;
-            in.semi_axis_x = a;
-            in.semi_axis_y = b;
-            in.normal_force = normal_force;
-            in.rolling = mim::RollingInput{spec.xi_x[ix] / sc.kx, spec.xi_y[iy] / sc.ky,
-                                           spec.spin[is] / t.spin_scale_[ir] / sc.ks, mu};
-            in.body1 = in.body2 = steel;
-            in.elements_minor = spec.elements;
-            const mim::MimResult r = solver.solve(in);
-            if (!r.converged) {
-              throw std::runtime_error(fmt::format(
-                  "mim table: MIM did not converge at a/b = {}, xi* = ({}, {}, {})",
-                  spec.ratio[ir], spec.xi_x[ix], spec.xi_y[iy], spec.spin[is]));
-            }
-            const std::size_t k = t.index(ir, ix, iy, is);
-            t.fx_[k] = r.force_x / sc.s;
-            t.fy_[k] = r.force_y / sc.s;
-            t.mz_[k] = r.moment_z / (sc.s * sc.c);
-          }
+  for_each_item(lines, spec.threads, [&](int line, mim::HertzMimSolver& solver) {
+    const int ir = line / nx, ix = line % nx;
+    const double a = spec.ratio[ir] * b;
+    const Scales sc = scales(a, b, normal_force, mu, g, spec.poisson);
+    for (int iy = 0; iy < ny; ++iy) {
+      for (int is = 0; is < ns; ++is) {
+        if (spec.xi_x[ix] == 0.0 && spec.xi_y[iy] == 0.0 && spec.spin[is] == 0.0) continue;
+        mim::HertzRollingInput in;
+        in.semi_axis_x = a;
+        in.semi_axis_y = b;
+        in.normal_force = normal_force;
+        in.rolling = mim::RollingInput{spec.xi_x[ix] / sc.kx, spec.xi_y[iy] / sc.ky,
+                                       spec.spin[is] / t.spin_scale_[ir] / sc.ks, mu};
+        in.body1 = in.body2 = steel;
+        in.elements_minor = spec.elements;
+        const mim::MimResult r = solver.solve(in);
+        if (!r.converged) {
+          throw std::runtime_error(fmt::format(
+              "mim table: MIM did not converge at a/b = {}, xi* = ({}, {}, {})",
+              spec.ratio[ir], spec.xi_x[ix], spec.xi_y[iy], spec.spin[is]));
         }
+        const std::size_t k = t.index(ir, ix, iy, is);
+        t.fx_[k] = r.force_x / sc.s;
+        t.fy_[k] = r.force_y / sc.s;
+        t.mz_[k] = r.moment_z / (sc.s * sc.c);
       }
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = lines;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < spec.threads; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
-  if (failure) std::rethrow_exception(failure);
+  });
   return t;
 }
 
@@ -460,39 +468,22 @@ std::vector<MimTableErrorPoint> mim_table_error_map(const MimTable& table, int p
   const Material steel = Material::from_young(210.0e9, spec.poisson);
   const double g = combine(steel, steel).shear_modulus;
   const double b = 5.0e-3, normal_force = 100.0e3, mu = 0.3;
-  std::atomic<int> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    mim::HertzMimSolver solver;
-    try {
-      for (int k = next++; k < points; k = next++) {
-        MimTableErrorPoint& e = out[static_cast<std::size_t>(k)];
-        const double a = e.ratio * b;
-        const Scales sc = scales(a, b, normal_force, mu, g, spec.poisson);
-        mim::HertzRollingInput in;
-        in.semi_axis_x = a;
-        in.semi_axis_y = b;
-        in.normal_force = normal_force;
-        in.rolling = mim::RollingInput{e.xi_x / sc.kx, e.xi_y / sc.ky, e.spin / sc.ks, mu};
-        in.body1 = in.body2 = steel;
-        in.elements_minor = spec.elements;
-        const mim::MimResult r = solver.solve(in);
-        e.direct = {r.force_x / sc.s, r.force_y / sc.s, r.moment_z / (sc.s * sc.c)};
-        e.table = table.at(e.ratio, {e.xi_x, e.xi_y, e.spin});
-        e.error = std::hypot(e.table.f_x - e.direct.f_x, e.table.f_y - e.direct.f_y);
-      }
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = points;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
-  if (failure) std::rethrow_exception(failure);
+  for_each_item(points, threads, [&](int k, mim::HertzMimSolver& solver) {
+    MimTableErrorPoint& e = out[static_cast<std::size_t>(k)];
+    const double a = e.ratio * b;
+    const Scales sc = scales(a, b, normal_force, mu, g, spec.poisson);
+    mim::HertzRollingInput in;
+    in.semi_axis_x = a;
+    in.semi_axis_y = b;
+    in.normal_force = normal_force;
+    in.rolling = mim::RollingInput{e.xi_x / sc.kx, e.xi_y / sc.ky, e.spin / sc.ks, mu};
+    in.body1 = in.body2 = steel;
+    in.elements_minor = spec.elements;
+    const mim::MimResult r = solver.solve(in);
+    e.direct = {r.force_x / sc.s, r.force_y / sc.s, r.moment_z / (sc.s * sc.c)};
+    e.table = table.at(e.ratio, {e.xi_x, e.xi_y, e.spin});
+    e.error = std::hypot(e.table.f_x - e.direct.f_x, e.table.f_y - e.direct.f_y);
+  });
   return out;
 }
 
