@@ -33,12 +33,33 @@ std::vector<Mode> linear_modes(const OdeSystem& system, double t, std::span<cons
 }
 
 namespace {
-Mode least_damped_at(const SystemAtSpeed& factory, double speed, std::span<const double> x_eq) {
+std::vector<Mode> modes_at(const SystemAtSpeed& factory, double speed,
+                           std::span<const double> x_eq) {
   const auto system = factory(speed);
-  const auto modes = linear_modes(*system, 0.0, x_eq);
+  auto modes = linear_modes(*system, 0.0, x_eq);
   if (modes.empty())
     throw std::runtime_error(fmt::format("no non-neutral mode at V = {} m/s", speed));
-  return modes.front();
+  return modes;
+}
+
+Mode least_damped_at(const SystemAtSpeed& factory, double speed, std::span<const double> x_eq) {
+  const auto modes = modes_at(factory, speed, x_eq);
+  for (const Mode& m : modes) {  // sorted by increasing damping ratio
+    if (std::abs(m.damping_ratio) >= kNeutralDamping) return m;
+  }
+  return modes.front();  // every mode neutral
+}
+
+/// The mode whose eigenvalue (upper half plane) is closest to `reference`.
+Mode mode_near(const SystemAtSpeed& factory, double speed, std::span<const double> x_eq,
+               std::complex<double> reference) {
+  const auto modes = modes_at(factory, speed, x_eq);
+  const auto upper = [](std::complex<double> l) { return std::complex<double>(l.real(), std::abs(l.imag())); };
+  const auto it = std::min_element(modes.begin(), modes.end(), [&](const Mode& a, const Mode& b) {
+    return std::abs(upper(a.eigenvalue) - upper(reference)) <
+           std::abs(upper(b.eigenvalue) - upper(reference));
+  });
+  return *it;
 }
 }  // namespace
 
@@ -59,22 +80,35 @@ std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
         fmt::format("critical_speed: need 0 < v_min < v_max and scan_points >= 2, got {}, {}, {}",
                     v_min, v_max, scan_points));
   }
-  auto zeta = [&](double v) { return least_damped_at(factory, v, x_eq).damping_ratio; };
-  double v_prev = v_min, z_prev = zeta(v_min);
-  if (z_prev <= 0.0) return v_min;
+  if (least_damped_at(factory, v_min, x_eq).damping_ratio < 0.0) return v_min;
+  double v_prev = v_min;
   for (int i = 1; i < scan_points; ++i) {
     const double v = v_min + (v_max - v_min) * i / (scan_points - 1);
-    const double z = zeta(v);
-    if (z <= 0.0) {
+    const Mode m = least_damped_at(factory, v, x_eq);
+    if (m.damping_ratio < 0.0) {
+      // Follow the mode that went unstable (by continuity of its eigenvalue) down to where
+      // its damping is 0.
+      const double dv = (v_max - v_min) / (scan_points - 1);
+      std::complex<double> reference = m.eigenvalue;
       double lo = v_prev, hi = v;
+      // The mode may have crossed zero before the scan saw it pass -kNeutralDamping: step back
+      // to a speed where it is still damped.
+      for (Mode at_lo = mode_near(factory, lo, x_eq, reference); at_lo.damping_ratio <= 0.0;
+           at_lo = mode_near(factory, lo, x_eq, reference)) {
+        reference = at_lo.eigenvalue;
+        hi = lo;
+        if (lo <= v_min) return v_min;
+        lo = std::max(v_min, lo - dv);
+      }
       while (hi - lo > rel_tol * hi) {
         const double mid = 0.5 * (lo + hi);
-        (zeta(mid) > 0.0 ? lo : hi) = mid;
+        const Mode at_mid = mode_near(factory, mid, x_eq, reference);
+        reference = at_mid.eigenvalue;
+        (at_mid.damping_ratio > 0.0 ? lo : hi) = mid;
       }
       return 0.5 * (lo + hi);
     }
     v_prev = v;
-    z_prev = z;
   }
   return std::nullopt;
 }

@@ -25,22 +25,29 @@ struct Mode {
 [[nodiscard]] std::vector<Mode> linear_modes(const OdeSystem& system, double t,
                                              std::span<const double> x_eq);
 
+/// Modes with |damping ratio| below this are treated as neutral: undamped structural modes (a
+/// wheelset bouncing on the Hertz contact stiffness without contact damping) whose computed
+/// damping is numerical noise of either sign. They are never taken as the least damped mode
+/// and never flag an instability; a mode becoming unstable must pass -kNeutralDamping.
+inline constexpr double kNeutralDamping = 1e-3;
+
 /// Builds the system at a given speed [m/s].
 using SystemAtSpeed = std::function<std::unique_ptr<OdeSystem>(double speed)>;
 
 struct SweepPoint {
   double speed = 0.0;  ///< [m/s]
-  Mode least_damped;   ///< least damped mode at that speed
+  Mode least_damped;   ///< least damped non-neutral mode at that speed
 };
 
-/// Least damped mode at each speed.
+/// Least damped non-neutral mode at each speed.
 [[nodiscard]] std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory,
                                                     const std::vector<double>& speeds,
                                                     std::span<const double> x_eq);
 
-/// Lowest speed in [v_min, v_max] where the least damped mode's damping ratio crosses zero
-/// (stable below): scan on `scan_points` speeds, then bisection to a relative width `rel_tol`.
-/// Empty when no crossing is found in the range.
+/// Lowest speed in [v_min, v_max] where a mode's damping ratio crosses zero (stable below):
+/// scan on `scan_points` speeds for the first speed with a mode below -kNeutralDamping, then
+/// bisection on the damping of that mode (followed by its frequency) to a relative width
+/// `rel_tol`. Empty when no crossing is found in the range.
 [[nodiscard]] std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
                                                    double v_max, std::span<const double> x_eq,
                                                    int scan_points = 64, double rel_tol = 1e-10);
