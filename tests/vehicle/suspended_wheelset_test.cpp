@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <numbers>
 
@@ -173,6 +174,51 @@ TEST(SuspendedWheelset, invalid_parameters_name_the_field) {
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("model.wheelset.mass"), std::string::npos) << e.what();
+  }
+}
+
+// The wheelset of eq. (151) beside a decoupled, lightly *negatively* damped oscillator (8 Hz,
+// zeta = -2e-4): the numerical picture of an undamped structural mode (a wheelset bouncing on
+// the Hertz contact stiffness) whose computed damping is noise of either sign. The critical
+// speed must still be the wheelset's Routh-Hurwitz speed, not the start of the range.
+class WheelsetWithNeutralMode final : public OdeSystem {
+ public:
+  explicit WheelsetWithNeutralMode(std::unique_ptr<OdeSystem> wheelset)
+      : wheelset_(std::move(wheelset)) {}
+  [[nodiscard]] std::size_t size() const override { return wheelset_->size() + 2; }
+  int rhs(double t, std::span<const double> x, std::span<double> xdot) const override {
+    const std::size_t n = wheelset_->size();
+    const int flag = wheelset_->rhs(t, x.first(n), xdot.first(n));
+    constexpr double kOmega = 2.0 * std::numbers::pi * 8.0;
+    constexpr double kZeta = -2e-4;
+    xdot[n] = x[n + 1];
+    xdot[n + 1] = -kOmega * kOmega * x[n] - 2.0 * kZeta * kOmega * x[n + 1];
+    return flag;
+  }
+  [[nodiscard]] std::vector<SignalInfo> state_info() const override {
+    auto info = wheelset_->state_info();
+    info.push_back({"q", "m", "neutral oscillator"});
+    info.push_back({"q_dot", "m/s", "its rate"});
+    return info;
+  }
+
+ private:
+  std::unique_ptr<OdeSystem> wheelset_;
+};
+
+TEST(SuspendedWheelset, critical_speed_ignores_a_neutral_mode_of_either_sign) {
+  // Same oracle and tolerance as eigen_critical_speed_matches_formula_151.
+  constexpr double kEigenVsClosedFormRelTol = 1e-6;
+  const std::vector<double> x_eq(6, 0.0);
+  for (const auto& c : closed_form_cases()) {
+    const double vc_formula = analytic_critical_speed(c.params, creep_coefficients(c.creep));
+    const auto wheelset = factory_for(c);
+    const SystemAtSpeed with_neutral = [&](double v) {
+      return std::make_unique<WheelsetWithNeutralMode>(wheelset(v));
+    };
+    const auto vc = critical_speed(with_neutral, 1.0, 4.0 * vc_formula, x_eq);
+    ASSERT_TRUE(vc.has_value()) << c.name;
+    EXPECT_NEAR(*vc / vc_formula, 1.0, kEigenVsClosedFormRelTol) << c.name;
   }
 }
 
