@@ -7,6 +7,7 @@
 #include "ferro/contact/io/hdf5.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -311,6 +312,73 @@ void KijTable::write_hdf5(const std::string& path) const {
   file.ensure_group("/provenance");
   for (const auto& [key, value] : provenance_) file.set_attribute("/provenance", key, value);
   file.close();
+}
+
+KijPatchLookup::KijPatchLookup(const KijTable& table,
+                               const std::map<std::string, double>& fixed) {
+  const auto& names = table.axis_names();
+  for (const auto& [name, value] : fixed) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      throw std::invalid_argument(fmt::format("K_ij table: no axis '{}'; its axes: {}", name,
+                                              fmt::join(names, ", ")));
+    }
+    (void)value;
+  }
+  std::vector<std::size_t> patch_axis_index;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (fixed.count(names[i]) != 0) continue;
+    if (names[i] == "normal_force" || names[i] == "peak_pressure") {
+      patch_axis_index.push_back(i);
+      pressure_axis_.push_back(names[i] == "peak_pressure");
+      axes_.push_back(table.axes()[i]);
+    } else {
+      throw std::invalid_argument(fmt::format(
+          "K_ij table: axis '{}' needs a value (only normal_force and peak_pressure come from "
+          "the contact patch)",
+          names[i]));
+    }
+  }
+  std::map<std::string, double> point = fixed;
+  const std::size_t n0 = axes_.empty() ? 1 : axes_[0].size();
+  const std::size_t n1 = axes_.size() < 2 ? 1 : axes_[1].size();
+  for (std::size_t i = 0; i < n0; ++i) {
+    for (std::size_t j = 0; j < n1; ++j) {
+      if (!axes_.empty()) point[names[patch_axis_index[0]]] = axes_[0][i];
+      if (axes_.size() > 1) point[names[patch_axis_index[1]]] = axes_[1][j];
+      const ReductionFactors k = table.at(point);
+      values_.push_back({k.k11, k.k22, k.k23, k.k33});
+    }
+  }
+}
+
+ReductionFactors KijPatchLookup::at(const ContactPatch& patch) const {
+  // Cell and weight along each patch axis (clamped at the ends).
+  std::array<std::size_t, 2> cell{0, 0};
+  std::array<double, 2> frac{0.0, 0.0};
+  std::array<std::size_t, 2> size{1, 1};
+  for (std::size_t a = 0; a < axes_.size(); ++a) {
+    const std::vector<double>& x = axes_[a];
+    size[a] = x.size();
+    const double v = pressure_axis_[a] ? patch.peak_pressure : patch.normal_force;
+    if (x.size() < 2 || !(v > x.front())) continue;
+    if (!(v < x.back())) {
+      cell[a] = x.size() - 2;
+      frac[a] = 1.0;
+      continue;
+    }
+    const auto it = std::upper_bound(x.begin(), x.end(), v);
+    cell[a] = static_cast<std::size_t>(it - x.begin()) - 1;
+    frac[a] = (v - x[cell[a]]) / (x[cell[a] + 1] - x[cell[a]]);
+  }
+  std::array<double, 4> k{0.0, 0.0, 0.0, 0.0};
+  for (int c = 0; c < 4; ++c) {
+    const std::size_t di = (c & 1) != 0 ? 1 : 0, dj = (c & 2) != 0 ? 1 : 0;
+    if ((di == 1 && size[0] < 2) || (dj == 1 && size[1] < 2)) continue;
+    const double w = (di == 1 ? frac[0] : 1.0 - frac[0]) * (dj == 1 ? frac[1] : 1.0 - frac[1]);
+    const std::array<double, 4>& v = values_[(cell[0] + di) * size[1] + cell[1] + dj];
+    for (int q = 0; q < 4; ++q) k[static_cast<std::size_t>(q)] += w * v[static_cast<std::size_t>(q)];
+  }
+  return {k[0], k[1], k[2], k[3]};
 }
 
 }  // namespace ferro::contact

@@ -258,7 +258,7 @@ const std::vector<std::string>& wheel_rail_keys() {
       "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
       "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
-      "reduction_table", "regularisation_speed"};
+      "reduction_table", "reduction_table_point", "regularisation_speed"};
   return keys;
 }
 
@@ -338,6 +338,17 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
       r.fail("reduction_table", fmt::format("file does not exist (looked for {})", w.reduction_table));
   } else {
     r.allow("reduction_table");
+  }
+  if (r.has("reduction_table_point")) {
+    MapReader o = r.map("reduction_table_point");
+    w.reduction_table_point.clear();
+    for (const auto& kv : o.yaml()) {
+      const std::string key = kv.first.as<std::string>();
+      w.reduction_table_point[key] = o.number(key);
+    }
+    o.finish();
+  } else {
+    r.allow("reduction_table_point");
   }
   w.regularisation_speed = r.number_or("regularisation_speed", w.regularisation_speed);
   if (!(w.regularisation_speed > 0.0))

@@ -16,6 +16,7 @@
 #include "ferro/contact/hertz.hpp"
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/material.hpp"
+#include "ferro/contact/reduction_factors.hpp"
 #include "ferro/vehicle/stability.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
@@ -138,6 +139,73 @@ TEST(VehicleModelLinear, single_wheelset_reproduces_critical_speed_of_eq_151) {
     std::printf("single wheelset: eq. (151) %.6f m/s, eigenvalues %.6f m/s, rel. error %.2e\n",
                 v_formula, *vc, *vc / v_formula - 1.0);
   }
+}
+
+TEST(VehicleModelLinear, kij_table_in_the_rhs_scales_the_critical_speed_as_eq_151) {
+  // A K_ij table over the wheel load (taken from each contact patch) and a layer thickness
+  // (fixed by the scene), separable K = K(F) g(h): at the cell centre multilinear interpolation
+  // gives mean K x mean g = 0.7 x 0.75. Eq. (151) with f11 = f22 = 0.525 f is the oracle; same
+  // tolerance as the constant-K case above.
+  constexpr double kRelTol = 1e-4;
+  constexpr double kExpectedK = 0.7 * 0.75;
+  // Kx != Ky: with equal stiffnesses eq. (151) does not depend on f.
+  const WheelsetCase c{1500.0, 0.75, 0.50, 0.15, 1.5e6, 0.6e6, 1.0, 3.0};
+  LinearCreep lc;
+  (void)single_wheelset(c, 10.0, lc);
+  const double f0 = 0.5 * c.m * kG;  // static wheel load
+  const std::vector<double> loads{0.5 * f0, 1.5 * f0}, layers{0.0, 1.0e-4};
+  const double k_load[2] = {0.6, 0.8}, g_layer[2] = {1.0, 0.5};
+  std::vector<double> k11, k22, k23, k33;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double k = k_load[i] * g_layer[j];
+      k11.push_back(k);
+      k22.push_back(k * lc.reduction[1]);
+      k23.push_back(lc.reduction[2]);
+      k33.push_back(lc.reduction[3]);
+    }
+  }
+  const std::string path = ::testing::TempDir() + "vehicle_kij_table.h5";
+  contact::KijTable({"normal_force", "layer_thickness"}, {loads, layers}, k11, k22, k23, k33)
+      .write_hdf5(path);
+
+  SuspendedWheelsetParams p;
+  p.mass = c.m;
+  p.yaw_inertia = c.m * c.e * c.e;
+  p.half_gauge = c.e;
+  p.rolling_radius = c.r0;
+  p.conicity = c.gamma;
+  p.primary_stiffness_x = c.kx;
+  p.primary_stiffness_y = c.ky;
+  const double f = kExpectedK * lc.f;
+  const double v_formula = analytic_critical_speed(p, CreepCoefficients{f, f});
+  ASSERT_TRUE(std::isfinite(v_formula));
+  const SystemAtSpeed factory = [&](double v) {
+    LinearCreep unused;
+    VehicleModelInputs in = single_wheelset(c, v, unused);
+    in.config.wheel_rail.reduction_table = path;
+    in.config.wheel_rail.reduction_table_point = {{"layer_thickness", 0.5e-4}};
+    return std::make_unique<VehicleModel>(std::move(in));
+  };
+  const std::vector<double> x0(4, 0.0);
+  const auto vc = critical_speed(factory, 0.2 * v_formula, 3.0 * v_formula, x0, 64, 1e-9);
+  ASSERT_TRUE(vc.has_value());
+  EXPECT_NEAR(*vc / v_formula, 1.0, kRelTol) << "formula " << v_formula << " m/s";
+  const double v_k1 = analytic_critical_speed(p, CreepCoefficients{lc.f, lc.f});
+  std::printf("single wheelset, K_ij table: eq. (151) %.6f m/s (K = 1: %.6f), eigenvalues %.6f "
+              "m/s\n",
+              v_formula, v_k1, *vc);
+  EXPECT_GT(std::abs(v_formula / v_k1 - 1.0), 0.1);  // the table matters here
+
+  // The table's other axes must be given; unknown names are refused.
+  LinearCreep unused;
+  VehicleModelInputs missing = single_wheelset(c, 10.0, unused);
+  missing.config.wheel_rail.reduction_table = path;
+  EXPECT_THROW({ VehicleModel m(std::move(missing)); }, std::invalid_argument);
+  VehicleModelInputs unknown = single_wheelset(c, 10.0, unused);
+  unknown.config.wheel_rail.reduction_table = path;
+  unknown.config.wheel_rail.reduction_table_point = {{"layer_thickness", 0.0}, {"tau", 1.0}};
+  EXPECT_THROW({ VehicleModel m(std::move(unknown)); }, std::invalid_argument);
 }
 
 // --- one bogie -------------------------------------------------------------------------------

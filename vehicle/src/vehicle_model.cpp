@@ -153,9 +153,6 @@ VehicleModel::VehicleModel(VehicleModelInputs inputs) : impl_(std::make_unique<I
           fmt::format("wheel_rail.normal_model: '{}' is not available in the vehicle model; "
                       "allowed: hertz",
                       wr.normal_model));
-  require(wr.reduction_table.empty(),
-          "wheel_rail.reduction_table: K_ij tables are not supported by the vehicle model yet; "
-          "give constants in wheel_rail.reduction");
   for (int i = 0; i < 4; ++i) {
     require(finite_positive(wr.reduction[static_cast<std::size_t>(i)]),
             fmt::format("wheel_rail.reduction[{}]: K_ij must be finite and > 0", i));
@@ -372,6 +369,15 @@ VehicleModel::VehicleModel(VehicleModelInputs inputs) : impl_(std::make_unique<I
   m.contact_modulus = contact::combine(m.material, m.material).contact_modulus;
   m.reduction = contact::ReductionFactors{wr.reduction[0], wr.reduction[1], wr.reduction[2],
                                           wr.reduction[3]};
+  if (!wr.reduction_table.empty()) {
+    try {
+      m.reduction_table.emplace(contact::KijTable::read_hdf5(wr.reduction_table),
+                                wr.reduction_table_point);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(
+          fmt::format("wheel_rail.reduction_table ({}): {}", wr.reduction_table, e.what()));
+    }
+  }
   try {
     m.tangential = contact::make_tangential_model(wr.tangential_model, wr.tangential_options);
   } catch (const std::invalid_argument& e) {

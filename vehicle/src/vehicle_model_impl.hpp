@@ -7,9 +7,11 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "ferro/contact/reduction_factors.hpp"
 #include "ferro/track/kinematics.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
@@ -73,6 +75,9 @@ struct VehicleModel::Impl {
   contact::Material material;
   double contact_modulus = 0.0;
   contact::ReductionFactors reduction;
+  /// K_ij from a table (wheel_rail.reduction_table), looked up per contact patch; empty:
+  /// the constants `reduction`.
+  std::optional<contact::KijPatchLookup> reduction_table;
   double nominal_rail_spacing = 1.5;
 
   /// Evaluates the model at (t, x): xdot (may be empty) and, when `wheels` is given, the

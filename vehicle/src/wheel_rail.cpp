@@ -80,7 +80,8 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
     problem.friction = model.in.config.wheel_rail.friction;
     problem.body1 = model.material;
     problem.body2 = model.material;
-    problem.reduction = model.reduction;
+    problem.reduction =
+        model.reduction_table ? model.reduction_table->at(patch) : model.reduction;
     problem.rolling_speed = rolling_speed;
     const contact::TangentialSolution tang = model.tangential->solve(problem);
 

@@ -7,6 +7,7 @@
 // Known deviations: the table is interpolated multilinearly and clamped at its axis ends
 // (queries outside the axes are counted in KijTable::clamped_queries()).
 
+#include <array>
 #include <atomic>
 #include <map>
 #include <string>
@@ -101,6 +102,23 @@ class KijTable {
   std::vector<double> k11_first_, k22_first_, k23_first_, k33_first_;
   std::map<std::string, std::string> provenance_;
   mutable std::atomic<long> clamped_{0};
+};
+
+/// A K_ij table with every axis but the patch's own fixed: precomputed at construction on the
+/// table's nodes of `normal_force` and `peak_pressure` (those of them the table has and `fixed`
+/// does not give), then looked up per contact patch without allocation (for right-hand sides).
+/// Same multilinear interpolation and end clamping as KijTable::at.
+class KijPatchLookup {
+ public:
+  /// Throws std::invalid_argument naming an axis of the table that `fixed` must give (any
+  /// axis other than normal_force, peak_pressure) or a name in `fixed` the table does not have.
+  KijPatchLookup(const KijTable& table, const std::map<std::string, double>& fixed);
+  [[nodiscard]] ReductionFactors at(const ContactPatch& patch) const;
+
+ private:
+  std::vector<bool> pressure_axis_;            ///< per patch axis: peak_pressure (else force)
+  std::vector<std::vector<double>> axes_;      ///< at most 2
+  std::vector<std::array<double, 4>> values_;  ///< row-major over axes_
 };
 
 }  // namespace ferro::contact

@@ -109,6 +109,9 @@ struct WheelRailSpec {
   /// K_ij: constants, or a table (HDF5, docs/KIJ_TABLE.md) looked up per contact.
   std::array<double, 4> reduction{1.0, 1.0, 1.0, 1.0};  ///< K11, K22, K23, K33
   std::string reduction_table;                          ///< path, empty: constants
+  /// Values of the table's axes other than the patch's own (normal_force, peak_pressure, taken
+  /// from each contact patch): e.g. layer_thickness, layer_shear_modulus [SI].
+  std::map<std::string, double> reduction_table_point;
   /// Creepages use max(|V|, regularisation_speed) in the denominator [m/s].
   double regularisation_speed = 0.1;
 };
