@@ -52,10 +52,25 @@ void sweep(const StripInput& s, const std::vector<double>& shape, double mu, Sum
   double sq_prev = x_edge * x_edge;
   double tx = 0.0, ty = 0.0;
   double sfx = 0.0, sfy = 0.0, smz = 0.0, adhesion = 0.0;
+  // Carter's adhesion zone ends at x_end; the first element past it blends Carter's value (the
+  // bound) into FASTSIM's update by how close x_end is to its leading edge, so that the forces
+  // are continuous in the creepages when x_end crosses an element boundary.
+  const double x_end = s.xc + s.l * (1.0 - 2.0 * u);
+  bool first_past = true;
+  const auto cap = [](double& vx, double& vy, double bound) {
+    const double v2 = vx * vx + vy * vy;
+    if (v2 > bound * bound) {
+      const double scale = bound / std::sqrt(v2);
+      vx *= scale;
+      vy *= scale;
+    }
+  };
   for (int k = 0; k < mx; ++k) {
     const double bound_shape = shape[static_cast<std::size_t>(k)];
+    const double bound = bound_peak * bound_shape;
     const double x_next = x_edge - dx;
     const double sq = (x_edge * x_edge + x_edge * x_next + x_next * x_next) / 3.0;
+    const double spin_y = -s.spin_gain * (sq_prev - sq);
     if (k == 0 || e_prev > -0.25 * kPi) {
       // Carter's adhesion zone of the creepages (and the leading element): Carter's increment.
       double inner = 0.0;
@@ -66,24 +81,28 @@ void sweep(const StripInput& s, const std::vector<double>& shape, double mu, Sum
       }
       const double q = bound_peak * (bound_shape - inner);
       tx -= s.dir_x * (q - q_prev);
-      ty -= s.dir_y * (q - q_prev);
+      ty -= s.dir_y * (q - q_prev) - spin_y;
       q_prev = q;
+      cap(tx, ty, bound);
     } else {
       // Past it: the rigid-slip increment with one flexibility turns the traction towards the
-      // slip direction (FASTSIM's update), the bound caps it below.
-      tx -= s.rate_x * dx;
-      ty -= s.rate_y * dx;
+      // slip direction (FASTSIM's update), the bound caps it.
+      double ax = tx - s.rate_x * dx, ay = ty - s.rate_y * dx + spin_y;
+      cap(ax, ay, bound);
+      if (first_past) {
+        first_past = false;
+        const double beta = std::clamp(1.0 - (x_end - x_edge) / dx, 0.0, 1.0);
+        double bx = tx - s.dir_x * (bound - q_prev), by = ty - s.dir_y * (bound - q_prev) + spin_y;
+        cap(bx, by, bound);
+        ax += beta * (bx - ax);
+        ay += beta * (by - ay);
+      }
+      tx = ax;
+      ty = ay;
     }
-    ty -= s.spin_gain * (sq_prev - sq);
-    const double bound = bound_peak * bound_shape;
     const double t2 = tx * tx + ty * ty;
     // On the bound (to round-off) counts as slip: Carter's slip zone lies exactly on it.
     const bool slipping = t2 >= bound * bound * (1.0 - 1e-12);
-    if (t2 > bound * bound) {
-      const double scale = bound / std::sqrt(t2);
-      tx *= scale;
-      ty *= scale;
-    }
     if (!slipping) adhesion += 1.0;
     const double x = x_edge - 0.5 * dx;
     sfx += tx;

@@ -3,9 +3,11 @@
 // creepage) evaluated independently by quadrature over the strips.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "ferro/contact/tangential_model.hpp"
 
@@ -205,6 +207,32 @@ TEST(fastrip_semi_hertz, strips_of_an_ellipse_match_the_ellipse) {
   const double scale = std::hypot(fe.force_x, fe.force_y);
   EXPECT_NEAR(fs.force_x, fe.force_x, kTolSemiHertz * scale);
   EXPECT_NEAR(fs.force_y, fe.force_y, kTolSemiHertz * scale);
+}
+
+// The forces are continuous in the creepages (a vehicle integrator needs it): over a fine sweep of
+// xi_x (with xi_y and spin) no step of F_x exceeds kLipschitz = 1.5 times the step of Kalker's
+// linear force G a b C11 d(xi_x) (the creep curve is never steeper than its linear slope; a
+// jump where the adhesion zone's end crosses an element boundary would be ~30 times that).
+TEST(fastrip_continuity, forces_continuous_in_creepage) {
+  constexpr double kLipschitz = 1.5;
+  const double a = 6e-3, b = 6e-3;
+  const fc::KalkerCoefficients c = fc::kalker_coefficients_table(a, b, kNu);
+  const auto model = fc::make_tangential_model("fastrip");
+  for (const auto& [eta_ratio, phi] : {std::pair{0.3, 0.05}, {1.0, 0.2}, {-0.5, 0.3}, {2.0, -0.1}}) {
+    Case k(a, b, {0.0, 0.0, phi});
+    const int n = 20000;
+    const double step = 3e-3 / n;
+    const double linear_step = kG * a * b * c.c11 * step;
+    double prev = 0.0, largest = 0.0;
+    for (int i = 0; i <= n; ++i) {
+      const double xi = step * i;
+      k.problem.creepage = {xi, eta_ratio * xi, phi};
+      const double fx = model->solve(k.problem).force_x;
+      if (i > 0) largest = std::max(largest, std::abs(fx - prev));
+      prev = fx;
+    }
+    EXPECT_LE(largest, kLipschitz * linear_step) << eta_ratio << " " << phi;
+  }
 }
 
 TEST(fastrip_registry, options_and_errors) {

@@ -21,7 +21,9 @@
 // flexibility for both components (option slip_flexibility: longitudinal = L1, the default;
 // weighted = Kalker's creepage-weighted L; three = L1 and L2), which turn the traction towards
 // the rigid slip (xi_x - phi y, xi_y + phi x); the sum is bounded by mu p element by element
-// (FASTSIM's cap), so |F| <= mu F_n always.
+// (FASTSIM's cap), so |F| <= mu F_n always. The first element past the adhesion zone blends
+// Carter's value (the bound) into that update by how close the zone's end lies to its leading
+// edge, so the forces are continuous in the creepages.
 // Discretisation: pressures and Carter's adhesion-zone tractions are exact element averages (the
 // ellipse integrals in closed form); across the strips the loads, the Carter scale T and the
 // spin flexibility are normalised on the midpoint sums over y, so F_n and Kalker's C11, C22 and
