@@ -36,7 +36,7 @@
 // Carter's strip solution only where a strip's slip zone lies under a falling bound (tau <= 1/2,
 // and to O(dx) after the element that ends the adhesion zone): elsewhere FASTSIM's update lags
 // the rising bound, which lowers the transition force (closer to converged MIM than strip
-// theory itself: 0.008 against 0.010 mu F_n mean without spin at 12 x 12). The moment M_z is the
+// theory itself: 0.009 against 0.010 mu F_n mean without spin at 12 x 12). The moment M_z is the
 // model's own (it does not reproduce C33). On semi-Hertz strips the Carter scale comes from each
 // strip's own p0_i and the spin flexibility from the equivalent ellipse, without the y correction.
 
