@@ -189,8 +189,9 @@ TangentialSolution FastripModel::solve(const TangentialProblem& problem) const {
     const double xi = cr.longitudinal - cr.spin * y;
     const double wx = wx_scale * xi;
     const double w = std::hypot(wx, wy);
-    StripInput in{y,         width, xc, l, p_peak, limit > 0.0 ? w * tau_factor : 1.0, 0.0, 0.0,
-                  spin_gain, xi / lx, cr.lateral / ly};
+    StripInput in{
+        y,   width, xc,        l,       p_peak,         limit > 0.0 ? w * tau_factor : 1.0,
+        0.0, 0.0,   spin_gain, xi / lx, cr.lateral / ly};
     if (w > 0.0 && limit > 0.0) {
       in.dir_x = wx / w;
       in.dir_y = wy / w;
@@ -231,8 +232,8 @@ TangentialSolution FastripModel::solve(const TangentialProblem& problem) const {
     const double spin_gain = 0.5 * cr.spin / l3;
     for (const PatchStrip& s : patch.strips) {
       if (!(s.half_length > 0.0) || !(s.peak_pressure > 0.0)) continue;
-      strip(s.y, s.width, s.x_center, s.half_length, s.peak_pressure,
-            tau_scale / s.peak_pressure, spin_gain);
+      strip(s.y, s.width, s.x_center, s.half_length, s.peak_pressure, tau_scale / s.peak_pressure,
+            spin_gain);
     }
   }
   TangentialSolution out;

@@ -36,8 +36,12 @@ fc::TangentialSolution solve(const fc::ModelOptions& o, const fc::TangentialProb
 }
 
 // Semi-axes at c = sqrt(ab) = 6 mm.
-double semi_a(double ratio) { return 6e-3 * std::sqrt(ratio); }
-double semi_b(double ratio) { return 6e-3 / std::sqrt(ratio); }
+double semi_a(double ratio) {
+  return 6e-3 * std::sqrt(ratio);
+}
+double semi_b(double ratio) {
+  return 6e-3 / std::sqrt(ratio);
+}
 
 }  // namespace
 
@@ -176,7 +180,8 @@ TEST(fastrip_map, bound_and_adhesion_zones) {
   double load = 0.0;
   for (std::size_t i = 0; i < map.x.size(); ++i) {
     load += map.pressure[i] * map.dx[i] * map.dy[i];
-    EXPECT_LE(std::hypot(map.traction_x[i], map.traction_y[i]), kMu * map.pressure[i] * (1 + 1e-12));
+    EXPECT_LE(std::hypot(map.traction_x[i], map.traction_y[i]),
+              kMu * map.pressure[i] * (1 + 1e-12));
   }
   EXPECT_NEAR(load, kFn, 1e-9 * kFn);
   EXPECT_GT(f.adhesion_fraction, 0.0);
@@ -218,7 +223,8 @@ TEST(fastrip_continuity, forces_continuous_in_creepage) {
   const double a = 6e-3, b = 6e-3;
   const fc::KalkerCoefficients c = fc::kalker_coefficients_table(a, b, kNu);
   const auto model = fc::make_tangential_model("fastrip");
-  for (const auto& [eta_ratio, phi] : {std::pair{0.3, 0.05}, {1.0, 0.2}, {-0.5, 0.3}, {2.0, -0.1}}) {
+  for (const auto& [eta_ratio, phi] :
+       {std::pair{0.3, 0.05}, {1.0, 0.2}, {-0.5, 0.3}, {2.0, -0.1}}) {
     Case k(a, b, {0.0, 0.0, phi});
     const int n = 20000;
     const double step = 3e-3 / n;
