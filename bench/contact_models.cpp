@@ -1,5 +1,5 @@
 // Cost per evaluation of the contact models (targets: linear + CHOPAYA <= 0.2 us,
-// Hertz <= 1 us, FASTSIM 20 x 20 <= 5 us). Run: ./build/bench/ferro_bench_contact_models
+// Hertz <= 1 us, FASTSIM 20 x 20 and FaStrip <= 5 us). Run: ./build/bench/ferro_bench_contact_models
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -116,6 +116,17 @@ void BM_fastsim_elliptic(benchmark::State& s) {
 void BM_fastsim_semi_hertz_20_strips(benchmark::State& s) {
   run_tangential(s, "fastsim", {}, true);
 }
+void BM_fastsim_adaptive(benchmark::State& s) {
+  const std::string n = std::to_string(s.range(0));
+  run_tangential(s, "fastsim", {{"mx", n}, {"my", n}, {"flexibility", "adaptive"}});
+}
+void BM_fastrip(benchmark::State& s) {
+  const std::string n = std::to_string(s.range(0));
+  run_tangential(s, "fastrip", {{"mx", n}, {"my", n}});
+}
+void BM_fastrip_semi_hertz_20_strips(benchmark::State& s) {
+  run_tangential(s, "fastrip", {}, true);
+}
 BENCHMARK(BM_kalker_linear);
 BENCHMARK(BM_linear_saturated);
 BENCHMARK(BM_vermeulen_johnson);
@@ -127,6 +138,9 @@ BENCHMARK(BM_fastsim)->Arg(10)->Arg(20)->Arg(40);
 BENCHMARK(BM_fastsim_weighted);
 BENCHMARK(BM_fastsim_elliptic)->Arg(10)->Arg(20);
 BENCHMARK(BM_fastsim_semi_hertz_20_strips);
+BENCHMARK(BM_fastsim_adaptive)->Arg(10)->Arg(20);
+BENCHMARK(BM_fastrip)->Arg(8)->Arg(12)->Arg(16)->Arg(20);
+BENCHMARK(BM_fastrip_semi_hertz_20_strips);
 
 }  // namespace
 

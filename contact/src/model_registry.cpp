@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "ferro/contact/fastrip.hpp"
 #include "ferro/contact/fastsim.hpp"
 #include "ferro/contact/hertz.hpp"
 #include "ferro/contact/mim_table.hpp"
@@ -164,8 +165,8 @@ std::unique_ptr<NormalContactModel> make_normal_model(std::string_view name,
 
 std::vector<std::string> tangential_model_names() {
   return {"kalker_linear", "linear_saturated", "vermeulen_johnson", "shen_hedrick_elkins",
-          "chopaya",       "polach",           "fastsim",           "mim",
-          "mim_table"};
+          "chopaya",       "polach",           "fastsim",           "fastrip",
+          "mim",           "mim_table"};
 }
 
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
@@ -232,6 +233,27 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
           "fastsim option 'bound': unknown value '{}'; allowed: parabolic, elliptic", bound));
     }
     return std::make_unique<FastsimModel>(o);
+  }
+  if (name == "fastrip") {
+    check_option_keys(name, options, {"coefficients", "mx", "my", "slip_flexibility"});
+    FastripOptions o;
+    o.source = source;
+    o.mx = option_int(options, "mx", o.mx);
+    o.my = option_int(options, "my", o.my);
+    const std::string slip = option_string(options, "slip_flexibility", "longitudinal");
+    if (slip == "longitudinal") {
+      o.slip_flexibility = SlipFlexibility::kLongitudinal;
+    } else if (slip == "weighted") {
+      o.slip_flexibility = SlipFlexibility::kWeighted;
+    } else if (slip == "three") {
+      o.slip_flexibility = SlipFlexibility::kThree;
+    } else {
+      throw std::invalid_argument(fmt::format(
+          "fastrip option 'slip_flexibility': unknown value '{}'; allowed: longitudinal, "
+          "weighted, three",
+          slip));
+    }
+    return std::make_unique<FastripModel>(o);
   }
   if (name == "mim") {
     check_option_keys(name, options, {"elements", "grid"});

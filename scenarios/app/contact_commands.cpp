@@ -241,7 +241,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   add_hidden_alias(eval, "--phi", in->phi);
   eval->add_option("--model", in->model,
                    "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
-                   "chopaya, polach, fastsim, mim")
+                   "chopaya, polach, fastsim, fastrip, mim, mim_table")
       ->capture_default_str();
   eval->add_option("--option", *opts,
                    "model option key=value (repeatable), e.g. mx=40, "

@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <set>
 #include <string>
+#include <vector>
 
+#include "ferro/contact/tangential_model.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
 
 namespace fs = ferro::scenarios;
@@ -71,4 +74,40 @@ TEST(contact_bench, quick_run_orders_models) {
     EXPECT_GT(x.us_per_eval, 0.0) << x.label;
     if (x.label != "kalker_linear") EXPECT_LE(x.max_force, 1.0 + kCoulombSlack) << x.label;
   }
+}
+
+// FaStrip against the converged-MIM reference of the whole case set
+// (tests/data/contact_bench_reference.csv: MIM 40 x 40 and 80 x 80 over the patch, Richardson):
+// mean |F_t - F_t,ref| <= kGoalMean = 0.02 mu F_n (the accuracy goal for the fast models; the
+// classic FASTSIM 20 x 20 is 0.036 on this set), 95th percentile <= kGoalP95 = 0.05, never above
+// Coulomb (kTolCoulomb = 1e-12 relative, round-off).
+TEST(contact_bench, fastrip_against_converged_mim) {
+  constexpr double kGoalMean = 0.02, kGoalP95 = 0.05, kTolCoulomb = 1e-12;
+  const auto cases = fs::contact_bench_cases();
+  std::vector<fs::ContactBenchReference> ref;
+  int elements = 0;
+  ASSERT_TRUE(fs::read_contact_bench_reference(
+      std::string(FERRO_SOURCE_DIR) + "/tests/data/contact_bench_reference.csv", cases, ref,
+      elements));
+  const auto model = ferro::contact::make_tangential_model("fastrip");
+  std::vector<double> err;
+  double sum = 0.0, largest = 0.0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const ferro::contact::ContactPatch patch = fs::contact_bench_patch(cases[k]);
+    const ferro::contact::TangentialProblem p = fs::contact_bench_problem(cases[k], patch);
+    const ferro::contact::TangentialSolution f = model->solve(p);
+    const double s = p.friction * patch.normal_force;
+    const double e = std::hypot(f.force_x / s - ref[k].fx, f.force_y / s - ref[k].fy);
+    err.push_back(e);
+    sum += e;
+    largest = std::max(largest, std::hypot(f.force_x, f.force_y) / s);
+  }
+  std::sort(err.begin(), err.end());
+  const double mean = sum / static_cast<double>(err.size());
+  const double p95 = err[static_cast<std::size_t>(std::ceil(0.95 * err.size())) - 1];
+  std::printf("fastrip 12 x 12 against converged MIM: mean %.4f, p95 %.4f, max %.4f mu F_n\n",
+              mean, p95, err.back());
+  EXPECT_LE(mean, kGoalMean);
+  EXPECT_LE(p95, kGoalP95);
+  EXPECT_LE(largest, 1.0 + kTolCoulomb);
 }

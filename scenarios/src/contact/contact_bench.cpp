@@ -58,6 +58,20 @@ fc::Creepage creepage_of(const ContactBenchCase& c) {
 
 }  // namespace
 
+fc::ContactPatch contact_bench_patch(const ContactBenchCase& c) {
+  return fc::elliptic_patch(semi_axis_x(c.ratio), semi_axis_y(c.ratio), kNormalForce);
+}
+
+fc::TangentialProblem contact_bench_problem(const ContactBenchCase& c,
+                                            const fc::ContactPatch& patch) {
+  fc::TangentialProblem p;
+  p.patch = &patch;
+  p.friction = kFriction;
+  p.body1 = p.body2 = steel();
+  p.creepage = creepage_of(c);
+  return p;
+}
+
 std::vector<ContactBenchCase> contact_bench_cases() {
   std::vector<ContactBenchCase> cases;
   const double ratios[] = {0.2, 0.5, 1.0, 2.0, 5.0};
@@ -256,19 +270,11 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
   }
 
   std::vector<fc::ContactPatch> patches(cases.size());
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    patches[k] = fc::elliptic_patch(semi_axis_x(cases[k].ratio), semi_axis_y(cases[k].ratio),
-                                    kNormalForce);
-  }
+  for (std::size_t k = 0; k < cases.size(); ++k) patches[k] = contact_bench_patch(cases[k]);
   // Problems prepared once: the timed loops contain the model evaluations only.
-  const fc::Material mat = steel();
   std::vector<fc::TangentialProblem> problems(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    fc::TangentialProblem& p = problems[k];
-    p.patch = &patches[k];
-    p.friction = kFriction;
-    p.body1 = p.body2 = mat;
-    p.creepage = creepage_of(cases[k]);
+    problems[k] = contact_bench_problem(cases[k], patches[k]);
   }
   const auto problem = [&](std::size_t k) -> const fc::TangentialProblem& { return problems[k]; };
 
@@ -289,6 +295,11 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
       {"fastsim 10x10 adaptive", "fastsim", {{"mx", "10"}, {"my", "10"}, {"flexibility", "adaptive"}}},
       {"fastsim 20x20 adaptive", "fastsim", {{"mx", "20"}, {"my", "20"}, {"flexibility", "adaptive"}}},
       {"fastsim 50x50 adaptive", "fastsim", {{"mx", "50"}, {"my", "50"}, {"flexibility", "adaptive"}}},
+      {"fastrip 8x8", "fastrip", {{"mx", "8"}, {"my", "8"}}},
+      {"fastrip 12x12", "fastrip", {{"mx", "12"}, {"my", "12"}}},
+      {"fastrip 20x20", "fastrip", {{"mx", "20"}, {"my", "20"}}},
+      {"fastrip 12x12 weighted", "fastrip", {{"slip_flexibility", "weighted"}}},
+      {"fastrip 12x12 three", "fastrip", {{"slip_flexibility", "three"}}},
       {"mim_table", "mim_table", {{"table", table_path}}},
       {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
       {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},

@@ -72,14 +72,16 @@ class TangentialModel {
 };
 
 /// Registered names: kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins,
-/// chopaya, polach, fastsim, mim (mim_tangential_model.hpp), mim_table (mim_table.hpp).
+/// chopaya, polach, fastsim, fastrip (fastrip.hpp), mim (mim_tangential_model.hpp), mim_table
+/// (mim_table.hpp).
 [[nodiscard]] std::vector<std::string> tangential_model_names();
 
 /// Creates a model. Common option: "coefficients" = kalker_table (default) | voco_fit.
 /// polach: "k_a", "k_s" (default 1), "friction_ratio" (A, default 1), "friction_decay" (B [s/m],
 /// default 0). fastsim: "mx", "my" (default 20, 20),
 /// "flexibility" = three (default) | weighted | adaptive, "stiffening" (adaptive, default 0.05),
-/// "bound" = parabolic (default) | elliptic.
+/// "bound" = parabolic (default) | elliptic. fastrip: "mx", "my" (default 12, 12),
+/// "slip_flexibility" = longitudinal (default) | weighted | three.
 /// mim: "elements" (default 30), "grid" = minor (default: N square elements across the shorter
 /// axis, so N x 5N at a/b = 5) | patch (N x N rectangular elements over the ellipse).
 /// mim_table: "table" (HDF5 path, default $FERRO_MIM_TABLE). Unknown names/options throw

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/tangential_model.hpp"
+
 namespace ferro::scenarios {
 
 /// One Hertzian rolling case: semi-axes from a/b at c = sqrt(ab) = 5 mm, F_n = 80 kN,
@@ -21,6 +23,12 @@ struct ContactBenchCase {
 /// creepage directions (0, 30, ..., 180 deg in the (xi_x*, xi_y*) plane) x magnitudes {0.2, 0.5,
 /// 0.8, 1.2, 2, 4} (micro-slip to full slip), plus pure spin at each spin level: 855 cases.
 [[nodiscard]] std::vector<ContactBenchCase> contact_bench_cases();
+
+/// The case's elliptic patch (a = c sqrt(a/b), b = c / sqrt(a/b), F_n) and its tangential
+/// problem on that patch (which must outlive the problem): mu, steel, the creepages.
+[[nodiscard]] ferro::contact::ContactPatch contact_bench_patch(const ContactBenchCase& c);
+[[nodiscard]] ferro::contact::TangentialProblem contact_bench_problem(
+    const ContactBenchCase& c, const ferro::contact::ContactPatch& patch);
 
 /// Reference value of one case: converged MIM in units of mu F_n (forces) and mu F_n c (moment).
 struct ContactBenchReference {
