@@ -3,8 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include "ferro/contact/hertz.hpp"
+#include "ferro/contact/mim_table.hpp"
 #include "ferro/contact/normal_model.hpp"
 #include "ferro/contact/tangential_model.hpp"
 
@@ -116,6 +119,21 @@ void BM_fastsim_elliptic(benchmark::State& s) {
 void BM_fastsim_semi_hertz_20_strips(benchmark::State& s) {
   run_tangential(s, "fastsim", {}, true);
 }
+// mim_table (target <= 0.5 us): the interpolation cost depends on the default table's axes, not
+// on its node values, so the nodes are solved on a coarse 8-element grid (a few seconds).
+void BM_mim_table(benchmark::State& s) {
+  static const std::string path = [] {
+    fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
+    spec.grid = "minor";
+    spec.elements = 8;
+    spec.threads = 2;
+    const std::string p =
+        (std::filesystem::temp_directory_path() / "ferro_bench_contact_models_table.h5").string();
+    fc::MimTable::build(spec).write_hdf5(p);
+    return p;
+  }();
+  run_tangential(s, "mim_table", {{"table", path}});
+}
 BENCHMARK(BM_kalker_linear);
 BENCHMARK(BM_linear_saturated);
 BENCHMARK(BM_vermeulen_johnson);
@@ -127,6 +145,7 @@ BENCHMARK(BM_fastsim)->Arg(10)->Arg(20)->Arg(40);
 BENCHMARK(BM_fastsim_weighted);
 BENCHMARK(BM_fastsim_elliptic)->Arg(10)->Arg(20);
 BENCHMARK(BM_fastsim_semi_hertz_20_strips);
+BENCHMARK(BM_mim_table);
 
 }  // namespace
 

@@ -22,6 +22,15 @@ struct ContactBenchCase {
 /// 0.8, 1.2, 2, 4} (micro-slip to full slip), plus pure spin at each spin level: 855 cases.
 [[nodiscard]] std::vector<ContactBenchCase> contact_bench_cases();
 
+/// Physical input of a case: semi-axes [m], F_n [N], mu [-], creepages xi_x, xi_y [-] and spin
+/// [1/m] from the normalised ones (Kalker's C_ij at a/b, nu), steel on steel.
+struct ContactBenchInput {
+  double semi_axis_x = 0.0, semi_axis_y = 0.0, normal_force = 0.0, friction = 0.0;
+  double creepage_x = 0.0, creepage_y = 0.0, spin = 0.0;
+  double young = 0.0, poisson = 0.0;  ///< both bodies [Pa, -]
+};
+[[nodiscard]] ContactBenchInput contact_bench_input(const ContactBenchCase& c);
+
 /// Reference value of one case: converged MIM in units of mu F_n (forces) and mu F_n c (moment).
 struct ContactBenchReference {
   double fx = 0.0, fy = 0.0, mz = 0.0;  ///< Richardson-extrapolated
