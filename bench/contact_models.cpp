@@ -119,21 +119,26 @@ void BM_fastsim_elliptic(benchmark::State& s) {
 void BM_fastsim_semi_hertz_20_strips(benchmark::State& s) {
   run_tangential(s, "fastsim", {}, true);
 }
-// mim_table (target <= 0.5 us): the interpolation cost depends on the default table's axes, not
-// on its node values, so the nodes are solved on a coarse 8-element grid (a few seconds).
+// mim_table (target <= 0.5 us): the interpolation cost depends on the table's axes, not on its
+// node values, so the nodes are solved on a coarse 8-element grid (a few seconds). Arg = spin
+// nodes: 29 = the default table, 15 = the earlier spin axis (7 nodes per sign), for comparison.
 void BM_mim_table(benchmark::State& s) {
-  static const std::string path = [] {
-    fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
-    spec.grid = "minor";
-    spec.elements = 8;
-    spec.threads = 2;
-    const std::string p =
-        (std::filesystem::temp_directory_path() / "ferro_bench_contact_models_table.h5").string();
-    fc::MimTable::build(spec).write_hdf5(p);
-    return p;
-  }();
+  const int spin_nodes = static_cast<int>(s.range(0));
+  fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
+  if (spin_nodes == 15) spec.spin = {-9.0, -4.5, -2.6, -1.6, -1.0, -0.6, -0.25, 0.0,
+                                     0.25, 0.6,  1.0,  1.6,  2.6,  4.5,  9.0};
+  spec.grid = "minor";
+  spec.elements = 8;
+  spec.threads = 2;
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("ferro_bench_contact_models_table_" + std::to_string(spin_nodes) +
+                             ".h5"))
+                               .string();
+  fc::MimTable::build(spec).write_hdf5(path);
   run_tangential(s, "mim_table", {{"table", path}});
+  std::filesystem::remove(path);
 }
+
 BENCHMARK(BM_kalker_linear);
 BENCHMARK(BM_linear_saturated);
 BENCHMARK(BM_vermeulen_johnson);
@@ -145,7 +150,7 @@ BENCHMARK(BM_fastsim)->Arg(10)->Arg(20)->Arg(40);
 BENCHMARK(BM_fastsim_weighted);
 BENCHMARK(BM_fastsim_elliptic)->Arg(10)->Arg(20);
 BENCHMARK(BM_fastsim_semi_hertz_20_strips);
-BENCHMARK(BM_mim_table);
+BENCHMARK(BM_mim_table)->Arg(15)->Arg(29);
 
 }  // namespace
 

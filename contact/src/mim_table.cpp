@@ -404,16 +404,21 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
   const AxisWeights wx = axis_weights(spec_.xi_x, p.xi_x);
   const AxisWeights wy = axis_weights(spec_.xi_y, p.xi_y);
   MimTableValue v;
+  // Flat index ((ir nx + ix) ny + iy) ns + is (index()), built up loop by loop.
+  const std::size_t nxs = spec_.xi_x.size(), nys = spec_.xi_y.size(), nss = spec_.spin.size();
   for (int a = 0; a < wr.count; ++a) {
     // Spin in each ratio node's own saturation scale.
     const AxisWeights ws = axis_weights(spec_.spin, p.spin * spin_scale_[wr.first + a]);
+    const std::size_t row_r = static_cast<std::size_t>(wr.first + a) * nxs;
     for (int b = 0; b < wx.count; ++b) {
       const double wab = wr.w[a] * wx.w[b];
       if (wab == 0.0) continue;
+      const std::size_t row_x = (row_r + static_cast<std::size_t>(wx.first + b)) * nys;
       for (int c = 0; c < wy.count; ++c) {
         const double wabc = wab * wy.w[c];
         if (wabc == 0.0) continue;
-        const std::size_t base = index(wr.first + a, wx.first + b, wy.first + c, ws.first);
+        const std::size_t base =
+            (row_x + static_cast<std::size_t>(wy.first + c)) * nss + static_cast<std::size_t>(ws.first);
         for (int d = 0; d < ws.count; ++d) {
           const double w = wabc * ws.w[d];
           v.f_x += w * fx_[base + d];
