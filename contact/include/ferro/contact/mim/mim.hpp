@@ -109,8 +109,10 @@ inline constexpr std::size_t kMaxGridElements = std::size_t{1} << 18;
 /// The half-space influence coefficients are homogeneous (degree 1 in the element size, -1 in
 /// G), so every patch is solved in units of the element size h and of G on a unit grid whose
 /// influence operator (kernels + FFTW plans) depends only on (nx, ny, nu) and is cached; results
-/// are scaled back (forces G h^2, moment G h^3, stresses G, approach h). Not thread-safe: use
-/// one solver per thread.
+/// are scaled back (forces G h^2, moment G h^3, stresses G, approach h). The last normal
+/// solution on each cached grid is reused when the next patch has the same unit-grid gap and
+/// load (K = 0: the normal problem does not depend on the creepages; the reuse is exact). Not
+/// thread-safe: use one solver per thread.
 class HertzMimSolver {
  public:
   explicit HertzMimSolver(MimOptions options = {}, std::size_t max_cached_grids = 16);
