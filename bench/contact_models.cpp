@@ -3,8 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include "ferro/contact/hertz.hpp"
+#include "ferro/contact/mim_table.hpp"
 #include "ferro/contact/normal_model.hpp"
 #include "ferro/contact/tangential_model.hpp"
 
@@ -127,6 +130,26 @@ void BM_fastrip(benchmark::State& s) {
 void BM_fastrip_semi_hertz_20_strips(benchmark::State& s) {
   run_tangential(s, "fastrip", {}, true);
 }
+// mim_table (target <= 0.5 us): the interpolation cost depends on the table's axes, not on its
+// node values, so the nodes are solved on a coarse 8-element grid (a few seconds). Arg = spin
+// nodes: 29 = the default table, 15 = the earlier spin axis (7 nodes per sign), for comparison.
+void BM_mim_table(benchmark::State& s) {
+  const int spin_nodes = static_cast<int>(s.range(0));
+  fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
+  if (spin_nodes == 15) spec.spin = {-9.0, -4.5, -2.6, -1.6, -1.0, -0.6, -0.25, 0.0,
+                                     0.25, 0.6,  1.0,  1.6,  2.6,  4.5,  9.0};
+  spec.grid = "minor";
+  spec.elements = 8;
+  spec.threads = 2;
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("ferro_bench_contact_models_table_" + std::to_string(spin_nodes) +
+                             ".h5"))
+                               .string();
+  fc::MimTable::build(spec).write_hdf5(path);
+  run_tangential(s, "mim_table", {{"table", path}});
+  std::filesystem::remove(path);
+}
+
 BENCHMARK(BM_kalker_linear);
 BENCHMARK(BM_linear_saturated);
 BENCHMARK(BM_vermeulen_johnson);
@@ -141,6 +164,7 @@ BENCHMARK(BM_fastsim_semi_hertz_20_strips);
 BENCHMARK(BM_fastsim_adaptive)->Arg(10)->Arg(20);
 BENCHMARK(BM_fastrip)->Arg(8)->Arg(12)->Arg(16)->Arg(20);
 BENCHMARK(BM_fastrip_semi_hertz_20_strips);
+BENCHMARK(BM_mim_table)->Arg(15)->Arg(29);
 
 }  // namespace
 

@@ -23,6 +23,10 @@ void MimModelOptions::validate() const {
     throw std::invalid_argument(
         fmt::format("mim option 'elements': must be in [6, 400], got {}", elements));
   }
+  if (extrapolate && (!grid_over_patch || elements < 12)) {
+    throw std::invalid_argument(fmt::format(
+        "mim option 'grid' = patch_richardson: needs 'elements' >= 12, got {}", elements));
+  }
 }
 
 MimTangentialModel::MimTangentialModel(MimModelOptions options)
@@ -107,6 +111,7 @@ mim::MimResult MimTangentialModel::solve_full(const TangentialProblem& problem) 
   in.body2 = problem.body2;
   in.elements_minor = options_.elements;
   in.grid_over_patch = options_.grid_over_patch;
+  in.extrapolate = options_.extrapolate;
   try {
     in.validate("mim");
   } catch (const std::invalid_argument& e) {

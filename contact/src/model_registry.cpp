@@ -264,9 +264,12 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
       o.grid_over_patch = false;
     } else if (grid == "patch") {
       o.grid_over_patch = true;
+    } else if (grid == "patch_richardson") {
+      o.grid_over_patch = true;
+      o.extrapolate = true;
     } else {
-      throw std::invalid_argument(
-          fmt::format("mim option 'grid': unknown value '{}'; allowed: minor, patch", grid));
+      throw std::invalid_argument(fmt::format(
+          "mim option 'grid': unknown value '{}'; allowed: minor, patch, patch_richardson", grid));
     }
     return std::make_unique<MimTangentialModel>(o);
   }

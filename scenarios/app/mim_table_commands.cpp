@@ -32,6 +32,11 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
   add_output_option(cmd, *out, "HDF5 file to write (required)", {"--out"});
   cmd->add_option("--elements", spec->elements, "MIM elements across the shorter axis")
       ->capture_default_str();
+  cmd->add_option("--grid", spec->grid,
+                  "MIM grid of the nodes: minor (square elements, --elements across the shorter "
+                  "axis), patch (--elements x --elements over the patch), patch_richardson (patch "
+                  "grid, forces extrapolated from --elements and its half)")
+      ->capture_default_str();
   cmd->add_option("--threads", spec->threads, "build threads")->capture_default_str();
   cmd->add_option("--poisson", spec->poisson, "combined Poisson ratio of the table")
       ->capture_default_str();
@@ -54,6 +59,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
         for (const auto& [field, option] :
              {std::pair<std::string, std::string>{"mim table elements", "--elements"},
               {"mim table threads", "--threads"},
+              {"mim table grid", "--grid"},
               {"mim table poisson", "--poisson"},
               {"mim table density", "--density"}}) {
           if (msg.rfind(field, 0) == 0) msg = option + msg.substr(field.size());

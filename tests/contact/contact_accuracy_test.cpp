@@ -93,18 +93,19 @@ TEST(mim_spin, pure_spin_converges_to_exact_theory) {
   EXPECT_NEAR(mim_spin_force(25), kExact, kTolCoarse);
 }
 
-// MIM over the patch (grid=patch): the same element count across both axes at every a/b; at
-// a/b = 1 it is the minor-axis grid.
-TEST(mim_grid, patch_grid_counts_and_agrees_at_unit_ratio) {
-  constexpr double kTolSameGrid = 1e-9;  // identical grids at a/b = 1: round-off only
+// MIM over the patch (grid=patch): the same element count across both axes at every a/b, the
+// ellipse's bounding box cut into N x N elements (dx = 2a / N, dy = 2b / N: the outer element
+// edges on the ends of the axes).
+TEST(mim_grid, patch_grid_counts_and_spans_the_bounding_box) {
+  constexpr double kTolGeometry = 1e-12;  // relative, round-off only
   const Case k(0.006, 0.006, {0.0005, 0.0003, 0.5});
   fc::MimTangentialModel patch(fc::MimModelOptions{20, true});
-  fc::MimTangentialModel minor(fc::MimModelOptions{20, false});
-  const fc::mim::MimResult rp = patch.solve_full(k.problem), rm = minor.solve_full(k.problem);
+  const fc::mim::MimResult rp = patch.solve_full(k.problem);
   EXPECT_EQ(rp.grid.nx, 20);
   EXPECT_EQ(rp.grid.ny, 20);
-  EXPECT_NEAR(rp.force_x, rm.force_x, kTolSameGrid * kMu * kFn);
-  EXPECT_NEAR(rp.force_y, rm.force_y, kTolSameGrid * kMu * kFn);
+  EXPECT_NEAR(rp.grid.dx, 2.0 * 0.006 / 20, kTolGeometry * 0.006);
+  EXPECT_NEAR(rp.grid.dy, 2.0 * 0.006 / 20, kTolGeometry * 0.006);
+  EXPECT_NEAR(rp.grid.x0, -0.006 + 0.5 * rp.grid.dx, kTolGeometry * 0.006);
   const Case wide(0.010, 0.002, {0.0005, 0.0003, 0.5});
   const fc::mim::MimResult rw = patch.solve_full(wide.problem);
   EXPECT_EQ(rw.grid.nx, 20);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <vector>
 
@@ -229,9 +230,11 @@ TEST(MimRolling, solver_options_same_solution) {
   SphereCase sc;
   const double mu = 0.2, fn = sc.normal.normal_force;
   const RollingInput in{2.0e-3, -1.0e-3, 0.4, mu};
-  const TangentialSolution ref = solve_steady_rolling(sc.op, sc.normal.pressure, in);
+  TangentialSolverOptions fft;
+  fft.fft_preconditioner_min_elements = 0;
+  const TangentialSolution ref = solve_steady_rolling(sc.op, sc.normal.pressure, in, fft);
   TangentialSolverOptions plain;
-  plain.fft_preconditioner = false;
+  plain.fft_preconditioner_min_elements = std::numeric_limits<int>::max();
   TangentialSolverOptions nested;
   nested.nested = true;
   for (const TangentialSolverOptions& o : {plain, nested}) {

@@ -41,7 +41,9 @@ constexpr double kInputMatch = 1e-9;
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-fc::Material steel() { return fc::Material::from_young(210.0e9, kPoisson); }
+constexpr double kYoung = 210.0e9;
+
+fc::Material steel() { return fc::Material::from_young(kYoung, kPoisson); }
 
 double semi_axis_x(double ratio) { return kPatchScale * std::sqrt(ratio); }
 double semi_axis_y(double ratio) { return kPatchScale / std::sqrt(ratio); }
@@ -70,6 +72,21 @@ fc::TangentialProblem contact_bench_problem(const ContactBenchCase& c,
   p.body1 = p.body2 = steel();
   p.creepage = creepage_of(c);
   return p;
+}
+
+ContactBenchInput contact_bench_input(const ContactBenchCase& c) {
+  const fc::Creepage cr = creepage_of(c);
+  ContactBenchInput in;
+  in.semi_axis_x = semi_axis_x(c.ratio);
+  in.semi_axis_y = semi_axis_y(c.ratio);
+  in.normal_force = kNormalForce;
+  in.friction = kFriction;
+  in.creepage_x = cr.longitudinal;
+  in.creepage_y = cr.lateral;
+  in.spin = cr.spin;
+  in.young = kYoung;
+  in.poisson = kPoisson;
+  return in;
 }
 
 std::vector<ContactBenchCase> contact_bench_cases() {
@@ -261,6 +278,7 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
       spec.xi_y = spec.xi_x;
       spec.spin = {-9.0, -3.0, -1.0, 0.0, 1.0, 3.0, 9.0};
       spec.elements = 8;
+      spec.grid = "minor";
     }
     spec.threads = std::max(1, opt.threads);
     table_path = (std::filesystem::temp_directory_path() /
@@ -303,6 +321,8 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
       {"mim_table", "mim_table", {{"table", table_path}}},
       {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
       {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},
+      {"mim 20 patch_richardson", "mim", {{"elements", "20"}, {"grid", "patch_richardson"}}},
+      {"mim 25 patch_richardson", "mim", {{"elements", "25"}, {"grid", "patch_richardson"}}},
   };
 
   const double s = kFriction * kNormalForce;

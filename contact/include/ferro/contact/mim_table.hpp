@@ -42,7 +42,11 @@ struct MimTableSpec {
   std::vector<double> xi_y;   ///< xi_y* nodes, increasing, first 0 [-]
   std::vector<double> spin;   ///< psi nodes (spin in its saturation scale), increasing [-]
   double poisson = 0.28;      ///< combined nu of the table [-]
-  int elements = 20;          ///< MIM elements across the shorter axis [-]
+  int elements = 20;          ///< MIM elements across the shorter axis (grid "minor") [-]
+  /// MIM grid of every node, as the mim model's option: "minor" (square elements, `elements`
+  /// across the shorter axis), "patch" (`elements` x `elements` over the patch) or
+  /// "patch_richardson" (patch grid, forces extrapolated from `elements` and ceil(elements/2)).
+  std::string grid = "minor";
   int threads = 1;            ///< build threads (one MIM solver each)
   /// Node density: each interval of xi_x, xi_y and spin is split into `density` equal parts
   /// before the build (1 = the nodes as given) [-].
@@ -50,7 +54,8 @@ struct MimTableSpec {
   void validate() const;
   /// The spec with the density applied (density 1).
   [[nodiscard]] MimTableSpec densified() const;
-  /// Default table: 5 ratios 0.2 ... 5 (log-spaced), 8 x 8 x 15 creepage nodes, 16 elements.
+  /// Default table: 5 ratios 0.2 ... 5 (log-spaced), 8 x 8 x 29 creepage/spin nodes, MIM 20 x 20
+  /// over the patch with Richardson extrapolation from 10 x 10 (grid "patch_richardson").
   static MimTableSpec default_spec();
 };
 

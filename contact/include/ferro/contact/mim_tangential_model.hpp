@@ -1,7 +1,9 @@
 #pragma once
 // The MIM boundary-element solver (contact/mim/) behind the tangential-model interface:
 // registered as "mim" in make_tangential_model (option "elements", default 30: elements across
-// the shorter extent of the patch).
+// the shorter extent of the patch; option "grid" = minor (square elements, `elements` across the
+// shorter axis), patch (`elements` x `elements` over the patch) or patch_richardson (patch grid,
+// forces extrapolated from `elements` and ceil(elements / 2))).
 //
 // Elliptic patch without lateral gap samples: the Hertzian gap A x^2 + B y^2 that reproduces the
 // patch's a, b under its F_n (mim::HertzMimSolver, cached unit-grid operators). Non-elliptic
@@ -33,6 +35,10 @@ struct MimModelOptions {
   /// grows to elements x 5 elements at a/b = 5); true = `elements` x `elements` rectangular
   /// elements over the patch (dx/dy = a/b), the same cost at every a/b.
   bool grid_over_patch = false;
+  /// With grid_over_patch: forces Richardson-extrapolated from `elements` and ceil(elements / 2)
+  /// (mim::HertzRollingInput::extrapolate; option grid = patch_richardson). Non-elliptic
+  /// patches are solved on their own grid without extrapolation.
+  bool extrapolate = false;
   void validate() const;
 };
 

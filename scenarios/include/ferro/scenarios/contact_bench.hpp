@@ -29,6 +29,14 @@ struct ContactBenchCase {
 [[nodiscard]] ferro::contact::ContactPatch contact_bench_patch(const ContactBenchCase& c);
 [[nodiscard]] ferro::contact::TangentialProblem contact_bench_problem(
     const ContactBenchCase& c, const ferro::contact::ContactPatch& patch);
+/// Physical input of a case: semi-axes [m], F_n [N], mu [-], creepages xi_x, xi_y [-] and spin
+/// [1/m] from the normalised ones (Kalker's C_ij at a/b, nu), steel on steel.
+struct ContactBenchInput {
+  double semi_axis_x = 0.0, semi_axis_y = 0.0, normal_force = 0.0, friction = 0.0;
+  double creepage_x = 0.0, creepage_y = 0.0, spin = 0.0;
+  double young = 0.0, poisson = 0.0;  ///< both bodies [Pa, -]
+};
+[[nodiscard]] ContactBenchInput contact_bench_input(const ContactBenchCase& c);
 
 /// Reference value of one case: converged MIM in units of mu F_n (forces) and mu F_n c (moment).
 struct ContactBenchReference {

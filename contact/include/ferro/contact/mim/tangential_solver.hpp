@@ -68,11 +68,12 @@ struct TangentialSolverOptions {
   /// >= 24 elements): same equations and tolerance on the final grid, fewer iterations.
   bool nested = false;
   /// Precondition the stick rows with the FFT inverse of the circulant extension of A^tt
-  /// (one more FFT pair per Krylov iteration). Measured: halves the products on the sphere case
-  /// at 100^2-200^2 elements (-25 to -40 % time); on small or elongated grids with large slip
-  /// areas it saves fewer products than it costs (up to +40 % time at 40 elements across).
-  /// false: diagonal scaling.
-  bool fft_preconditioner = true;
+  /// (one more FFT pair per Krylov iteration) on grids of at least this many elements; smaller
+  /// grids use diagonal scaling (0: always the FFT inverse; a huge value: never). Measured: the
+  /// FFT inverse halves the products on the sphere case at 100^2-200^2 elements (-25 to -40 %
+  /// time); on small or elongated grids it saves fewer products than it costs (25 x 25 over a
+  /// Hertzian patch: the same number of products, +60 % time; +40 % at 40 elements across).
+  int fft_preconditioner_min_elements = 4096;
   /// RMS linear residual of a Newton step, relative to tolerance x max rigid slip [-].
   double linear_factor = 0.3;
   void validate(const std::string& where = "TangentialSolverOptions") const;
