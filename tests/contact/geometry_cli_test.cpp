@@ -31,15 +31,15 @@ CliRun run(const std::string& args) {
 
 const std::string kProfiles = std::string(FERRO_DATA_DIR) + "/profiles/";
 const std::string kPair = "--wheel " + kProfiles + "MBench_S1002_v3.prw --rail " + kProfiles +
-                          "MBench_UIC60_v3.prr --gauge-mm 1435 --flange-back-mm 1360 "
-                          "--flange-back-y-mm -70 --radius-mm 460";
+                          "MBench_UIC60_v3.prr --gauge 1.435 --flange-back 1.360 "
+                          "--flange-back-y -0.070 --radius 0.460";
 
 }  // namespace
 
 TEST(geometry_cli, search_prints_every_contact_point_as_json) {
   // Manchester case 14 (y = 6.5 mm), 2 x 10 kN: tread on the left, flange on the right.
   const CliRun r = run("geometry search " + kPair +
-                       " --y-mm 6.5 --roll-rad -0.004376 --yaw-rad 0.0156 --load-n 20000");
+                       " --y 0.0065 --roll -0.004376 --yaw 0.0156 --load 20000");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto json = nlohmann::json::parse(r.out);
   const auto& points = json.at("points");
@@ -87,7 +87,7 @@ TEST(geometry_cli, bad_input_exits_with_code_2_and_names_it) {
   EXPECT_EQ(r2.code, 2);
   EXPECT_NE(r2.out.find("--inclination"), std::string::npos);
   const CliRun r3 = run("geometry search --wheel " + kProfiles + "MBench_S1002_v3.prw --rail " +
-                        kProfiles + "MBench_UIC60_v3.prr --gauge-mm 14350");
+                        kProfiles + "MBench_UIC60_v3.prr --gauge 14.35");
   EXPECT_EQ(r3.code, 2);
   EXPECT_NE(r3.out.find("track_gauge"), std::string::npos);
 }
