@@ -164,16 +164,21 @@ std::pair<int, int> position_of(const YAML::Node& node) {
 namespace {
 
 // Inputs on which yaml-cpp 0.7 loops without end, allocating: a document whose first token is
-// ',' (after comments, blank lines and a '---' marker), and a document whose root is a block
-// list at column 0 with a later line starting with ',' at column 0. Neither is a ferrodyn file
-// (whose root is a mapping). Returns the line (1-based) to name, or 0, and the message.
+// ',' (after comments, blank lines and a '---' marker), and a document whose root block
+// collection starts at column r with a later line starting with ',' left of column r (a mapping)
+// or at most at column r (a list). None is a ferrodyn file (whose root is a mapping at column 0).
+// Returns the line (1-based) to name, or 0, and the message.
 struct HangingInput {
   int line = 0;
   const char* message = "";
 };
 HangingInput hanging_flow_entry(const std::string& text) {
   bool at_document_start = true;
-  int root_list_line = 0;  // line of the '-' opening a root block list in this document
+  // The document's first content line: its line, the column of its first token, and whether
+  // that token opens a block list.
+  int root_line = 0;
+  std::size_t root_column = 0;
+  bool root_list = false;
   int line_no = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
@@ -185,7 +190,9 @@ HangingInput hanging_flow_entry(const std::string& text) {
     if (first == std::string_view::npos || line[first] == '#') continue;
     if (line.substr(0, 3) == "---" || line.substr(0, 3) == "...") {
       at_document_start = true;
-      root_list_line = 0;
+      root_line = 0;
+      root_column = 0;
+      root_list = false;
       const std::size_t rest = line.find_first_not_of(" \t\r", 3);
       if (rest == std::string_view::npos || line[rest] == '#') continue;
       if (line[rest] == ',') return {line_no, "malformed YAML: a document cannot start with ','"};
@@ -196,12 +203,17 @@ HangingInput hanging_flow_entry(const std::string& text) {
     if (at_document_start && line[first] == ',') {
       return {line_no, "malformed YAML: a document cannot start with ','"};
     }
-    if (at_document_start && first == 0 && line[0] == '-' &&
-        (line.size() == 1 || line[1] == ' ' || line[1] == '\t' || line[1] == '\r')) {
-      root_list_line = line_no;
-    }
-    if (root_list_line > 0 && line[0] == ',') {
-      return {root_list_line, "expected a mapping of keys at the top level, got a list"};
+    if (at_document_start) {
+      root_line = line_no;
+      root_column = first;
+      root_list = line[first] == '-' && (first + 1 == line.size() || line[first + 1] == ' ' ||
+                                         line[first + 1] == '\t' || line[first + 1] == '\r');
+    } else if (line[first] == ',' && (first < root_column || (root_list && first == root_column))) {
+      if (root_list) {
+        return {root_line, "expected a mapping of keys at the top level, got a list"};
+      }
+      return {line_no, "malformed YAML: a line cannot start with ',' left of the document's "
+                       "first key"};
     }
     at_document_start = false;
   }

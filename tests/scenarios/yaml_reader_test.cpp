@@ -79,5 +79,22 @@ TEST(yaml_reader, comma_line_in_a_root_list_is_refused_not_looped_on) {
   }
 }
 
+TEST(yaml_reader, comma_line_left_of_an_indented_root_is_refused_not_looped_on) {
+  // Same loop on a root mapping indented by one or more columns and a later ',' line left of
+  // it: refused at that line.
+  for (const char* text : {" a: 1\n, c\n", "  a: 1\n b: 2\n , c\n", " a:\n  - x\n, c\n"}) {
+    try {
+      (void)parse_yaml_text(text, "indented.yaml");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const YamlInputError& e) {
+      EXPECT_GE(e.line(), 2) << e.what();
+      EXPECT_NE(std::string(e.what()).find("cannot start with ','"), std::string::npos)
+          << e.what();
+    }
+  }
+  // A multi-line flow list with leading commas under a root at column 0 stays valid.
+  EXPECT_NO_THROW((void)parse_yaml_text("a: [1\n, 2]\nb: 3\n", "flow.yaml"));
+}
+
 }  // namespace
 }  // namespace ferro::scenarios
