@@ -331,70 +331,76 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   auto poisson = std::make_shared<double>(0.28);
   search->add_option("--wheel", po->wheel, "wheel profile (.prw or two-column mm)")->required();
   search->add_option("--rail", po->rail, "rail profile (.prr or two-column mm)")->required();
-  // Lengths in m; the former millimetre spelling of each stays as a hidden alias, scaled after
-  // parsing (given both ways: bad input).
-  struct MmAlias {
-    double* si;
-    double mm = std::numeric_limits<double>::quiet_NaN();
+  // SI options; the former spelling of each (millimetres, or the unit in the name) stays as a
+  // hidden alias, converted after parsing. Given both ways: bad input.
+  struct Alias {
+    CLI::Option* si;
+    double* target;
+    double scale;
+    std::string old_name;
+    double value = std::numeric_limits<double>::quiet_NaN();
   };
-  auto mm_aliases = std::make_shared<std::deque<MmAlias>>();
-  const auto add_length = [&](const std::string& name, double& target, const std::string& help,
-                              const std::string& old_name) {
-    CLI::Option* o = search->add_option(name, target, help + " [m]")->check(kFiniteNumber);
-    MmAlias& alias = mm_aliases->emplace_back(MmAlias{&target});
-    search->add_option(old_name, alias.mm)->check(kFiniteNumber)->group("")->excludes(o);
+  auto aliases = std::make_shared<std::deque<Alias>>();
+  const auto add_si = [&](const std::string& name, double& target, const std::string& help,
+                          const std::string& old_name, double scale) {
+    CLI::Option* o = search->add_option(name, target, help)->check(kFiniteNumber);
+    Alias& alias = aliases->emplace_back(Alias{o, &target, scale, old_name});
+    search->add_option(old_name, alias.value)->check(kFiniteNumber)->group("");
     return o;
   };
-  add_length("--gauge", po->gauge, "track gauge", "--gauge-mm")->capture_default_str();
-  add_length("--gauge-depth", po->gauge_depth, "gauge measured below top of rail",
-             "--gauge-depth-mm")
+  add_si("--gauge", po->gauge, "track gauge [m]", "--gauge-mm", 1e-3)->capture_default_str();
+  add_si("--gauge-depth", po->gauge_depth, "gauge measured below top of rail [m]",
+         "--gauge-depth-mm", 1e-3)
       ->capture_default_str();
   search
       ->add_option("--inclination", po->inclination,
                    "rail inclination applied to the rail file: 1:40, 1:20, 0 or an angle in rad")
       ->capture_default_str();
-  add_length("--flange-back", po->flange_back, "flange-back distance", "--flange-back-mm")
+  add_si("--flange-back", po->flange_back, "flange-back distance [m]", "--flange-back-mm", 1e-3)
       ->capture_default_str();
-  add_length("--flange-back-y", po->flange_back_y,
-             "flange-back position in wheel-profile coordinates (default: first point)",
-             "--flange-back-y-mm");
-  add_length("--radius", po->radius, "nominal wheel radius at the taping line", "--radius-mm")
+  add_si("--flange-back-y", po->flange_back_y,
+         "flange-back position in wheel-profile coordinates (default: first point) [m]",
+         "--flange-back-y-mm", 1e-3);
+  add_si("--radius", po->radius, "nominal wheel radius at the taping line [m]", "--radius-mm",
+         1e-3)
       ->capture_default_str();
-  add_length("--section-step", po->section_step, "wheel section spacing", "--section-step-mm")
+  add_si("--section-step", po->section_step, "wheel section spacing [m]", "--section-step-mm",
+         1e-3)
       ->capture_default_str();
-  add_length("--y", pin->y, "lateral shift, + to the right", "--y-mm")->capture_default_str();
-  search
-      ->add_option("--roll", pin->roll,
-                   "roll [rad], + lowers the right wheel (0 with neither --height nor --load: "
-                   "solved for rigid contact)")
-      ->check(kFiniteNumber);
-  search->add_option("--roll-rad", pin->roll)->check(kFiniteNumber)->group("");
-  search->add_option("--yaw", pin->yaw, "yaw [rad], + turns the front to the right")
-      ->check(kFiniteNumber);
-  search->add_option("--yaw-rad", pin->yaw)->check(kFiniteNumber)->group("");
-  auto* h = add_length("--height", pin->height, "axle-centre drop below nominal (+ down)",
-                       "--height-mm");
-  auto* h_mm = search->get_option("--height-mm");
-  auto* load = search->add_option("--load", pin->load,
-                                  "total vertical load [N]: solve the height (Hertz)")
-                   ->check(kFiniteNumber)
-                   ->excludes(h)
-                   ->excludes(h_mm);
-  search->add_option("--load-n", pin->load)
+  add_si("--y", pin->y, "lateral shift, + to the right [m]", "--y-mm", 1e-3)
+      ->capture_default_str();
+  add_si("--roll", pin->roll,
+         "roll [rad], + lowers the right wheel (0 with neither --height nor --load: solved for "
+         "rigid contact)",
+         "--roll-rad", 1.0);
+  add_si("--yaw", pin->yaw, "yaw [rad], + turns the front to the right", "--yaw-rad", 1.0);
+  auto* h = add_si("--height", pin->height, "axle-centre drop below nominal (+ down) [m]",
+                   "--height-mm", 1e-3);
+  add_si("--load", pin->load, "total vertical load [N]: solve the height (Hertz)", "--load-n", 1.0)
+      ->excludes(h);
+  search->add_option("--shear-modulus", *shear, "for --load [Pa]")
       ->check(kFiniteNumber)
-      ->group("")
-      ->excludes(h)
-      ->excludes(h_mm)
-      ->excludes(load);
+      ->capture_default_str();
+  add_hidden_alias(search, "--shear-modulus-mpa", *shear_mpa);
+  search->add_option("--poisson", *poisson, "for --load")
+      ->check(kFiniteNumber)
+      ->capture_default_str();
   search->add_option("--batch", *batch,
                      "CSV in (header with y [m] and optional roll, yaw [rad], height [m], load "
                      "[N]): one CSV row per contact point out");
   add_output_option(search, *out, "batch output CSV ('-' = stdout)", {"--out"})
       ->capture_default_str();
 
-  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson, mm_aliases] {
-    for (const MmAlias& a : *mm_aliases) {
-      if (!std::isnan(a.mm)) *a.si = a.mm * 1e-3;
+  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson, aliases] {
+    for (const Alias& a : *aliases) {
+      if (std::isnan(a.value)) continue;
+      if (a.si->count() > 0) {
+        throw CLI::ValidationError(a.si->get_name(), "given twice (also as " + a.old_name + ")");
+      }
+      *a.target = a.value * a.scale;
+    }
+    if (!std::isnan(pin->height) && !std::isnan(pin->load)) {
+      throw CLI::ValidationError("--height", "give --height or --load, not both");
     }
     handler = [po, pin, batch, out, shear, shear_mpa, poisson] {
       const double g = std::isnan(*shear_mpa) ? *shear : *shear_mpa * 1e6;
