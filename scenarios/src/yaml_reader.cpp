@@ -164,7 +164,7 @@ std::pair<int, int> position_of(const YAML::Node& node) {
 namespace {
 
 // Inputs on which yaml-cpp 0.7 loops without end, allocating: a document whose first token is
-// ',' (after comments, blank lines and a '---' marker), and a document whose root block
+// ',' (after comments, blank lines, a '---' marker and node properties: tags, anchors), and a document whose root block
 // collection starts at column r with a later line starting with ',' left of column r (a mapping)
 // or at most at column r (a list). None is a ferrodyn file (whose root is a mapping at column 0).
 // Returns the line (1-based) to name, or 0, and the message.
@@ -172,6 +172,27 @@ struct HangingInput {
   int line = 0;
   const char* message = "";
 };
+
+// Line (1-based) of a ',' that follows only node properties (tags '!...', anchors '&...'),
+// blanks and comments from `pos` (a document's first token) on, or 0.
+int comma_after_properties(const std::string& text, std::size_t pos, int line_no) {
+  while (pos < text.size()) {
+    const char c = text[pos];
+    if (c == '\n') {
+      ++line_no;
+      ++pos;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      ++pos;
+    } else if (c == '#') {
+      pos = std::min(text.find('\n', pos), text.size());
+    } else if (c == '!' || c == '&') {
+      pos = std::min(text.find_first_of(" \t\r\n,[]{}", pos), text.size());
+    } else {
+      return c == ',' ? line_no : 0;
+    }
+  }
+  return 0;
+}
 HangingInput hanging_flow_entry(const std::string& text) {
   bool at_document_start = true;
   // The document's first content line: its line, the column of its first token, and whether
@@ -184,6 +205,7 @@ HangingInput hanging_flow_entry(const std::string& text) {
   while (pos <= text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     const std::string_view line(text.data() + pos, end - pos);
+    const std::size_t line_start = pos;
     ++line_no;
     pos = end + 1;
     const std::size_t first = line.find_first_not_of(" \t\r");
@@ -195,15 +217,18 @@ HangingInput hanging_flow_entry(const std::string& text) {
       root_list = false;
       const std::size_t rest = line.find_first_not_of(" \t\r", 3);
       if (rest == std::string_view::npos || line[rest] == '#') continue;
-      if (line[rest] == ',') return {line_no, "malformed YAML: a document cannot start with ','"};
+      if (const int comma = comma_after_properties(text, line_start + rest, line_no);
+          comma > 0) {
+        return {comma, "malformed YAML: a document cannot start with ','"};
+      }
       at_document_start = false;
       continue;
     }
     if (line[0] == '%') continue;  // directive
-    if (at_document_start && line[first] == ',') {
-      return {line_no, "malformed YAML: a document cannot start with ','"};
-    }
     if (at_document_start) {
+      if (const int comma = comma_after_properties(text, line_start + first, line_no); comma > 0) {
+        return {comma, "malformed YAML: a document cannot start with ','"};
+      }
       root_line = line_no;
       root_column = first;
       root_list = line[first] == '-' && (first + 1 == line.size() || line[first + 1] == ' ' ||

@@ -96,5 +96,18 @@ TEST(yaml_reader, comma_line_left_of_an_indented_root_is_refused_not_looped_on) 
   EXPECT_NO_THROW((void)parse_yaml_text("a: [1\n, 2]\nb: 3\n", "flow.yaml"));
 }
 
+TEST(yaml_reader, comma_after_a_tag_or_anchor_at_document_start_is_refused_not_looped_on) {
+  // Same loop when the document's first token after its properties is ','.
+  for (const char* text : {"!x,\n", " !xx*kk,kk]\n", "&a\n,\n", "--- !x &a ,\n", "! ,\n"}) {
+    try {
+      (void)parse_yaml_text(text, "tag.yaml");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const YamlInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("cannot start with ','"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ferro::scenarios
