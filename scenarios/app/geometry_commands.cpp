@@ -2,8 +2,10 @@
 // batch); `ferrodyn geometry PAIR.yaml`: contact table (HDF5), contact-point diagram data,
 // delta_r(y) and equivalent conicity (CSV), plots via tools/geometry_plot.py.
 //
-// Units on the command line and in the outputs: mm, rad, N (as in the Manchester benchmark
-// files); every option and field says its unit in its name.
+// Units: SI on the command line (m, rad, N, Pa; the former millimetre spellings --y-mm,
+// --height-mm, --gauge-mm ... stay as hidden aliases) and in the batch columns y, roll, yaw, height,
+// load (y_mm, height_mm, roll_rad, yaw_rad, load_n also read); the outputs are in mm, rad, N as in
+// the Manchester benchmark files, every field naming its unit.
 
 #include <fmt/format.h>
 
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,9 +29,8 @@
 
 #include "cli.hpp"
 #include "ferro/contact/geometry/contact_table.hpp"
-#include "ferro/contact/io/text_writer.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "cli.hpp"
+#include "ferro/contact/io/text_writer.hpp"
 #include "ferro/scenarios/csv_batch.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
@@ -38,32 +40,32 @@ namespace {
 
 namespace fc = ferro::contact;
 
-struct PairOptions {
+struct PairOptions {  // SI
   std::string wheel, rail;
-  double gauge_mm = 1435.0, gauge_depth_mm = 14.0, flange_back_mm = 1360.0;
-  double flange_back_y_mm = std::numeric_limits<double>::quiet_NaN();
-  double radius_mm = 460.0;
+  double gauge = 1.435, gauge_depth = 0.014, flange_back = 1.360;
+  double flange_back_y = std::numeric_limits<double>::quiet_NaN();
+  double radius = 0.460;
   std::string inclination = "0";
-  double section_step_mm = 0.5;
+  double section_step = 0.5e-3;
 };
 
 fc::WheelRailPair make_pair(const PairOptions& o) {
   fc::WheelRailPairParams p;
-  p.track_gauge = o.gauge_mm * 1e-3;
-  p.gauge_depth = o.gauge_depth_mm * 1e-3;
-  p.flange_back_distance = o.flange_back_mm * 1e-3;
-  p.flange_back_y = o.flange_back_y_mm * 1e-3;
-  p.nominal_radius = o.radius_mm * 1e-3;
+  p.track_gauge = o.gauge;
+  p.gauge_depth = o.gauge_depth;
+  p.flange_back_distance = o.flange_back;
+  p.flange_back_y = o.flange_back_y;
+  p.nominal_radius = o.radius;
   p.rail_inclination = scenarios::parse_inclination(o.inclination, "--inclination");
-  p.section_step = o.section_step_mm * 1e-3;
+  p.section_step = o.section_step;
   return fc::WheelRailPair(fc::read_profile(o.wheel, fc::ProfileKind::wheel),
                            fc::read_profile(o.rail, fc::ProfileKind::rail), p);
 }
 
-struct PoseInput {
-  double y_mm = 0.0, roll_rad = 0.0, yaw_rad = 0.0;
-  double height_mm = std::numeric_limits<double>::quiet_NaN();  // axle drop, + down
-  double load_n = std::numeric_limits<double>::quiet_NaN();     // total vertical load
+struct PoseInput {  // SI
+  double y = 0.0, roll = 0.0, yaw = 0.0;
+  double height = std::numeric_limits<double>::quiet_NaN();  // axle drop, + down [m]
+  double load = std::numeric_limits<double>::quiet_NaN();    // total vertical load [N]
 };
 
 struct PoseResult {
@@ -72,17 +74,17 @@ struct PoseResult {
 };
 
 PoseResult solve_pose(const fc::WheelRailPair& pair, const PoseInput& in, double estar) {
-  fc::WheelsetPose pose{in.y_mm * 1e-3, 0.0, in.roll_rad, in.yaw_rad};
-  if (std::isfinite(in.load_n)) {
-    const fc::LoadedWheelset lw = fc::solve_vertical_load(pair, pose, in.load_n, estar);
+  fc::WheelsetPose pose{in.y, 0.0, in.roll, in.yaw};
+  if (std::isfinite(in.load)) {
+    const fc::LoadedWheelset lw = fc::solve_vertical_load(pair, pose, in.load, estar);
     return {lw.pose, lw.points};
   }
-  if (std::isfinite(in.height_mm)) {
-    pose.vertical = in.height_mm * 1e-3;
+  if (std::isfinite(in.height)) {
+    pose.vertical = in.height;
     return {pose, fc::search_contacts(pair, pose)};
   }
   // Neither: rigid contact (just touching; roll solved unless given non-zero).
-  if (in.roll_rad == 0.0) {
+  if (in.roll == 0.0) {
     const fc::RigidContact rc = fc::solve_rigid_contact(pair, pose.lateral, pose.yaw);
     return {rc.pose, rc.points};
   }
@@ -155,20 +157,26 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
   if (!in) throw std::invalid_argument(fmt::format("--batch: cannot open '{}'", in_path));
   scenarios::CsvBatchReader reader(in, in_path);
   const std::vector<std::string>& header = reader.header();
-  const std::map<std::string, double PoseInput::*> known{{"y_mm", &PoseInput::y_mm},
-                                                         {"roll_rad", &PoseInput::roll_rad},
-                                                         {"yaw_rad", &PoseInput::yaw_rad},
-                                                         {"height_mm", &PoseInput::height_mm},
-                                                         {"load_n", &PoseInput::load_n}};
-  std::vector<double PoseInput::*> cols;
+  // Column -> pose field and the factor to SI (the mm/unit-suffixed names are read as well).
+  struct Column {
+    double PoseInput::*field = nullptr;
+    double to_si = 1.0;
+  };
+  const std::map<std::string, Column> known{
+      {"y", {&PoseInput::y}},           {"roll", {&PoseInput::roll}},
+      {"yaw", {&PoseInput::yaw}},       {"height", {&PoseInput::height}},
+      {"load", {&PoseInput::load}},     {"y_mm", {&PoseInput::y, 1e-3}},
+      {"roll_rad", {&PoseInput::roll}}, {"yaw_rad", {&PoseInput::yaw}},
+      {"height_mm", {&PoseInput::height, 1e-3}}, {"load_n", {&PoseInput::load}}};
+  std::vector<Column> cols;
   for (const auto& h : header) {
     const auto it = known.find(h);
-    cols.push_back(it == known.end() ? nullptr : it->second);
+    cols.push_back(it == known.end() ? Column{} : it->second);
   }
-  if (!reader.has_column("y_mm")) {
+  if (!reader.has_column("y") && !reader.has_column("y_mm")) {
     throw std::invalid_argument(reader.located(
-        "header needs a 'y_mm' column (known: y_mm, roll_rad, yaw_rad, height_mm, load_n; other "
-        "columns are copied to the output)"));
+        "header needs a 'y' [m] or 'y_mm' column (known: y, roll, yaw, height, load in SI; y_mm, "
+        "roll_rad, yaw_rad, height_mm, load_n; other columns are copied to the output)"));
   }
   std::optional<io::TextWriter> out_file;
   if (out_path != "-") out_file.emplace(out_path);
@@ -190,7 +198,7 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
   while (reader.next(cells)) {
     PoseInput pin = defaults;
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (cols[c]) pin.*cols[c] = reader.number(cells, c);
+      if (cols[c].field) pin.*cols[c].field = reader.number(cells, c) * cols[c].to_si;
     }
     const PoseResult r = solve_pose(pair, pin, estar);
     std::string echo;
@@ -323,59 +331,77 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   auto poisson = std::make_shared<double>(0.28);
   search->add_option("--wheel", po->wheel, "wheel profile (.prw or two-column mm)")->required();
   search->add_option("--rail", po->rail, "rail profile (.prr or two-column mm)")->required();
-  search->add_option("--gauge-mm", po->gauge_mm, "track gauge")
-      ->check(kFiniteNumber)
-      ->capture_default_str();
-  search->add_option("--gauge-depth-mm", po->gauge_depth_mm, "gauge measured below top of rail")
-      ->check(kFiniteNumber)
+  // SI options; the former spelling of each (millimetres, or the unit in the name) stays as a
+  // hidden alias, converted after parsing. Given both ways: bad input.
+  struct Alias {
+    CLI::Option* si;
+    double* target;
+    double scale;
+    std::string old_name;
+    double value = std::numeric_limits<double>::quiet_NaN();
+  };
+  auto aliases = std::make_shared<std::deque<Alias>>();
+  const auto add_si = [&](const std::string& name, double& target, const std::string& help,
+                          const std::string& old_name, double scale) {
+    CLI::Option* o = search->add_option(name, target, help)->check(kFiniteNumber);
+    Alias& alias = aliases->emplace_back(Alias{o, &target, scale, old_name});
+    search->add_option(old_name, alias.value)->check(kFiniteNumber)->group("");
+    return o;
+  };
+  add_si("--gauge", po->gauge, "track gauge [m]", "--gauge-mm", 1e-3)->capture_default_str();
+  add_si("--gauge-depth", po->gauge_depth, "gauge measured below top of rail [m]",
+         "--gauge-depth-mm", 1e-3)
       ->capture_default_str();
   search
       ->add_option("--inclination", po->inclination,
                    "rail inclination applied to the rail file: 1:40, 1:20, 0 or an angle in rad")
       ->capture_default_str();
-  search->add_option("--flange-back-mm", po->flange_back_mm, "flange-back distance")
-      ->check(kFiniteNumber)
+  add_si("--flange-back", po->flange_back, "flange-back distance [m]", "--flange-back-mm", 1e-3)
       ->capture_default_str();
-  search
-      ->add_option("--flange-back-y-mm", po->flange_back_y_mm,
-                   "flange-back position in wheel-profile coordinates (default: first point)")
-      ->check(kFiniteNumber);
-  search->add_option("--radius-mm", po->radius_mm, "nominal wheel radius at the taping line")
-      ->check(kFiniteNumber)
+  add_si("--flange-back-y", po->flange_back_y,
+         "flange-back position in wheel-profile coordinates (default: first point) [m]",
+         "--flange-back-y-mm", 1e-3);
+  add_si("--radius", po->radius, "nominal wheel radius at the taping line [m]", "--radius-mm",
+         1e-3)
       ->capture_default_str();
-  search->add_option("--section-step-mm", po->section_step_mm, "wheel section spacing")
-      ->check(kFiniteNumber)
+  add_si("--section-step", po->section_step, "wheel section spacing [m]", "--section-step-mm",
+         1e-3)
       ->capture_default_str();
-  search->add_option("--y-mm", pin->y_mm, "lateral shift, + to the right")
-      ->check(kFiniteNumber)
+  add_si("--y", pin->y, "lateral shift, + to the right [m]", "--y-mm", 1e-3)
       ->capture_default_str();
-  search
-      ->add_option("--roll-rad", pin->roll_rad,
-                   "roll, + lowers the right wheel (0 with "
-                   "neither --height-mm nor --load-n: solved for rigid contact)")
-      ->check(kFiniteNumber);
-  search->add_option("--yaw-rad", pin->yaw_rad, "yaw, + turns the front to the right")
-      ->check(kFiniteNumber);
-  auto* h =
-      search->add_option("--height-mm", pin->height_mm, "axle-centre drop below nominal (+ down)")
-          ->check(kFiniteNumber);
-  search->add_option("--load-n", pin->load_n, "total vertical load: solve the height (Hertz)")
-      ->check(kFiniteNumber)
+  add_si("--roll", pin->roll,
+         "roll [rad], + lowers the right wheel (0 with neither --height nor --load: solved for "
+         "rigid contact)",
+         "--roll-rad", 1.0);
+  add_si("--yaw", pin->yaw, "yaw [rad], + turns the front to the right", "--yaw-rad", 1.0);
+  auto* h = add_si("--height", pin->height, "axle-centre drop below nominal (+ down) [m]",
+                   "--height-mm", 1e-3);
+  add_si("--load", pin->load, "total vertical load [N]: solve the height (Hertz)", "--load-n", 1.0)
       ->excludes(h);
-  search->add_option("--shear-modulus", *shear, "for --load-n [Pa]")
+  search->add_option("--shear-modulus", *shear, "for --load [Pa]")
       ->check(kFiniteNumber)
       ->capture_default_str();
   add_hidden_alias(search, "--shear-modulus-mpa", *shear_mpa);
-  search->add_option("--poisson", *poisson, "for --load-n")
+  search->add_option("--poisson", *poisson, "for --load")
       ->check(kFiniteNumber)
       ->capture_default_str();
   search->add_option("--batch", *batch,
-                     "CSV in (header with y_mm and optional roll_rad, yaw_rad, height_mm, "
-                     "load_n): one CSV row per contact point out");
+                     "CSV in (header with y [m] and optional roll, yaw [rad], height [m], load "
+                     "[N]): one CSV row per contact point out");
   add_output_option(search, *out, "batch output CSV ('-' = stdout)", {"--out"})
       ->capture_default_str();
 
-  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson] {
+  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson, aliases] {
+    for (const Alias& a : *aliases) {
+      if (std::isnan(a.value)) continue;
+      if (a.si->count() > 0) {
+        throw CLI::ValidationError(a.si->get_name(), "given twice (also as " + a.old_name + ")");
+      }
+      *a.target = a.value * a.scale;
+    }
+    if (!std::isnan(pin->height) && !std::isnan(pin->load)) {
+      throw CLI::ValidationError("--height", "give --height or --load, not both");
+    }
     handler = [po, pin, batch, out, shear, shear_mpa, poisson] {
       const double g = std::isnan(*shear_mpa) ? *shear : *shear_mpa * 1e6;
       const double e = 2.0 * g * (1.0 + *poisson);

@@ -13,7 +13,9 @@
 #include <map>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace ferro::scenarios {
 namespace {
@@ -49,63 +51,96 @@ constexpr std::size_t kMaxNodes = 1'000'000;
 // Rejects what yaml-cpp accepts but a ferrodyn file never means: non-scalar (complex) keys,
 // a key given twice in one mapping (yaml-cpp keeps both and lookups see the first), nesting
 // beyond kMaxNesting and alias expansion beyond kMaxNodes.
-void check_structure(const YAML::Node& root, const std::string& path) {
-  struct Item {
+// An alias is the very node of its anchor, so each container is checked once and remembers the
+// node count and height of its expansion: the check takes time in the size of the text, not of
+// the expansion (a "billion laughs" file is rejected as fast as it is parsed).
+class StructureCheck {
+ public:
+  explicit StructureCheck(const std::string& path) : path_(path) {}
+
+  void run(const YAML::Node& root) { (void)walk(root, 0, ""); }
+
+ private:
+  struct Seen {
     YAML::Node node;
-    int depth;
-    std::string key_path;  // of the node, or of its parent sequence when index >= 0
-    long index;            // position in the parent sequence, or -1
+    std::size_t count;  // nodes of the expansion, the container included
+    int height;         // levels below it
   };
-  std::vector<Item> stack{{root, 0, "", -1}};
-  std::size_t visited = 0;
-  while (!stack.empty()) {
-    Item item = std::move(stack.back());
-    stack.pop_back();
-    const YAML::Node& node = item.node;
-    const int depth = item.depth;
-    // Key paths are formatted only for containers: long lists of scalars stay cheap.
-    if (item.index >= 0 && (node.IsMap() || node.IsSequence())) {
-      item.key_path = fmt::format("{}[{}]", item.key_path, item.index);
-    }
-    if (++visited > kMaxNodes) {
-      throw YamlInputError(path, 1, 1, "(document)",
+
+  [[noreturn]] void too_deep(const YAML::Node& node) const {
+    const auto [l, c] = position_of(node);
+    throw YamlInputError(path_, l, c, "(document)",
+                         fmt::format("nested deeper than {} levels; ferrodyn input files "
+                                     "nest a few levels",
+                                     kMaxNesting));
+  }
+  void add(std::size_t& count, std::size_t more) const {
+    count += more;
+    if (count > kMaxNodes) {
+      throw YamlInputError(path_, 1, 1, "(document)",
                            fmt::format("more than {} nodes (after expanding aliases); ferrodyn "
                                        "input files are far smaller",
                                        kMaxNodes));
     }
-    if (depth > kMaxNesting) {
-      const auto [l, c] = position_of(node);
-      throw YamlInputError(path, l, c, "(document)",
-                           fmt::format("nested deeper than {} levels; ferrodyn input files "
-                                       "nest a few levels",
-                                       kMaxNesting));
+  }
+
+  // Node count and height of the expansion of `node`, met at `depth`.
+  std::pair<std::size_t, int> walk(const YAML::Node& node, int depth, const std::string& key_path) {
+    if (depth > kMaxNesting) too_deep(node);
+    if (!node.IsMap() && !node.IsSequence()) return {1, 0};
+    const YAML::Mark mark = node.Mark();
+    std::vector<Seen>& same_place = seen_[mark.pos];
+    for (const Seen& s : same_place) {
+      if (s.node.is(node)) {
+        if (depth + s.height > kMaxNesting) too_deep(node);
+        return {s.count, s.height};
+      }
     }
+    std::size_t count = 1;
+    int height = 0;
+    const auto child = [&](const YAML::Node& n, const std::string& p) {
+      const auto [c, h] = walk(n, depth + 1, p);
+      add(count, c);
+      height = std::max(height, h + 1);
+    };
     if (node.IsSequence()) {
       long i = 0;
-      for (const auto& child : node) stack.push_back({child, depth + 1, item.key_path, i++});
-    } else if (node.IsMap()) {
+      for (const auto& item : node) {
+        child(item, (item.IsMap() || item.IsSequence()) ? fmt::format("{}[{}]", key_path, i) : "");
+        ++i;
+      }
+    } else {
       std::map<std::string, int> first_line;
       for (const auto& kv : node) {
         const auto [l, c] = position_of(kv.first);
         if (!kv.first.IsScalar()) {
-          throw YamlInputError(path, l, c, item.key_path.empty() ? "(key)" : item.key_path,
+          throw YamlInputError(path_, l, c, key_path.empty() ? "(key)" : key_path,
                                fmt::format("a key must be a plain word, got {} (complex keys "
                                            "written with '? ' are not supported)",
                                            describe(kv.first)));
         }
-        const std::string key_path =
-            item.key_path.empty() ? kv.first.Scalar() : item.key_path + "." + kv.first.Scalar();
+        const std::string child_path =
+            key_path.empty() ? kv.first.Scalar() : key_path + "." + kv.first.Scalar();
         const auto [it, inserted] = first_line.emplace(kv.first.Scalar(), l);
         if (!inserted) {
-          throw YamlInputError(path, l, c, key_path,
+          throw YamlInputError(path_, l, c, child_path,
                                fmt::format("duplicate key '{}' (first given at line {}, again at "
                                            "line {}); keep one",
                                            kv.first.Scalar(), it->second, l));
         }
-        stack.push_back({kv.second, depth + 1, key_path, -1});
+        child(kv.second, child_path);
       }
     }
+    seen_[mark.pos].push_back({node, count, height});
+    return {count, height};
   }
+
+  const std::string& path_;
+  std::unordered_map<int, std::vector<Seen>> seen_;  // by position in the text
+};
+
+void check_structure(const YAML::Node& root, const std::string& path) {
+  StructureCheck(path).run(root);
 }
 
 }  // namespace
@@ -128,40 +163,93 @@ std::pair<int, int> position_of(const YAML::Node& node) {
 
 namespace {
 
-// Line (1-based) of a document whose first token is ',' (after comments, blank lines and a
-// '---' marker), or 0. yaml-cpp 0.7 loops without end, allocating, on such a document.
-int leading_flow_entry_line(const std::string& text) {
+// Inputs on which yaml-cpp 0.7 loops without end, allocating: a document whose first token is
+// ',' (after comments, blank lines, a '---' marker and node properties: tags, anchors), and a document whose root block
+// collection starts at column r with a later line starting with ',' left of column r (a mapping)
+// or at most at column r (a list). None is a ferrodyn file (whose root is a mapping at column 0).
+// Returns the line (1-based) to name, or 0, and the message.
+struct HangingInput {
+  int line = 0;
+  const char* message = "";
+};
+
+// Line (1-based) of a ',' that follows only node properties (tags '!...', anchors '&...'),
+// blanks and comments from `pos` (a document's first token) on, or 0.
+int comma_after_properties(const std::string& text, std::size_t pos, int line_no) {
+  while (pos < text.size()) {
+    const char c = text[pos];
+    if (c == '\n') {
+      ++line_no;
+      ++pos;
+    } else if (c == ' ' || c == '\t' || c == '\r') {
+      ++pos;
+    } else if (c == '#') {
+      pos = std::min(text.find('\n', pos), text.size());
+    } else if (c == '!' || c == '&') {
+      pos = std::min(text.find_first_of(" \t\r\n,[]{}", pos), text.size());
+    } else {
+      return c == ',' ? line_no : 0;
+    }
+  }
+  return 0;
+}
+HangingInput hanging_flow_entry(const std::string& text) {
   bool at_document_start = true;
+  // The document's first content line: its line, the column of its first token, and whether
+  // that token opens a block list.
+  int root_line = 0;
+  std::size_t root_column = 0;
+  bool root_list = false;
   int line_no = 0;
   std::size_t pos = 0;
   while (pos <= text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
     const std::string_view line(text.data() + pos, end - pos);
+    const std::size_t line_start = pos;
     ++line_no;
     pos = end + 1;
     const std::size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string_view::npos || line[first] == '#') continue;
     if (line.substr(0, 3) == "---" || line.substr(0, 3) == "...") {
       at_document_start = true;
+      root_line = 0;
+      root_column = 0;
+      root_list = false;
       const std::size_t rest = line.find_first_not_of(" \t\r", 3);
       if (rest == std::string_view::npos || line[rest] == '#') continue;
-      if (line[rest] == ',') return line_no;
+      if (const int comma = comma_after_properties(text, line_start + rest, line_no);
+          comma > 0) {
+        return {comma, "malformed YAML: a document cannot start with ','"};
+      }
       at_document_start = false;
       continue;
     }
     if (line[0] == '%') continue;  // directive
-    if (at_document_start && line[first] == ',') return line_no;
+    if (at_document_start) {
+      if (const int comma = comma_after_properties(text, line_start + first, line_no); comma > 0) {
+        return {comma, "malformed YAML: a document cannot start with ','"};
+      }
+      root_line = line_no;
+      root_column = first;
+      root_list = line[first] == '-' && (first + 1 == line.size() || line[first + 1] == ' ' ||
+                                         line[first + 1] == '\t' || line[first + 1] == '\r');
+    } else if (line[first] == ',' && (first < root_column || (root_list && first == root_column))) {
+      if (root_list) {
+        return {root_line, "expected a mapping of keys at the top level, got a list"};
+      }
+      return {line_no, "malformed YAML: a line cannot start with ',' left of the document's "
+                       "first key"};
+    }
     at_document_start = false;
   }
-  return 0;
+  return {};
 }
 
 }  // namespace
 
 YamlFile parse_yaml_text(const std::string& text, const std::string& path) {
-  if (const int line = leading_flow_entry_line(text); line > 0) {
-    throw YamlInputError(path, line, 1, "(document)",
-                         "malformed YAML: a document cannot start with ','");
+  if (const HangingInput h = hanging_flow_entry(text); h.line > 0) {
+    throw YamlInputError(path, h.line, 1, "(document)", h.message);
   }
   YamlFile f{path, text, {}};
   std::vector<YAML::Node> documents;

@@ -31,15 +31,15 @@ CliRun run(const std::string& args) {
 
 const std::string kProfiles = std::string(FERRO_DATA_DIR) + "/profiles/";
 const std::string kPair = "--wheel " + kProfiles + "MBench_S1002_v3.prw --rail " + kProfiles +
-                          "MBench_UIC60_v3.prr --gauge-mm 1435 --flange-back-mm 1360 "
-                          "--flange-back-y-mm -70 --radius-mm 460";
+                          "MBench_UIC60_v3.prr --gauge 1.435 --flange-back 1.360 "
+                          "--flange-back-y -0.070 --radius 0.460";
 
 }  // namespace
 
 TEST(geometry_cli, search_prints_every_contact_point_as_json) {
   // Manchester case 14 (y = 6.5 mm), 2 x 10 kN: tread on the left, flange on the right.
   const CliRun r = run("geometry search " + kPair +
-                       " --y-mm 6.5 --roll-rad -0.004376 --yaw-rad 0.0156 --load-n 20000");
+                       " --y 0.0065 --roll -0.004376 --yaw 0.0156 --load 20000");
   ASSERT_EQ(r.code, 0) << r.out;
   const auto json = nlohmann::json::parse(r.out);
   const auto& points = json.at("points");
@@ -55,6 +55,34 @@ TEST(geometry_cli, search_prints_every_contact_point_as_json) {
   }
   EXPECT_TRUE(flange);
   EXPECT_NEAR(total, 20000.0, 1e-2);  // vertical equilibrium of the solved pose
+}
+
+TEST(geometry_cli, former_millimetre_spellings_are_aliases_of_the_si_options) {
+  // The same Manchester case 14 through the hidden former spellings: the same output.
+  const std::string si = " --y 0.0065 --roll -0.004376 --yaw 0.0156 --load 20000";
+  const std::string old = " --y-mm 6.5 --roll-rad -0.004376 --yaw-rad 0.0156 --load-n 20000";
+  const CliRun a = run("geometry search " + kPair + si);
+  const CliRun b = run("geometry search --wheel " + kProfiles + "MBench_S1002_v3.prw --rail " +
+                       kProfiles + "MBench_UIC60_v3.prr --gauge-mm 1435 --flange-back-mm 1360 " +
+                       "--flange-back-y-mm -70 --radius-mm 460 --shear-modulus 82e9" + old);
+  ASSERT_EQ(a.code, 0) << a.out;
+  ASSERT_EQ(b.code, 0) << b.out;
+  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  EXPECT_EQ(ja.at("points"), jb.at("points"));
+  // The pose echo differs by the mm -> m -> mm round trip only.
+  constexpr double kRoundTrip = 1e-12;  // [mm], a few ulps of 6.5
+  for (const char* key : {"y_mm", "height_mm", "roll_rad", "yaw_rad"}) {
+    EXPECT_NEAR(ja.at("pose").at(key).get<double>(), jb.at("pose").at(key).get<double>(),
+                kRoundTrip)
+        << key;
+  }
+  // Both spellings at once, or a height with a load: bad input naming the option.
+  const CliRun twice = run("geometry search " + kPair + " --y 0.0065 --y-mm 6.5");
+  EXPECT_EQ(twice.code, 2) << twice.out;
+  EXPECT_NE(twice.out.find("--y-mm"), std::string::npos) << twice.out;
+  const CliRun both = run("geometry search " + kPair + " --height-mm 0.1 --load 20000");
+  EXPECT_EQ(both.code, 2) << both.out;
+  EXPECT_NE(both.out.find("--load"), std::string::npos) << both.out;
 }
 
 TEST(geometry_cli, batch_csv_in_csv_out) {
@@ -87,7 +115,7 @@ TEST(geometry_cli, bad_input_exits_with_code_2_and_names_it) {
   EXPECT_EQ(r2.code, 2);
   EXPECT_NE(r2.out.find("--inclination"), std::string::npos);
   const CliRun r3 = run("geometry search --wheel " + kProfiles + "MBench_S1002_v3.prw --rail " +
-                        kProfiles + "MBench_UIC60_v3.prr --gauge-mm 14350");
+                        kProfiles + "MBench_UIC60_v3.prr --gauge 14.35");
   EXPECT_EQ(r3.code, 2);
   EXPECT_NE(r3.out.find("track_gauge"), std::string::npos);
 }

@@ -113,9 +113,9 @@ TEST(pair_file, non_finite_search_position_exits_2) {
   for (const char* bad : {"nan", "inf"}) {
     const auto r = test::run_capture(
         {FERRODYN_EXE, "geometry", "search", "--wheel", prof + "MBench_S1002_v3.prw", "--rail",
-         prof + "MBench_UIC60_v3.prr", "--flange-back-y-mm", "-70", "--y-mm", bad});
+         prof + "MBench_UIC60_v3.prr", "--flange-back-y", "-0.070", "--y", bad});
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find("--y-mm"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--y"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("finite"), std::string::npos) << r.output;
   }
 }

@@ -1,7 +1,7 @@
 // Design alignment: section start states and the moving track frame.
 //
-// References: EN 13803:2017 (clothoid and linear cant ramp); Abramowitz & Stegun (1964)
-// Table 25.4 (8-point Gauss-Legendre nodes and weights).
+// References: EN 13803:2017 (clothoid and linear cant ramp); Abramowitz & Stegun (1964) 25.4.29
+// (Gauss-Legendre quadrature, here Boost.Math's boost::math::quadrature::gauss).
 // Known deviations: see alignment.hpp (quadrature instead of Fresnel integrals; the one-sided
 // cant second derivative at ramp ends).
 
@@ -10,18 +10,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
+#include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 
 namespace ferro::track {
 namespace {
 
-// Gauss-Legendre, 8 nodes on [-1, 1] (symmetric pairs).
-constexpr std::array<double, 4> kGaussNodes = {0.1834346424956498, 0.5255324099163290,
-                                               0.7966664774136267, 0.9602898564975363};
-constexpr std::array<double, 4> kGaussWeights = {0.3626837833783620, 0.3137066458778873,
-                                                 0.2223810344533745, 0.1012285362903763};
+// Gauss-Legendre with 8 nodes per panel.
+using GaussLegendre8 = boost::math::quadrature::gauss<double, 8>;
 // Largest heading change over one quadrature panel [rad]. With 8 nodes the quadrature error of
 // a cosine of a quadratic phase that varies by 0.5 rad is ~(0.25)^16/16! of the panel length.
 constexpr double kMaxPanelTurn = 0.5;
@@ -115,20 +113,11 @@ Eigen::Vector2d Alignment::plan_offset(const SectionState& st, double u) {
   const double k_max = std::max(std::abs(k0), std::abs(k0 + dk * u));
   const int panels = std::max(1, static_cast<int>(std::ceil(k_max * u / kMaxPanelTurn)));
   const double h = u / panels;
-  double cx = 0.0, cy = 0.0;
-  for (int p = 0; p < panels; ++p) {
-    const double mid = (p + 0.5) * h;
-    for (std::size_t j = 0; j < kGaussNodes.size(); ++j) {
-      for (const double sign : {-1.0, 1.0}) {
-        const double v = mid + sign * 0.5 * h * kGaussNodes[j];
-        const double theta = v * (k0 + 0.5 * dk * v);
-        cx += kGaussWeights[j] * std::cos(theta);
-        cy += kGaussWeights[j] * std::sin(theta);
-      }
-    }
-  }
-  cx *= 0.5 * h;
-  cy *= 0.5 * h;
+  // Tangent (cos theta, sin theta) as the complex exp(i theta).
+  const auto tangent = [k0, dk](double v) { return std::polar(1.0, v * (k0 + 0.5 * dk * v)); };
+  std::complex<double> chord(0.0, 0.0);
+  for (int p = 0; p < panels; ++p) chord += GaussLegendre8::integrate(tangent, p * h, (p + 1) * h);
+  const double cx = chord.real(), cy = chord.imag();
   const double ch = std::cos(st.heading), sh = std::sin(st.heading);
   return {ch * cx - sh * cy, sh * cx + ch * cy};
 }

@@ -38,40 +38,23 @@ ContactPatch hertz_patch_from_penetration(const WheelRailContact& c, double cont
     }
     const double ratio = c.penetration / c.ref_penetration;
     const double root = std::sqrt(ratio);  // (F/F0)^(1/3) = (d/d0)^(1/2)
-    p.normal_force = c.ref_normal_force * ratio * root;
-    p.semi_axis_x = c.ref_semi_axis_a * root;
-    p.semi_axis_y = c.ref_semi_axis_b * root;
-    p.peak_pressure = 3.0 * p.normal_force / (2.0 * std::numbers::pi * p.semi_axis_x * p.semi_axis_y);
-    p.curvature_x = c.curvature_a;
-    p.curvature_y = c.curvature_b;
+    p = elliptic_patch(c.ref_semi_axis_a * root, c.ref_semi_axis_b * root,
+                       c.ref_normal_force * ratio * root, c.curvature_a, c.curvature_b);
+    p.approach = c.penetration;
     return p;
   }
   const HertzSolution h = hertz_solve_from_approach(c.curvature_a, c.curvature_b, c.penetration,
                                                     contact_modulus);
   const HertzCurvatures cv =
       hertz_curvatures(c.curvature_a, c.curvature_b, "hertz_patch_from_penetration");
-  p.semi_axis_x = h.semi_axis_x;
-  p.semi_axis_y = h.semi_axis_y;
-  p.normal_force = h.normal_force;
-  p.peak_pressure = h.peak_pressure;
-  p.curvature_x = cv.x;
-  p.curvature_y = cv.y;
+  p = hertz_patch(h, cv.x, cv.y);
+  p.approach = c.penetration;
   return p;
 }
 
 WheelRailContact to_wheel_rail_contact(const ContactPoint& q) {
-  WheelRailContact c;
-  c.side = q.side;
-  c.x = q.x;
-  c.y = q.y;
-  c.z = q.z;
-  c.contact_angle = q.contact_angle;
-  c.rolling_radius = q.rolling_radius;
+  WheelRailContact c = WheelRailContact::geometry_of(q);
   c.penetration = q.penetration;
-  c.curvature_a = q.curvature_a;
-  c.curvature_b = q.curvature_b;
-  c.wheel_y = q.wheel_y;
-  c.rail_y = q.rail_y;
   c.vertical_gap = q.vertical_gap;
   return c;
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -22,6 +23,17 @@ namespace {
 // Barrier stored for a wheel's first candidate (no previous one): never submerged [m].
 constexpr double kNoBarrier = 1.0;
 constexpr int kFields = 15;  // columns of /candidates
+using Candidate = MultiPointContactTable::Candidate;
+// The numeric Candidate fields in the column order of /candidates (after the side column).
+constexpr std::array<double Candidate::*, kFields - 1> kColumns = {
+    &Candidate::gap,           &Candidate::barrier,        &Candidate::x,
+    &Candidate::y,             &Candidate::z,              &Candidate::wheel_y,
+    &Candidate::rail_y,        &Candidate::contact_angle,  &Candidate::rolling_radius,
+    &Candidate::curvature_a,   &Candidate::curvature_b,    &Candidate::dgap_dlateral,
+    &Candidate::dgap_droll,    &Candidate::dgap_dyaw};
+// Columns interpolated with the corner weights alone: all from x on (gap and barrier carry a
+// Taylor shift).
+constexpr std::size_t kFirstWeighted = 2;
 constexpr double kFormatVersion = 1.0;
 
 int axis_count(double min, double max, double step, const char* name) {
@@ -386,11 +398,8 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
     // half-gradient terms cancel for linear and bilinear parts). Partial branch: full Taylor
     // from the present corners, exact for linear functions.
     const double taylor = wsum > 1.0 - 1e-12 ? 0.5 : 1.0;
-    Candidate s;
+    Candidate s;  // every field 0
     s.side = g.side;
-    s.gap = s.barrier = s.x = s.y = s.z = s.wheel_y = s.rail_y = 0.0;
-    s.contact_angle = s.rolling_radius = s.curvature_a = s.curvature_b = 0.0;
-    s.dgap_dlateral = s.dgap_droll = s.dgap_dyaw = 0.0;
     double wbarrier = 0.0;
     for (int c = 0; c < (1 << d); ++c) {
       if (g.corner[c] < 0 || w[c] == 0.0) continue;
@@ -405,18 +414,8 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
         s.barrier += w[c] * (q.barrier + shift);
         wbarrier += w[c];
       }
-      s.x += wc * q.x;
-      s.y += wc * q.y;
-      s.z += wc * q.z;
-      s.wheel_y += wc * q.wheel_y;
-      s.rail_y += wc * q.rail_y;
-      s.contact_angle += wc * q.contact_angle;
-      s.rolling_radius += wc * q.rolling_radius;
-      s.curvature_a += wc * q.curvature_a;
-      s.curvature_b += wc * q.curvature_b;
-      s.dgap_dlateral += wc * q.dgap_dlateral;
-      s.dgap_droll += wc * q.dgap_droll;
-      s.dgap_dyaw += wc * q.dgap_dyaw;
+      for (std::size_t k = kFirstWeighted; k < kColumns.size(); ++k)
+        s.*kColumns[k] += wc * q.*kColumns[k];
     }
     s.barrier = wbarrier > 0.0 ? s.barrier / wbarrier : kNoBarrier;
     emit(s);
@@ -426,19 +425,9 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
 namespace {
 
 WheelRailContact to_contact(const MultiPointContactTable::Candidate& s, double drop) {
-  WheelRailContact c;
-  c.side = s.side;
-  c.x = s.x;
-  c.y = s.y;
-  c.z = s.z;
-  c.contact_angle = s.contact_angle;
-  c.rolling_radius = s.rolling_radius;
+  WheelRailContact c = WheelRailContact::geometry_of(s);
   c.vertical_gap = s.gap - drop;
   c.penetration = std::max(0.0, -c.vertical_gap * std::cos(s.contact_angle));
-  c.curvature_a = s.curvature_a;
-  c.curvature_b = s.curvature_b;
-  c.wheel_y = s.wheel_y;
-  c.rail_y = s.rail_y;
   return c;
 }
 
@@ -516,22 +505,8 @@ void MultiPointContactTable::save_hdf5(const std::string& path) const {
   std::vector<double> c;
   c.reserve(nodes_.size() * kFields);
   for (const Candidate& s : nodes_) {
-    const double row[kFields] = {s.side == Side::right ? 1.0 : 0.0,
-                                 s.gap,
-                                 s.barrier,
-                                 s.x,
-                                 s.y,
-                                 s.z,
-                                 s.wheel_y,
-                                 s.rail_y,
-                                 s.contact_angle,
-                                 s.rolling_radius,
-                                 s.curvature_a,
-                                 s.curvature_b,
-                                 s.dgap_dlateral,
-                                 s.dgap_droll,
-                                 s.dgap_dyaw};
-    c.insert(c.end(), row, row + kFields);
+    c.push_back(s.side == Side::right ? 1.0 : 0.0);
+    for (double Candidate::*field : kColumns) c.push_back(s.*field);
   }
   file.write_array("/candidates", c, {nodes_.size(), static_cast<std::uint64_t>(kFields)});
   file.close();
@@ -627,20 +602,7 @@ MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path
     }
     Candidate& s = t.nodes_[i];
     s.side = r[0] == 1.0 ? Side::right : Side::left;
-    s.gap = r[1];
-    s.barrier = r[2];
-    s.x = r[3];
-    s.y = r[4];
-    s.z = r[5];
-    s.wheel_y = r[6];
-    s.rail_y = r[7];
-    s.contact_angle = r[8];
-    s.rolling_radius = r[9];
-    s.curvature_a = r[10];
-    s.curvature_b = r[11];
-    s.dgap_dlateral = r[12];
-    s.dgap_droll = r[13];
-    s.dgap_dyaw = r[14];
+    for (std::size_t k = 0; k < kColumns.size(); ++k) s.*kColumns[k] = r[k + 1];
   }
   t.finish();
   return t;

@@ -115,8 +115,10 @@ void write_curves_hdf5(const std::string& path, const std::vector<CurvePoint>& p
   for (const CurvePoint& p : points) groups[p.curve][p.model].push_back(&p);
   for (const auto& [curve, models] : groups) {
     file.ensure_group("/" + curve);
-    for (const auto& [model, pts] : models) {
-      std::string name = model;
+    for (const auto& model_points : models) {
+      // Not a structured binding: clang 14 (the fuzz build) cannot capture those in a lambda.
+      const std::vector<const CurvePoint*>& pts = model_points.second;
+      std::string name = model_points.first;
       for (char& ch : name)
         if (ch == '/') ch = '_';
       const std::string group = "/" + curve + "/" + name;

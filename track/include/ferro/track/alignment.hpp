@@ -10,9 +10,9 @@
 // Abramowitz & Stegun (1964) §7.3 (Fresnel integrals, used as the oracle of the tests);
 // Toumi (2016) eq. (148).
 // Known deviations: clothoid positions come from Gauss-Legendre quadrature of the tangent
-// (8 nodes per panel, panels of at most 0.5 rad heading change: error below 1e-13 m per panel
-// for sections up to a few km), not from Fresnel integrals, because Fresnel differences lose
-// precision in transitions between two curves of nearly equal radius. The cant second
+// (Boost.Math, 8 nodes per panel, panels of at most 0.5 rad heading change: error below 1e-13 m
+// per panel for sections up to a few km), not from Fresnel integrals, because Fresnel
+// differences lose precision in transitions between two curves of nearly equal radius. The cant second
 // derivative is zero inside linear ramps and undefined (a Dirac) at their ends; the frame
 // returns the one-sided value of the section that contains s. Beyond the design ends the frame
 // throws std::out_of_range (append a straight if a vehicle must look further).

@@ -44,6 +44,25 @@ struct WheelRailContact {
   /// for the profile-based sources) [m].
   double vertical_gap = kNaN;
   [[nodiscard]] bool has_reference_state() const { return ref_normal_force == ref_normal_force; }
+
+  /// The place and local geometry of a point (side, position, contact angle, rolling radius,
+  /// curvatures, profile coordinates) from any type that names them alike (a search result, a
+  /// table candidate); penetration and vertical gap are left to the caller.
+  template <class Point>
+  [[nodiscard]] static WheelRailContact geometry_of(const Point& q) {
+    WheelRailContact c;
+    c.side = q.side;
+    c.x = q.x;
+    c.y = q.y;
+    c.z = q.z;
+    c.contact_angle = q.contact_angle;
+    c.rolling_radius = q.rolling_radius;
+    c.curvature_a = q.curvature_a;
+    c.curvature_b = q.curvature_b;
+    c.wheel_y = q.wheel_y;
+    c.rail_y = q.rail_y;
+    return c;
+  }
 };
 
 class ContactGeometrySource {
