@@ -20,34 +20,40 @@ namespace {
 
 const contact::Material kSteel = contact::Material::from_young(210.0e9, 0.28);
 
-// Trilinear hexahedra, two per grid element side in the loaded area, block 20 x the loaded area
-// with a clamped bottom. Measured against annex B.3: self coefficients -3 % (xx, yy), +2 % (zz);
-// the finite block lowers the farther coefficients (the compliance below the clamped bottom is
-// missing), about -7 % for u_z four elements away. The bounds are these errors with a margin:
-// wider than the 2 % asked of a converged model (docs/VALIDATION.md, "FE reduction factors").
-constexpr double kSelfTolerance = 0.04;
-constexpr double kNeighbourTolerance = 0.12;
-// K_ij: a uniform far-field offset cancels in the rolling difference and the near-field errors
-// of opposite sign largely cancel over the patch; bound: the 2 % asked of the half-space limit
-// (measured K11 = 1.017, K22 = 1.008 with this mesh).
-constexpr double kKTolerance = 0.02;
+// Triquadratic hexahedra (Lagrange degree 2), one per grid element along the loaded column and
+// its neighbours, sizes doubling outwards to a block 100 x the loaded area's half-size with a
+// clamped bottom; traction integrated over the loaded element, displacement interpolated at the
+// element centres (annex B.3 gives centre values of uniformly loaded rectangles). Measured
+// against annex B.3: self -0.5 % (zz), -2.3 % (xx, yy); nearest neighbours within 4.3 %;
+// diagonal and second neighbours within 5 % (the doubling elements there are 2 grid elements
+// long). The bounds are these errors with a margin of 0.5 %.
+constexpr double kSelfTolerance = 0.028;
+constexpr double kNeighbourTolerance = 0.048;
+constexpr double kSecondNeighbourTolerance = 0.055;
 
 TEST(FeBlock, boussinesq_cerruti_near_the_load) {
   fe_contact::FeBlockSpec s;
-  s.grid = Grid::centred(4, 5, 1.0e-3, 1.0e-3);
+  s.grid = Grid::centred(3, 3, 1.0e-3, 1.0e-3);
   s.material = kSteel;
+  s.mesh.degree = 2;
+  s.mesh.subdivisions = 1;
+  s.mesh.growth = 2.0;
+  s.mesh.near_columns = 1;
+  s.extent = 100.0;
   const fe_contact::FeInfluence fe = fe_contact::block_influence(s);
   const ColumnInfluence pair = fe_contact::pair_of_identical(fe.single_body);
   const contact::CombinedMaterial m = contact::combine(kSteel, kSteel);
   std::printf("FE block: %ld elements, %ld dofs, %.1f s CPU\n", fe.elements, fe.dofs,
               fe.cpu_seconds);
-  const int is = 2;  // middle row
+  const int is = 1;  // middle row
   for (int ox = 0; ox <= 2; ++ox)
     for (int oy = 0; oy <= 1; ++oy) {
       const InfluenceCoefficients hs =
           influence_coefficients(ox * 1.0e-3, oy * 1.0e-3, 1.0e-3, 1.0e-3, m);
       const std::size_t k = pair.index(ox, is + oy, is);
-      const double tol = (ox == 0 && oy == 0) ? kSelfTolerance : kNeighbourTolerance;
+      const double tol = (ox == 0 && oy == 0)   ? kSelfTolerance
+                         : (ox + oy == 1)       ? kNeighbourTolerance
+                                                : kSecondNeighbourTolerance;
       std::printf("offset (%d, %d): zz %.4f xx %.4f yy %.4f of annex B.3\n", ox, oy,
                   pair.zz[k] / hs.zz, pair.xx[k] / hs.xx, pair.yy[k] / hs.yy);
       EXPECT_NEAR(pair.zz[k] / hs.zz, 1.0, tol) << ox << ", " << oy;
@@ -55,6 +61,11 @@ TEST(FeBlock, boussinesq_cerruti_near_the_load) {
       EXPECT_NEAR(pair.yy[k] / hs.yy, 1.0, tol) << ox << ", " << oy;
     }
 }
+
+// K_ij: a uniform far-field offset cancels in the rolling difference and the near-field errors
+// of opposite sign largely cancel over the patch; bound: the 2 % asked of the half-space limit
+// (measured K11 = 1.017, K22 = 1.008 with this trilinear mesh).
+constexpr double kKTolerance = 0.02;
 
 TEST(FeBlock, reduction_factors_near_one) {
   // Hertzian patch a = b = 4 mm on a 1 mm grid (10 x 10 elements).
@@ -66,6 +77,13 @@ TEST(FeBlock, reduction_factors_near_one) {
   fe_contact::FeBlockSpec s;
   s.grid = grid;
   s.material = kSteel;
+  // Trilinear hexahedra, two per grid element side over the whole loaded area, block 20 x the
+  // loaded area's half-size.
+  s.mesh.degree = 1;
+  s.mesh.subdivisions = 2;
+  s.mesh.growth = 1.4;
+  s.mesh.near_columns = grid.nx;
+  s.extent = 20.0;
   const fe_contact::FeInfluence fe = fe_contact::block_influence(s);
   DenseInfluenceOperator dense(grid, fe_contact::pair_of_identical(fe.single_body), m);
   InfluenceOperator half_space(grid, m);
