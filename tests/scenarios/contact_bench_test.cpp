@@ -94,7 +94,9 @@ TEST(contact_bench, quick_run_orders_models) {
   EXPECT_GT(row("kalker_linear").max_error, 1.0);
   for (const auto& x : r.rows) {
     EXPECT_GT(x.us_per_eval, 0.0) << x.label;
-    if (x.label != "kalker_linear") EXPECT_LE(x.max_force, 1.0 + kCoulombSlack) << x.label;
+    if (x.label != "kalker_linear") {
+      EXPECT_LE(x.max_force, 1.0 + kCoulombSlack) << x.label;
+    }
   }
 }
 

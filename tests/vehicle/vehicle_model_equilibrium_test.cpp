@@ -60,6 +60,17 @@ void expect_equal_loads(const VehicleModel& m, double t, const std::vector<doubl
       const std::string name = "wheelset_" + std::to_string(w) + "." + side + ".Q";
       EXPECT_NEAR(signal(m, s, name) / share, 1.0, rel_tol) << name;
       worst = std::max(worst, std::abs(signal(m, s, name) / share - 1.0));
+      // One tread point per wheel: its normal force is the wheel's rail force (Y towards the
+      // centre, Q up) along the rail normal, which leans towards the centre by the contact
+      // angle.
+      const std::string wheel = "wheelset_" + std::to_string(w) + "." + side;
+      const double n1 = signal(m, s, wheel + ".point_1.normal_force");
+      const double gamma = signal(m, s, wheel + ".contact_angle");
+      const double along_normal = signal(m, s, wheel + ".Y") * std::sin(gamma) +
+                                  signal(m, s, wheel + ".Q") * std::cos(gamma);
+      EXPECT_NEAR(n1 / along_normal, 1.0, 1e-12) << wheel;
+      EXPECT_EQ(signal(m, s, wheel + ".point_2.normal_force"), 0.0) << wheel;
+      EXPECT_EQ(signal(m, s, wheel + ".points"), 1.0) << wheel;
     }
   }
   std::printf("largest wheel-load error against the weight share: %.2e\n", worst);

@@ -73,7 +73,9 @@ SimRun simulate(const VehicleModel& m, std::vector<double> x0, double t_end) {
     m.signals(t, x, sig);
     for (std::size_t i = 0; i < info.size(); ++i) {
       const std::string& n = info[i].name;
-      if (n.size() > 13 && n.compare(n.size() - 13, 13, ".normal_force") == 0) {
+      // The wheel's total (not the per-point signals, 0 where a wheel has fewer points).
+      if (n.size() > 13 && n.compare(n.size() - 13, 13, ".normal_force") == 0 &&
+          n.find(".point_") == std::string::npos) {
         run.min_wheel_normal = std::min(run.min_wheel_normal, sig[i]);
         run.max_wheel_normal = std::max(run.max_wheel_normal, sig[i]);
       }

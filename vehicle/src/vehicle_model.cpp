@@ -355,6 +355,14 @@ VehicleModel::VehicleModel(VehicleModelInputs inputs) : impl_(std::make_unique<I
       add("contact_y", "m", "lateral contact position from the rail reference point, + outwards");
       add("contact_angle", "rad", "contact angle of the most loaded point");
       add("points", "-", "number of loaded contact points");
+      for (int k = 1; k <= WheelResult::kPointSignals; ++k) {
+        m.signal_list.push_back(
+            {fmt::format("{}.{}.point_{}.normal_force", name, side, k), "N",
+             fmt::format("normal force of the wheel's loaded contact point {} in the order the "
+                         "geometry source lists them (the multi-point table: increasing "
+                         "wheel-profile coordinate), 0 when the wheel has fewer points",
+                         k)});
+      }
     }
   }
   if (m.car_body >= 0) {
@@ -537,6 +545,7 @@ void VehicleModel::signals(double t, std::span<const double> x, std::span<double
     out[o++] = w.points > 0 ? w.contact_y : std::numeric_limits<double>::quiet_NaN();
     out[o++] = w.points > 0 ? w.contact_angle : std::numeric_limits<double>::quiet_NaN();
     out[o++] = w.points;
+    for (double f : w.point_normal_force) out[o++] = f;
   }
   if (m.car_body >= 0) out[o++] = ay;
   out[o++] = m.in.start_position + m.in.speed.distance(t);

@@ -61,6 +61,10 @@ struct WheelResult {
   double contact_y = 0.0, contact_angle = 0.0;
   double largest_normal_force = 0.0;
   int points = 0;
+  /// Normal force of the first kPointSignals loaded points in the geometry source's order, 0
+  /// where there is no such point [N].
+  static constexpr int kPointSignals = 3;
+  std::array<double, kPointSignals> point_normal_force{};
 };
 
 struct VehicleModel::Impl {

@@ -96,6 +96,9 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
       w.lateral_towards_centre += towards_centre * force.y();
       w.vertical += force.z();
       w.normal_force += patch.normal_force;
+      if (w.points < WheelResult::kPointSignals) {
+        w.point_normal_force[static_cast<std::size_t>(w.points)] = patch.normal_force;
+      }
       ++w.points;
       if (patch.normal_force > w.largest_normal_force) {
         w.largest_normal_force = patch.normal_force;
