@@ -1,5 +1,6 @@
 // FaStrip (Sichani, Enblom & Berg 2016). See fastrip.hpp for references and known deviations.
 #include "ferro/contact/fastrip.hpp"
+#include "ferro/contact/fastsim.hpp"
 
 #include <fmt/format.h>
 
@@ -131,14 +132,7 @@ void sweep(const StripInput& s, const std::vector<double>& shape, double mu, Sum
 
 }  // namespace
 
-void FastripOptions::validate() const {
-  if (mx < 1 || mx > 10000) {
-    throw std::invalid_argument(fmt::format("fastrip.mx: must lie in [1, 10000], got {}", mx));
-  }
-  if (my < 1 || my > 10000) {
-    throw std::invalid_argument(fmt::format("fastrip.my: must lie in [1, 10000], got {}", my));
-  }
-}
+void FastripOptions::validate() const { validate_strip_grid("fastrip", mx, my); }
 
 FastripModel::FastripModel(FastripOptions options) : options_(options) {
   options_.validate();

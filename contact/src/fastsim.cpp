@@ -97,14 +97,18 @@ inline void strip_sweep(double y, double w, double xc, double l, double ppar, in
 
 }  // namespace
 
-void FastsimOptions::validate() const {
+void validate_strip_grid(const char* model, int mx, int my) {
   if (mx < 1 || mx > 10000) {
-    throw std::invalid_argument(fmt::format("fastsim.mx: must lie in [1, 10000], got {}", mx));
+    throw std::invalid_argument(
+        fmt::format("{}.mx: must lie in [1, 10000], got {}", model, mx));
   }
   if (my < 1 || my > 10000) {
-    throw std::invalid_argument(fmt::format("fastsim.my: must lie in [1, 10000], got {}", my));
+    throw std::invalid_argument(
+        fmt::format("{}.my: must lie in [1, 10000], got {}", model, my));
   }
 }
+
+void FastsimOptions::validate() const { validate_strip_grid("fastsim", mx, my); }
 
 FastsimModel::FastsimModel(FastsimOptions options) : options_(options) {
   options_.validate();

@@ -81,6 +81,19 @@ struct WheelsetCase {
   double m, e, r0, gamma, kx, ky, A, B;
 };
 
+/// The same wheelset as the linear model of eq. (151) (I_zz = m e^2).
+SuspendedWheelsetParams oracle_params(const WheelsetCase& c) {
+  SuspendedWheelsetParams p;
+  p.mass = c.m;
+  p.yaw_inertia = c.m * c.e * c.e;
+  p.half_gauge = c.e;
+  p.rolling_radius = c.r0;
+  p.conicity = c.gamma;
+  p.primary_stiffness_x = c.kx;
+  p.primary_stiffness_y = c.ky;
+  return p;
+}
+
 VehicleModelInputs single_wheelset(const WheelsetCase& c, double speed, LinearCreep& lc) {
   lc = linear_creep(0.5 * c.m * kG, c.A, c.B);
   VehicleModelInputs in;
@@ -118,14 +131,7 @@ TEST(VehicleModelLinear, single_wheelset_reproduces_critical_speed_of_eq_151) {
   for (const WheelsetCase& c : cases) {
     LinearCreep lc;
     (void)single_wheelset(c, 10.0, lc);
-    SuspendedWheelsetParams p;
-    p.mass = c.m;
-    p.yaw_inertia = c.m * c.e * c.e;
-    p.half_gauge = c.e;
-    p.rolling_radius = c.r0;
-    p.conicity = c.gamma;
-    p.primary_stiffness_x = c.kx;
-    p.primary_stiffness_y = c.ky;
+    const SuspendedWheelsetParams p = oracle_params(c);
     const double v_formula = analytic_critical_speed(p, CreepCoefficients{lc.f, lc.f});
     ASSERT_TRUE(std::isfinite(v_formula));
     const SystemAtSpeed factory = [&c](double v) {
@@ -169,14 +175,7 @@ TEST(VehicleModelLinear, kij_table_in_the_rhs_scales_the_critical_speed_as_eq_15
   contact::KijTable({"normal_force", "layer_thickness"}, {loads, layers}, k11, k22, k23, k33)
       .write_hdf5(path);
 
-  SuspendedWheelsetParams p;
-  p.mass = c.m;
-  p.yaw_inertia = c.m * c.e * c.e;
-  p.half_gauge = c.e;
-  p.rolling_radius = c.r0;
-  p.conicity = c.gamma;
-  p.primary_stiffness_x = c.kx;
-  p.primary_stiffness_y = c.ky;
+  const SuspendedWheelsetParams p = oracle_params(c);
   const double f = kExpectedK * lc.f;
   const double v_formula = analytic_critical_speed(p, CreepCoefficients{f, f});
   ASSERT_TRUE(std::isfinite(v_formula));

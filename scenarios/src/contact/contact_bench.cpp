@@ -60,20 +60,6 @@ fc::Creepage creepage_of(const ContactBenchCase& c) {
 
 }  // namespace
 
-fc::ContactPatch contact_bench_patch(const ContactBenchCase& c) {
-  return fc::elliptic_patch(semi_axis_x(c.ratio), semi_axis_y(c.ratio), kNormalForce);
-}
-
-fc::TangentialProblem contact_bench_problem(const ContactBenchCase& c,
-                                            const fc::ContactPatch& patch) {
-  fc::TangentialProblem p;
-  p.patch = &patch;
-  p.friction = kFriction;
-  p.body1 = p.body2 = steel();
-  p.creepage = creepage_of(c);
-  return p;
-}
-
 ContactBenchInput contact_bench_input(const ContactBenchCase& c) {
   const fc::Creepage cr = creepage_of(c);
   ContactBenchInput in;
@@ -87,6 +73,22 @@ ContactBenchInput contact_bench_input(const ContactBenchCase& c) {
   in.young = kYoung;
   in.poisson = kPoisson;
   return in;
+}
+
+fc::ContactPatch contact_bench_patch(const ContactBenchCase& c) {
+  const ContactBenchInput in = contact_bench_input(c);
+  return fc::elliptic_patch(in.semi_axis_x, in.semi_axis_y, in.normal_force);
+}
+
+fc::TangentialProblem contact_bench_problem(const ContactBenchCase& c,
+                                            const fc::ContactPatch& patch) {
+  const ContactBenchInput in = contact_bench_input(c);
+  fc::TangentialProblem p;
+  p.patch = &patch;
+  p.friction = in.friction;
+  p.body1 = p.body2 = steel();
+  p.creepage = fc::Creepage{in.creepage_x, in.creepage_y, in.spin};
+  return p;
 }
 
 std::vector<ContactBenchCase> contact_bench_cases() {

@@ -50,6 +50,10 @@ inline constexpr double kAdaptiveStiffening = 0.05;
 /// Hertzian half-ellipse p0 sqrt(1 - x^2/a^2 - y^2/b^2).
 enum class TractionBound { kParabolic, kElliptic };
 
+/// Checks a strip grid (mx elements along each of my strips, both in [1, 10000]); the message
+/// names `model`.mx / `model`.my.
+void validate_strip_grid(const char* model, int mx, int my);
+
 struct FastsimOptions {
   int mx = 20;  ///< elements along each strip [-]
   int my = 20;  ///< strips across the ellipse (semi-Hertz patches keep their strips) [-]
