@@ -21,10 +21,6 @@ inline double half_disc(double s) {
   return 0.5 * (s * std::sqrt(1.0 - s * s) + std::asin(s));
 }
 
-struct Sums {
-  double fx = 0.0, fy = 0.0, mz = 0.0;
-  double area = 0.0, adhesion_area = 0.0;
-};
 
 struct StripInput {
   double y, width, xc, l;  // strip centre y, width, centre x, half-length [m]
@@ -39,7 +35,7 @@ struct StripInput {
 // mu p0 mean(sqrt(1 - s^2)) (shape), Carter's traction bound - mu p0 u^2 mean(sqrt(1 - s'^2)),
 // s' = 1 - (1 - s)/u over the adhesion zone, and the spin traction -phi/(2 L3) (x_lead^2 -
 // mean(x^2)).
-void sweep(const StripInput& s, const std::vector<double>& shape, double mu, Sums& acc,
+void sweep(const StripInput& s, const std::vector<double>& shape, double mu, StripSums& acc,
            TractionMap* map) {
   const int mx = static_cast<int>(shape.size());
   const double dx = 2.0 * s.l / mx;
@@ -122,12 +118,7 @@ void sweep(const StripInput& s, const std::vector<double>& shape, double mu, Sum
     sq_prev = sq;
     x_edge = x_next;
   }
-  const double da = dx * s.width;
-  acc.fx += sfx * da;
-  acc.fy += sfy * da;
-  acc.mz += smz * da;
-  acc.area += mx * da;
-  acc.adhesion_area += adhesion * da;
+  acc.add_strip(sfx, sfy, smz, mx, adhesion, dx * s.width);
 }
 
 }  // namespace
@@ -177,7 +168,7 @@ TangentialSolution FastripModel::solve(const TangentialProblem& problem) const {
   const double wx_scale = limit > 0.0 ? g * a * b * k.c.c11 / (2.0 * limit) : 0.0;
   const double wy = limit > 0.0 ? g * a * b * k.c.c22 * cr.lateral / (2.0 * limit) : 0.0;
   if (problem.map != nullptr) problem.map->clear();
-  Sums acc;
+  StripSums acc;
   const auto strip = [&](double y, double width, double xc, double l, double p_peak,
                          double tau_factor, double spin_gain) {
     const double xi = cr.longitudinal - cr.spin * y;
@@ -230,12 +221,7 @@ TangentialSolution FastripModel::solve(const TangentialProblem& problem) const {
             spin_gain);
     }
   }
-  TangentialSolution out;
-  out.force_x = acc.fx;
-  out.force_y = acc.fy;
-  out.moment_z = acc.mz;
-  out.adhesion_fraction = acc.area > 0.0 ? acc.adhesion_area / acc.area : ContactPatch::kNaN;
-  return out;
+  return acc.solution();
 }
 
 }  // namespace ferro::contact

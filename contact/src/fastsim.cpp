@@ -18,10 +18,6 @@ struct Inverse {
   double f1, f2, f3;  // 1/L1, 1/L2, 1/L3 [Pa/m]
 };
 
-struct Accumulator {
-  double fx = 0.0, fy = 0.0, mz = 0.0;
-  double area = 0.0, adhesion_area = 0.0;
-};
 
 // Pressure shape along a strip, s = (x - xc) / l in [-1, 1].
 inline double bound_shape(TractionBound bound, double s2) {
@@ -45,7 +41,7 @@ inline double strip_load_correction(TractionBound bound, int mx) {
 // strip's pressure (already corrected by strip_load_correction).
 inline void strip_sweep(double y, double w, double xc, double l, double ppar, int mx,
                         TractionBound shape, const Creepage& cr, const Inverse& inv, double mu,
-                        Accumulator& acc, TractionMap* map) {
+                        StripSums& acc, TractionMap* map) {
   const double dx = 2.0 * l / mx;
   const double slip_x = cr.longitudinal * inv.f1 - cr.spin * y * inv.f3;  // d(px)/dx * -1
   const double half_spin = 0.5 * cr.spin * inv.f3;
@@ -87,12 +83,7 @@ inline void strip_sweep(double y, double w, double xc, double l, double ppar, in
     }
     x_prev = x;
   }
-  const double da = dx * w;
-  acc.fx += sfx * da;
-  acc.fy += sfy * da;
-  acc.mz += smz * da;
-  acc.area += mx * da;
-  acc.adhesion_area += adhesion * da;
+  acc.add_strip(sfx, sfy, smz, mx, adhesion, dx * w);
 }
 
 }  // namespace
@@ -145,7 +136,7 @@ TangentialSolution FastsimModel::solve(const TangentialProblem& problem) const {
   }
   const double mu = problem.friction;
   if (problem.map != nullptr) problem.map->clear();
-  Accumulator acc;
+  StripSums acc;
   const TractionBound shape = options_.bound;
   const bool parabolic = shape == TractionBound::kParabolic;
   const double along = strip_load_correction(shape, options_.mx);
@@ -180,12 +171,7 @@ TangentialSolution FastsimModel::solve(const TangentialProblem& problem) const {
                   acc, problem.map);
     }
   }
-  TangentialSolution out;
-  out.force_x = acc.fx;
-  out.force_y = acc.fy;
-  out.moment_z = acc.mz;
-  out.adhesion_fraction = acc.area > 0.0 ? acc.adhesion_area / acc.area : ContactPatch::kNaN;
-  return out;
+  return acc.solution();
 }
 
 }  // namespace ferro::contact

@@ -50,6 +50,30 @@ inline constexpr double kAdaptiveStiffening = 0.05;
 /// Hertzian half-ellipse p0 sqrt(1 - x^2/a^2 - y^2/b^2).
 enum class TractionBound { kParabolic, kElliptic };
 
+/// Sums of a strip-by-strip traction integration (FASTSIM and its strip-theory relatives).
+struct StripSums {
+  double fx = 0.0, fy = 0.0, mz = 0.0;     ///< [N], [N], [N m]
+  double area = 0.0, adhesion_area = 0.0;  ///< [m^2]
+  /// Adds one strip: element sums of the tractions (and of x p_y - y p_x), its element count and
+  /// adhering elements, times the element area da.
+  void add_strip(double sum_px, double sum_py, double sum_moment, double elements,
+                 double adhering, double da) {
+    fx += sum_px * da;
+    fy += sum_py * da;
+    mz += sum_moment * da;
+    area += elements * da;
+    adhesion_area += adhering * da;
+  }
+  [[nodiscard]] TangentialSolution solution() const {
+    TangentialSolution out;
+    out.force_x = fx;
+    out.force_y = fy;
+    out.moment_z = mz;
+    out.adhesion_fraction = area > 0.0 ? adhesion_area / area : ContactPatch::kNaN;
+    return out;
+  }
+};
+
 /// Checks a strip grid (mx elements along each of my strips, both in [1, 10000]); the message
 /// names `model`.mx / `model`.my.
 void validate_strip_grid(const char* model, int mx, int my);
