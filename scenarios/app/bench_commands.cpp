@@ -1,5 +1,7 @@
 // `ferrodyn bench contact`: speed-versus-error table of every tangential model against
 // fine-grid MIM, with a Pareto picture (time against error).
+// `ferrodyn bench work-precision`: integrator x tolerance against a tight-tolerance reference
+// run of a scene (error, CPU time, steps), naming the cheapest setting for a stated error.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +15,8 @@
 #include "cli.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
 #include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/scene.hpp"
+#include "ferro/scenarios/work_precision.hpp"
 
 namespace ferro::cli {
 
@@ -114,6 +118,80 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
               scenarios::python_program()));
         }
         fmt::print("wrote {}\n", png);
+      }
+      return kExitOk;
+    };
+  });
+
+  struct WpArgs {
+    std::string scene, output;
+    double t_end = NAN, speed = NAN;
+    std::string tangential;
+    scenarios::WorkPrecisionOptions options;
+  };
+  auto wp = std::make_shared<WpArgs>();
+  CLI::App* work = bench->add_subcommand(
+      "work-precision",
+      "Integrator x tolerance on one scene against a cvode_bdf reference at a tight tolerance: "
+      "error (largest deviation of the compared states, each relative to its peak), CPU seconds "
+      "of the integration, steps; names the cheapest setting within --target-error");
+  work->add_option("scene", wp->scene, "Scene YAML file")->required();
+  add_output_option(work, wp->output, "CSV file of the table (default: none)");
+  work->add_option("--t-end", wp->t_end, "Override simulation.t_end [s]");
+  work->add_option("--speed", wp->speed, "Override simulation.speed [m/s]");
+  work->add_option("--tangential", wp->tangential, "Override the tangential contact model");
+  work->add_option("--integrators", wp->options.integrators,
+                   "method or method:max_order, e.g. cvode_bdf cvode_bdf:2 odeint_rosenbrock4")
+      ->delimiter(',')
+      ->capture_default_str();
+  work->add_option("--rtols", wp->options.rtols, "relative tolerances")
+      ->delimiter(',')
+      ->capture_default_str();
+  work->add_option("--atol-per-rtol", wp->options.atol_per_rtol, "atol = rtol x this [SI]")
+      ->capture_default_str();
+  work->add_option("--reference-rtol", wp->options.reference_rtol,
+                   "tolerance of the reference run (cvode_bdf)")
+      ->capture_default_str();
+  work->add_option("--states", wp->options.states,
+                   "states compared (default: every wheelset's y and yaw)")
+      ->delimiter(',');
+  work->add_option("--target-error", wp->options.target_error,
+                   "error the recommended setting must meet [-]")
+      ->capture_default_str();
+  work->callback([&handler, wp] {
+    handler = [wp] {
+      scenarios::Scene scene = scenarios::load_scene(wp->scene);
+      apply_run_overrides(scene, wp->t_end, wp->speed, wp->tangential);
+      const scenarios::WorkPrecisionReport r = scenarios::run_work_precision(scene, wp->options);
+      fmt::print("work-precision: {} ({} s simulated at {} m/s); model setup {:.3f} CPU-s\n",
+                 scene.name, r.t_end, scene.simulation.speed, r.setup_cpu_seconds);
+      fmt::print("compared: {}\n", fmt::join(r.compared_states, ", "));
+      fmt::print("| integrator | max order | rtol | atol | status | steps | rhs | CPU s | CPU s per "
+                 "simulated s | error |\n|---|---|---|---|---|---|---|---|---|---|\n");
+      const auto line = [&](const scenarios::WorkPrecisionPoint& p, const char* note) {
+        fmt::print("| {}{} | {} | {:.0e} | {:.0e} | {} | {} | {} | {:.3f} | {:.4f} | {:.2e} |\n",
+                   p.integrator.substr(0, p.integrator.find(':')), note,
+                   p.settings.max_order == 0 ? std::string("default")
+                                             : std::to_string(p.settings.max_order),
+                   p.settings.rtol, p.settings.atol,
+                   p.status == "completed" ? p.status
+                                           : fmt::format("{} at {:.4g} s", p.status, p.t_reached),
+                   p.steps, p.rhs_evaluations, p.cpu_seconds, p.cpu_seconds / r.t_end, p.error);
+      };
+      line(r.reference, " (reference)");
+      for (const auto& p : r.points) line(p, "");
+      if (r.best) {
+        const auto& b = r.points[*r.best];
+        fmt::print("cheapest within error {:.1e}: {} (max order {}) at rtol {:.0e}: {:.4f} CPU-s "
+                   "per simulated s, error {:.2e}\n",
+                   wp->options.target_error, b.integrator, b.settings.max_order,
+                   b.settings.rtol, b.cpu_seconds / r.t_end, b.error);
+      } else {
+        fmt::print("no setting met error {:.1e}\n", wp->options.target_error);
+      }
+      if (!wp->output.empty()) {
+        scenarios::write_work_precision_csv(r, wp->output);
+        fmt::print("wrote {}\n", wp->output);
       }
       return kExitOk;
     };

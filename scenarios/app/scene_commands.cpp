@@ -54,20 +54,28 @@ int make_plots(const std::string& mode, const std::string& h5,
   return scenarios::run_python_tool("ferroplot.py", args);
 }
 
+}  // namespace
+
+void apply_run_overrides(Scene& scene, double t_end, double speed, const std::string& tangential) {
+  if (!std::isnan(t_end)) {
+    if (!(t_end > 0.0))
+      throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", t_end));
+    scene.simulation.t_end = t_end;
+    (void)scenarios::output_sample_count(t_end, scene.output.interval, "--t-end");
+  }
+  if (!std::isnan(speed)) {
+    if (!(speed > 0.0))
+      throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", speed));
+    scene.simulation.speed = speed;
+  }
+  if (!tangential.empty()) scenarios::override_tangential(scene, tangential, "--tangential");
+}
+
+namespace {
+
 int do_run(const RunArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
-  if (!std::isnan(a.t_end)) {
-    if (!(a.t_end > 0.0))
-      throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", a.t_end));
-    scene.simulation.t_end = a.t_end;
-    (void)scenarios::output_sample_count(a.t_end, scene.output.interval, "--t-end");
-  }
-  if (!std::isnan(a.speed)) {
-    if (!(a.speed > 0.0))
-      throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", a.speed));
-    scene.simulation.speed = a.speed;
-  }
-  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
+  apply_run_overrides(scene, a.t_end, a.speed, a.tangential);
   if (!a.integrator.empty()) {
     scene.solver.method = a.integrator;
     scene.solver.validate("--integrator");

@@ -294,6 +294,9 @@ Scene load_scene(const std::string& path) {
     v.linear_solver = r.string_or("linear_solver", v.linear_solver, {"dense", "band"});
     v.max_steps = r.integer_or("max_steps", v.max_steps);
     v.erk_order = static_cast<int>(r.integer_or("erk_order", v.erk_order));
+    v.max_order = static_cast<int>(r.integer_or("max_order", v.max_order));
+    v.stability_limit_detection =
+        r.boolean_or("stability_limit_detection", v.stability_limit_detection);
     r.finish();
     validated(r, [&] { v.validate(r.path()); });
   }

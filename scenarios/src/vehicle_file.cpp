@@ -60,10 +60,6 @@ double non_negative(MapReader& r, const std::string& key, const char* unit) {
   return v;
 }
 
-bool flag_or(MapReader& r, const std::string& key, bool fallback) {
-  return r.string_or(key, fallback ? "true" : "false", {"true", "false"}) == "true";
-}
-
 // {x, y, z} mapping, absent components 0.
 Eigen::Vector3d axis_map(MapReader m, const char* unit) {
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
@@ -434,7 +430,7 @@ VehicleConfig read_vehicle(MapReader& r) {
       const Eigen::Vector3d k = axis_map(p.map_or_empty("stiffness"), "N/m");
       const Eigen::Vector3d c = axis_map(p.map_or_empty("damping"), "N s/m");
       const double semi = positive(g, "primary_lateral_semi_spacing", "m");
-      const bool preload = flag_or(p, "static_preload", false);
+      const bool preload = p.boolean_or("static_preload", false);
       // Weight carried by each axlebox spring: car body and bogie frames over 8 axleboxes.
       const double axlebox_load = (car.mass + 2.0 * bogie.mass) * v.gravity / 8.0;
       for (int b = 0; b < 2; ++b) {
@@ -486,7 +482,7 @@ VehicleConfig read_vehicle(MapReader& r) {
       const Eigen::Vector3d c = axis_map(s2.map_or_empty("damping"), "N s/m");
       const double semi = positive(g, "secondary_lateral_semi_spacing", "m");
       const double height = g.number("secondary_height");
-      const bool preload = flag_or(s2, "static_preload", false);
+      const bool preload = s2.boolean_or("static_preload", false);
       const double side_load = car.mass * v.gravity / 4.0;
       for (int b = 0; b < 2; ++b) {
         const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];

@@ -400,6 +400,10 @@ long MapReader::integer_or(const std::string& key, long fallback) {
   return v;
 }
 
+bool MapReader::boolean_or(const std::string& key, bool fallback) {
+  return string_or(key, fallback ? "true" : "false", {"true", "false"}) == "true";
+}
+
 std::string MapReader::string(const std::string& key, const std::vector<std::string>& allowed) {
   const YAML::Node n = require(key);
   if (!n.IsScalar()) fail(key, fmt::format("expected a word, got {}", describe(n)));

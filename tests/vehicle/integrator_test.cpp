@@ -137,6 +137,20 @@ TEST(IntegratorSettings, banded_cvode_matches_dense) {
   for (std::size_t i = 0; i < dense.size(); ++i) EXPECT_NEAR(dense[i], band[i], 1e-9);
 }
 
+TEST(IntegratorSettings, max_order_outside_the_method_range_is_rejected) {
+  IntegratorSettings s;
+  s.max_order = 6;
+  try {
+    s.validate("solver");
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("solver.max_order"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("1..5"), std::string::npos) << e.what();
+  }
+  s.method = "cvode_adams";
+  EXPECT_NO_THROW(s.validate("solver"));
+}
+
 TEST(OutputGrid, includes_end_point) {
   const auto g = output_grid(0.0, 1.05, 0.1);
   EXPECT_DOUBLE_EQ(g.front(), 0.0);

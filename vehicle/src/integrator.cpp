@@ -45,6 +45,12 @@ void IntegratorSettings::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.max_steps: must be >= 1, got {}", where, max_steps));
   }
+  if (max_order < 0 || max_order > 12 || (method == "cvode_bdf" && max_order > 5)) {
+    throw std::invalid_argument(fmt::format(
+        "{}.max_order: must be 0 (the method's own) or 1..5 for cvode_bdf, 1..12 for "
+        "cvode_adams, got {}",
+        where, max_order));
+  }
   if (erk_order < 2 || erk_order > 8) {
     throw std::invalid_argument(
         fmt::format("{}.erk_order: must lie in 2..8, got {}", where, erk_order));

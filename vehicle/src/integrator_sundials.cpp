@@ -149,6 +149,10 @@ class CvodeIntegrator final : public Integrator {
     if (std::isfinite(s_.max_step)) check(CVodeSetMaxStep(h.mem, s_.max_step), "CVodeSetMaxStep");
     if (s_.initial_step > 0.0) check(CVodeSetInitStep(h.mem, s_.initial_step), "CVodeSetInitStep");
     check(CVodeSetMaxNumSteps(h.mem, s_.max_steps), "CVodeSetMaxNumSteps");
+    if (s_.max_order > 0) check(CVodeSetMaxOrd(h.mem, s_.max_order), "CVodeSetMaxOrd");
+    if (bdf && s_.stability_limit_detection) {
+      check(CVodeSetStabLimDet(h.mem, SUNTRUE), "CVodeSetStabLimDet");
+    }
     if (bdf) {
       auto [upper, lower] = system.jacobian_bandwidth();
       if (s_.linear_solver == "band") {

@@ -59,6 +59,8 @@ class MapReader {
   [[nodiscard]] double number_or(const std::string& key, double fallback,
                                  bool allow_infinite = false);
   [[nodiscard]] long integer_or(const std::string& key, long fallback);
+  /// Optional true/false, `fallback` when absent.
+  [[nodiscard]] bool boolean_or(const std::string& key, bool fallback);
   [[nodiscard]] std::string string(const std::string& key,
                                    const std::vector<std::string>& allowed = {});
   [[nodiscard]] std::string string_or(const std::string& key, const std::string& fallback,

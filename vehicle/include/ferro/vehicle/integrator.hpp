@@ -29,6 +29,13 @@ struct IntegratorSettings {
   std::string linear_solver = "dense";                        ///< cvode_bdf only: "dense" or "band"
   long max_steps = 1000000;  ///< internal steps allowed between two outputs
   int erk_order = 4;         ///< arkode_erk: method order (2..8)
+  /// cvode_bdf / cvode_adams: highest order the method may use (0: the method's own, 5 for BDF,
+  /// 12 for Adams). BDF orders 1 and 2 are A-stable: an undamped stiff oscillation (a
+  /// wheelset's vertical mode on the Hertz stiffness) then limits the step by accuracy only.
+  int max_order = 0;
+  /// cvode_bdf: BDF stability limit detection (lowers the order when an oscillatory mode near
+  /// the imaginary axis makes orders 3-5 unstable).
+  bool stability_limit_detection = false;
 
   /// Throws std::invalid_argument naming the field and the allowed values.
   void validate(const std::string& where = "solver") const;

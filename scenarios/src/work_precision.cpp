@@ -1,0 +1,214 @@
+// Work-precision study: see work_precision.hpp.
+#include "ferro/scenarios/work_precision.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <limits>
+#include <stdexcept>
+
+#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/scenarios/model_factory.hpp"
+
+namespace ferro::scenarios {
+namespace {
+
+double cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+vehicle::IntegratorSettings parse_entry(const Scene& scene, const std::string& entry,
+                                        double rtol, double atol_per_rtol) {
+  vehicle::IntegratorSettings s = scene.solver;
+  const auto colon = entry.find(':');
+  s.method = entry.substr(0, colon);
+  s.max_order = 0;
+  if (colon != std::string::npos) {
+    const std::string order = entry.substr(colon + 1);
+    char* end = nullptr;
+    const long v = std::strtol(order.c_str(), &end, 10);
+    if (order.empty() || end == nullptr || *end != '\0') {
+      throw std::invalid_argument(fmt::format(
+          "--integrators: '{}': expected method or method:max_order (e.g. cvode_bdf:2)", entry));
+    }
+    s.max_order = static_cast<int>(v);
+  }
+  s.rtol = rtol;
+  s.atol = rtol * atol_per_rtol;
+  s.validate(fmt::format("--integrators '{}'", entry));
+  return s;
+}
+
+struct Trajectory {
+  vehicle::IntegrationResult result;
+  double cpu_seconds = 0.0;
+  std::vector<std::vector<double>> compared;  ///< per output time, the compared states
+};
+
+Trajectory integrate(const vehicle::OdeSystem& system, const std::vector<double>& x0,
+                     const std::vector<double>& times, const vehicle::IntegratorSettings& s,
+                     const std::vector<std::size_t>& index) {
+  Trajectory out;
+  out.compared.reserve(times.size());
+  auto integrator = vehicle::make_integrator(s);
+  const double start = cpu_now();
+  out.result = integrator->integrate(system, x0, times, [&](double, std::span<const double> x) {
+    std::vector<double> row(index.size());
+    for (std::size_t k = 0; k < index.size(); ++k) row[k] = x[index[k]];
+    out.compared.push_back(std::move(row));
+    return true;
+  });
+  out.cpu_seconds = cpu_now() - start;
+  return out;
+}
+
+}  // namespace
+
+WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+  if (options.rtols.empty()) throw std::invalid_argument("--rtols: give at least one tolerance");
+  for (double r : options.rtols) {
+    if (!(r > 0.0 && r < 1.0)) {
+      throw std::invalid_argument(fmt::format("--rtols: each must lie in (0, 1), got {}", r));
+    }
+  }
+  if (!(options.atol_per_rtol > 0.0) || !std::isfinite(options.atol_per_rtol)) {
+    throw std::invalid_argument(
+        fmt::format("--atol-per-rtol: must be finite and > 0, got {}", options.atol_per_rtol));
+  }
+  if (!(options.reference_rtol > 0.0 && options.reference_rtol < 1.0)) {
+    throw std::invalid_argument(
+        fmt::format("--reference-rtol: must lie in (0, 1), got {}", options.reference_rtol));
+  }
+  if (!(options.target_error > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("--target-error: must be > 0, got {}", options.target_error));
+  }
+  // Every entry is checked before any run.
+  std::vector<vehicle::IntegratorSettings> settings;
+  std::vector<std::string> labels;
+  for (const std::string& entry : options.integrators) {
+    for (double r : options.rtols) {
+      settings.push_back(parse_entry(scene, entry, r, options.atol_per_rtol));
+      labels.push_back(entry);
+    }
+  }
+  if (settings.empty()) throw std::invalid_argument("--integrators: give at least one");
+
+  WorkPrecisionReport report;
+  report.t_end = scene.simulation.t_end;
+  const double setup_start = cpu_now();
+  const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
+  const std::vector<double> x0 = initial_state(scene, *system);
+  report.setup_cpu_seconds = cpu_now() - setup_start;
+
+  const auto info = system->state_info();
+  std::vector<std::size_t> index;
+  if (options.states.empty()) {
+    for (std::size_t i = 0; i < info.size(); ++i) {
+      const std::string& n = info[i].name;
+      const bool wheelset = n.rfind("wheelset", 0) == 0;
+      const bool lateral = n.size() > 2 && n.compare(n.size() - 2, 2, ".y") == 0;
+      const bool yaw = n.size() > 4 && n.compare(n.size() - 4, 4, ".yaw") == 0;
+      if (wheelset && (lateral || yaw)) index.push_back(i);
+    }
+    if (index.empty()) {
+      throw std::invalid_argument(
+          "--states: the model has no wheelset lateral or yaw state; name the states to compare");
+    }
+  } else {
+    for (const std::string& name : options.states) {
+      const auto it = std::find_if(info.begin(), info.end(),
+                                   [&](const vehicle::SignalInfo& s) { return s.name == name; });
+      if (it == info.end()) {
+        std::vector<std::string> names;
+        for (const auto& s : info) names.push_back(s.name);
+        throw std::invalid_argument(fmt::format("--states: unknown state '{}'; states: {}", name,
+                                                fmt::join(names, ", ")));
+      }
+      index.push_back(static_cast<std::size_t>(it - info.begin()));
+    }
+  }
+  for (std::size_t i : index) report.compared_states.push_back(info[i].name);
+
+  const std::vector<double> times =
+      vehicle::output_grid(0.0, scene.simulation.t_end, scene.output.interval);
+
+  vehicle::IntegratorSettings ref_settings = scene.solver;
+  ref_settings.method = "cvode_bdf";
+  ref_settings.max_order = 0;
+  ref_settings.rtol = options.reference_rtol;
+  ref_settings.atol = options.reference_rtol * options.atol_per_rtol;
+  const Trajectory ref = integrate(*system, x0, times, ref_settings, index);
+  const auto fill = [](WorkPrecisionPoint& p, const Trajectory& t) {
+    p.status = vehicle::to_string(t.result.status);
+    p.t_reached = t.result.t_reached;
+    p.steps = t.result.steps;
+    p.rhs_evaluations = t.result.rhs_evaluations;
+    p.cpu_seconds = t.cpu_seconds;
+  };
+  report.reference.integrator = "cvode_bdf";
+  report.reference.settings = ref_settings;
+  fill(report.reference, ref);
+  report.reference.error = 0.0;
+  if (ref.result.status != vehicle::IntegrationResult::Status::kCompleted) {
+    throw std::runtime_error(fmt::format(
+        "work-precision: the reference run (cvode_bdf, rtol {}) stopped at t = {} s: {}",
+        options.reference_rtol, ref.result.t_reached, ref.result.message));
+  }
+  std::vector<double> peak(index.size(), 0.0);
+  for (const auto& row : ref.compared) {
+    for (std::size_t k = 0; k < row.size(); ++k) peak[k] = std::max(peak[k], std::abs(row[k]));
+  }
+
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    WorkPrecisionPoint p;
+    p.integrator = labels[i];
+    p.settings = settings[i];
+    const Trajectory run = integrate(*system, x0, times, settings[i], index);
+    fill(p, run);
+    if (run.result.status == vehicle::IntegrationResult::Status::kCompleted &&
+        run.compared.size() == ref.compared.size()) {
+      double err = 0.0;
+      for (std::size_t t = 0; t < run.compared.size(); ++t) {
+        for (std::size_t k = 0; k < index.size(); ++k) {
+          if (peak[k] > 0.0) {
+            err = std::max(err, std::abs(run.compared[t][k] - ref.compared[t][k]) / peak[k]);
+          }
+        }
+      }
+      p.error = err;
+    } else {
+      p.error = std::numeric_limits<double>::quiet_NaN();
+    }
+    report.points.push_back(p);
+  }
+  for (std::size_t i = 0; i < report.points.size(); ++i) {
+    const auto& p = report.points[i];
+    if (!(p.error <= options.target_error)) continue;
+    if (!report.best || p.cpu_seconds < report.points[*report.best].cpu_seconds) report.best = i;
+  }
+  return report;
+}
+
+void write_work_precision_csv(const WorkPrecisionReport& report, const std::string& path) {
+  io::TextWriter out(path);
+  out.write(
+      "integrator,max_order,rtol,atol,status,t_reached_s,steps,rhs_evaluations,cpu_s,"
+      "cpu_s_per_simulated_s,error\n");
+  const auto row = [&](const WorkPrecisionPoint& p) {
+    out.print("{},{},{:.3g},{:.3g},{},{:.9g},{},{},{:.6g},{:.6g},{:.6g}\n",
+              p.integrator.substr(0, p.integrator.find(':')), p.settings.max_order,
+              p.settings.rtol, p.settings.atol, p.status, p.t_reached, p.steps,
+              p.rhs_evaluations, p.cpu_seconds,
+              report.t_end > 0.0 ? p.cpu_seconds / report.t_end : 0.0, p.error);
+  };
+  row(report.reference);
+  for (const auto& p : report.points) row(p);
+  out.close();
+}
+
+}  // namespace ferro::scenarios

@@ -1,0 +1,133 @@
+// Work-precision study on the suspended wheelset: the model is linear, so its exact solution
+// x(t) = V exp(L t) V^-1 x0 (eigen-decomposition of the Jacobian, exact for a linear system up
+// to round-off) is an oracle independent of every integrator. The reference run must follow it,
+// and the error the study reports for each run must be the run's true error against it.
+#include "ferro/scenarios/work_precision.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <complex>
+
+#include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/scene.hpp"
+
+namespace ferro::scenarios {
+namespace {
+
+TEST(WorkPrecision, errors_match_the_exact_linear_solution) {
+  Scene scene = load_scene(std::string(FERRO_SOURCE_DIR) + "/scenarios/scenes/wheelset_hunting.yaml");
+  scene.simulation.t_end = 2.0;
+  WorkPrecisionOptions opt;
+  opt.integrators = {"cvode_bdf", "cvode_bdf:2"};
+  opt.rtols = {1e-4, 1e-6};
+  opt.target_error = 1e-3;
+  const WorkPrecisionReport r = run_work_precision(scene, opt);
+  ASSERT_EQ(r.points.size(), 4u);
+
+  // Exact solution on the output grid.
+  const auto system = build_system(scene, scene.simulation.speed);
+  const std::vector<double> x0 = initial_state(scene, *system);
+  const auto n = static_cast<Eigen::Index>(x0.size());
+  Eigen::MatrixXd A(n, n);
+  std::vector<double> xp(x0), xm(x0), fp(x0.size()), fm(x0.size());
+  constexpr double kStep = 1e-6;  // central difference of a linear system: exact to round-off
+  for (Eigen::Index j = 0; j < n; ++j) {
+    xp = x0;
+    xm = x0;
+    xp[static_cast<std::size_t>(j)] += kStep;
+    xm[static_cast<std::size_t>(j)] -= kStep;
+    ASSERT_EQ(system->rhs(0.0, xp, fp), vehicle::kRhsOk);
+    ASSERT_EQ(system->rhs(0.0, xm, fm), vehicle::kRhsOk);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      A(i, j) = (fp[static_cast<std::size_t>(i)] - fm[static_cast<std::size_t>(i)]) / (2 * kStep);
+    }
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> eig(A);
+  const Eigen::MatrixXcd V = eig.eigenvectors();
+  const Eigen::VectorXcd c = V.partialPivLu().solve(
+      Eigen::Map<const Eigen::VectorXd>(x0.data(), n).cast<std::complex<double>>());
+  const auto info = system->state_info();
+  std::vector<Eigen::Index> idx;
+  for (const auto& name : r.compared_states) {
+    for (std::size_t i = 0; i < info.size(); ++i)
+      if (info[i].name == name) idx.push_back(static_cast<Eigen::Index>(i));
+  }
+  ASSERT_EQ(idx.size(), 2u);  // wheelset.y, wheelset.yaw
+  const auto times = vehicle::output_grid(0.0, scene.simulation.t_end, scene.output.interval);
+  std::vector<std::vector<double>> exact;
+  std::vector<double> peak(idx.size(), 0.0);
+  for (double t : times) {
+    const Eigen::VectorXcd x = V * (eig.eigenvalues() * t).array().exp().matrix().cwiseProduct(c);
+    std::vector<double> row;
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      row.push_back(x[idx[k]].real());
+      peak[k] = std::max(peak[k], std::abs(row.back()));
+    }
+    exact.push_back(row);
+  }
+
+  // Each run's error against the exact solution, computed here from scratch.
+  const auto true_error = [&](const vehicle::IntegratorSettings& s) {
+    auto integ = vehicle::make_integrator(s);
+    double err = 0.0;
+    std::size_t k = 0;
+    integ->integrate(*system, x0, times, [&](double, std::span<const double> x) {
+      for (std::size_t q = 0; q < idx.size(); ++q) {
+        err = std::max(err, std::abs(x[static_cast<std::size_t>(idx[q])] - exact[k][q]) / peak[q]);
+      }
+      ++k;
+      return true;
+    });
+    return err;
+  };
+  const double ref_error = true_error(r.reference.settings);
+  // The rtol 1e-9 reference follows the exact solution to ~1e-8 of the peak.
+  constexpr double kReferenceTol = 1e-6;
+  EXPECT_LT(ref_error, kReferenceTol);
+  for (const auto& p : r.points) {
+    ASSERT_EQ(p.status, "completed") << p.integrator;
+    // Reported error = true error, up to the reference's own error (triangle inequality).
+    EXPECT_NEAR(p.error, true_error(p.settings), ref_error + 1e-12) << p.integrator << " "
+                                                                     << p.settings.rtol;
+    EXPECT_GT(p.cpu_seconds, 0.0);
+    EXPECT_GT(p.steps, 0);
+  }
+  // Tighter tolerance, smaller error, for each integrator.
+  EXPECT_LT(r.points[1].error, r.points[0].error);
+  EXPECT_LT(r.points[3].error, r.points[2].error);
+  // The pick meets the target and is the cheapest that does.
+  ASSERT_TRUE(r.best.has_value());
+  const auto& best = r.points[*r.best];
+  EXPECT_LE(best.error, opt.target_error);
+  for (const auto& p : r.points) {
+    if (p.error <= opt.target_error) {
+      EXPECT_LE(best.cpu_seconds, p.cpu_seconds);
+    }
+  }
+}
+
+TEST(WorkPrecision, bad_entries_name_the_option) {
+  Scene scene = load_scene(std::string(FERRO_SOURCE_DIR) + "/scenarios/scenes/wheelset_hunting.yaml");
+  WorkPrecisionOptions opt;
+  opt.integrators = {"cvode_bdf:x"};
+  EXPECT_THROW(
+      {
+        try {
+          (void)run_work_precision(scene, opt);
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find("--integrators"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      std::invalid_argument);
+  opt.integrators = {"cvode_bdf:7"};
+  EXPECT_THROW((void)run_work_precision(scene, opt), std::invalid_argument);
+  opt.integrators = {"cvode_bdf"};
+  opt.states = {"no_such_state"};
+  EXPECT_THROW((void)run_work_precision(scene, opt), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ferro::scenarios
