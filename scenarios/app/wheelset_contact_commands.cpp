@@ -33,8 +33,8 @@ void print_table(const std::vector<scenarios::WheelsetContact>& results) {
   fmt::print(
       "{:>4} {:>5} {:>5} {:>2} {:>8} {:>8} {:>8} {:>7} {:>8} {:>10} {:>10} {:>9} {:>8} {:>8} "
       "{:>8} {:>6} {:>7} {:>8}\n",
-      "", "mm", "", "", "mm", "mm", "mm", "deg", "N", "-", "-", "1/m", "N", "N", "N m", "um",
-      "MPa", "N");
+      "", "mm", "", "", "mm", "mm", "mm", "deg", "N", "-", "-", "1/m", "N", "N", "N m", "um", "MPa",
+      "N");
   for (const auto& r : results) {
     for (const auto& w : r.wheels) {
       for (const auto& p : w.patches) {
@@ -44,8 +44,8 @@ void print_table(const std::vector<scenarios::WheelsetContact>& results) {
             r.input.id, r.input.lateral * 1e3, w.side == fc::Side::left ? "left" : "right",
             w.patches.size(), w.vertical * 1e3, p.rail_y * 1e3, p.wheel_y * 1e3,
             p.contact_angle * 180.0 / std::numbers::pi, p.normal_force, p.creepage.longitudinal,
-            p.creepage.lateral, p.creepage.spin, p.force_x, p.force_y, p.moment_z,
-            p.approach * 1e6, p.peak_pressure * 1e-6, w.vertical_load);
+            p.creepage.lateral, p.creepage.spin, p.force_x, p.force_y, p.moment_z, p.approach * 1e6,
+            p.peak_pressure * 1e-6, w.vertical_load);
       }
     }
   }
@@ -60,9 +60,8 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
     std::vector<scenarios::WheelsetCase> kept;
     for (int id : only) {
       if (!known.count(id)) {
-        throw std::invalid_argument(
-            fmt::format("--cases: case {} is not in {} (ids {}..{})", id, yaml,
-                        *known.begin(), *known.rbegin()));
+        throw std::invalid_argument(fmt::format("--cases: case {} is not in {} (ids {}..{})", id,
+                                                yaml, *known.begin(), *known.rbegin()));
       }
       for (const auto& c : in.cases) {
         if (c.id == id) kept.push_back(c);
@@ -80,8 +79,9 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
   fmt::print("wrote {}, {}\n", h5.string(), csv.string());
   if (plot) {
     if (scenarios::run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
-      fmt::print(stderr, "plotting failed ({} tools/wheelset_contact_plot.py {}); the table is "
-                         "written\n",
+      fmt::print(stderr,
+                 "plotting failed ({} tools/wheelset_contact_plot.py {}); the table is "
+                 "written\n",
                  scenarios::python_program(), h5.string());
       return kExitRunFailure;
     }

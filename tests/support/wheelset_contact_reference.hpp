@@ -143,8 +143,7 @@ inline void expect_matches_reference(int id, const scenarios::WheelContact& w) {
   EXPECT_NEAR(p.wheel_y, s * ref.ycp_wheel, kPositionTol) << where;
   EXPECT_NEAR(w.vertical, ref.z_ws, kHeightTol) << where;
   const bool flange = std::abs(ref.deltcp) > 0.2;
-  EXPECT_NEAR(p.contact_angle, -s * ref.deltcp, flange ? kAngleTolFlange : kAngleTolTread)
-      << where;
+  EXPECT_NEAR(p.contact_angle, -s * ref.deltcp, flange ? kAngleTolFlange : kAngleTolTread) << where;
   EXPECT_NEAR(p.normal_force / ref.fn, 1.0, kNormalForceTol) << where;
   EXPECT_NEAR(p.approach / ref.approach, 1.0, kApproachTol) << where;
   EXPECT_NEAR(p.peak_pressure / ref.pmax, 1.0, kPeakPressureTol) << where;

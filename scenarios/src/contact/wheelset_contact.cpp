@@ -299,8 +299,7 @@ PatchContact solve_patch(const fc::WheelRailPair& pair, const fc::WheelsetPose& 
   // Window around the candidate: half-length from its penetration and longitudinal curvature,
   // half-width 12 mm (grown if the interpenetration reaches the edge).
   const double pen = std::max(cand.penetration, 1e-7);
-  const double half_length =
-      1.3 * std::sqrt(pen / std::max(cand.curvature_a, 0.05)) + 4.0 * in.dx;
+  const double half_length = 1.3 * std::sqrt(pen / std::max(cand.curvature_a, 0.05)) + 4.0 * in.dx;
   PatchWindow w =
       patch_window(pair, pose, cand, cand.contact_angle, half_length, 12.0e-3, 0.0, 0.0, in);
   if (w.row_hi < w.row_lo) {
@@ -332,14 +331,13 @@ PatchContact solve_patch(const fc::WheelRailPair& pair, const fc::WheelsetPose& 
     const double angle = sa / sw;
     x_ref += xc;
     ref = plane_point(pair, side, x_ref, rail_y_of_s(sc));
-    const bool settled = std::abs(sc) < 1e-5 && std::abs(xc) < 1e-5 &&
-                         std::abs(angle - w.angle) < 1e-5;
+    const bool settled =
+        std::abs(sc) < 1e-5 && std::abs(xc) < 1e-5 && std::abs(angle - w.angle) < 1e-5;
     const double s_lo = w.grid.s(w.row_lo) - sc, s_hi = w.grid.s(w.row_hi) - sc;
     const double x_lo = w.grid.x(w.col_lo) - xc, x_hi = w.grid.x(w.col_hi) - xc;
     const double hs = 0.5 * (s_hi - s_lo) + 3.0 * in.ds;
     const double hx = 0.5 * (x_hi - x_lo) + 3.0 * in.dx;
-    w = patch_window(pair, pose, ref, angle, hx, hs, 0.5 * (x_lo + x_hi), 0.5 * (s_lo + s_hi),
-                     in);
+    w = patch_window(pair, pose, ref, angle, hx, hs, 0.5 * (x_lo + x_hi), 0.5 * (s_lo + s_hi), in);
     if (w.row_hi < w.row_lo) {
       throw std::runtime_error("wheelset contact: the patch vanished in its own plane");
     }
@@ -400,8 +398,8 @@ PatchContact solve_patch(const fc::WheelRailPair& pair, const fc::WheelsetPose& 
   load.approach = -gmin;
   const Eigen::Vector3d n(0.0, rp.ny, rp.nz);
   out.creepage = creepages_at(pair, pose, in, c, p, n, out.rolling_radius);
-  const fm::RollingInput rolling{out.creepage.longitudinal, out.creepage.lateral,
-                                 out.creepage.spin, in.friction};
+  const fm::RollingInput rolling{out.creepage.longitudinal, out.creepage.lateral, out.creepage.spin,
+                                 in.friction};
   const fm::MimResult r = fm::solve_rolling_contact(op, gap, load, rolling);
   out.converged = r.converged;
   out.normal_force = r.normal_force;
@@ -501,15 +499,15 @@ WheelContact wheel_contact_at(const fc::WheelRailPair& pair, const WheelsetConta
   out.side = side;
   out.vertical = vertical;
   std::vector<fc::ContactPoint> cands = fc::candidate_points(pair, pose, side, 0.0);
-  std::sort(cands.begin(), cands.end(), [](const auto& a, const auto& b) {
-    return a.vertical_gap < b.vertical_gap;
-  });
+  std::sort(cands.begin(), cands.end(),
+            [](const auto& a, const auto& b) { return a.vertical_gap < b.vertical_gap; });
   std::vector<std::pair<double, double>> covered;
   for (const fc::ContactPoint& cand : cands) {
     if (!(cand.vertical_gap < 0.0)) continue;
     bool inside = false;
     for (const auto& [lo, hi] : covered) {
-      if (cand.rail_y >= lo - kPatchSeparationDistance && cand.rail_y <= hi + kPatchSeparationDistance) {
+      if (cand.rail_y >= lo - kPatchSeparationDistance &&
+          cand.rail_y <= hi + kPatchSeparationDistance) {
         inside = true;
       }
     }

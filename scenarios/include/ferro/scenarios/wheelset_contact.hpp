@@ -3,10 +3,11 @@
 // A-2.2 format): for each position and each wheel, the contact patches found from the rigid
 // interpenetration of the profiles, each reported at its penetration-weighted centre (a
 // two-lobe, non-Hertzian patch is one patch; the weights are the interpenetration squared and the
-// patch's contact angle is the same weighted average of the rail inclination), the normal and tangential problem solved by MIM
-// on the undeformed gap sampled from the profiles, creepages from the prescribed yaw and
-// rolling, and the wheel's height solved so that the vertical force it puts on the rail (the
-// vertical parts of the normal AND tangential forces) equals the prescribed wheel load.
+// patch's contact angle is the same weighted average of the rail inclination), the normal and
+// tangential problem solved by MIM on the undeformed gap sampled from the profiles, creepages from
+// the prescribed yaw and rolling, and the wheel's height solved so that the vertical force it puts
+// on the rail (the vertical parts of the normal AND tangential forces) equals the prescribed wheel
+// load.
 //
 // References: Shackleton & Iwnicki, "Comparison of wheel-rail contact codes for railway vehicle
 // simulation: an introduction to the Manchester Contact Benchmark and initial results", Vehicle
@@ -67,28 +68,28 @@ struct WheelsetContactInput {
 /// frame of the library (tangential_model.hpp): t1 along the track, n the rail's outward normal,
 /// t2 = n x t1; creepages in the same frame.
 struct PatchContact {
-  double x = 0.0;               ///< reference point along the track, track frame [m]
-  double rail_y = 0.0;          ///< reference point on the rail profile (file coordinates) [m]
-  double wheel_y = 0.0;         ///< reference point on the wheel profile (file coordinates) [m]
+  double x = 0.0;        ///< reference point along the track, track frame [m]
+  double rail_y = 0.0;   ///< reference point on the rail profile (file coordinates) [m]
+  double wheel_y = 0.0;  ///< reference point on the wheel profile (file coordinates) [m]
   /// [rad], + when the normal leans towards the track centre: the penetration-weighted average
   /// inclination of the rail over the patch, which sets the contact plane (t1, t2) and n.
   double contact_angle = 0.0;
-  double rolling_radius = 0.0;  ///< wheel radius at the reference point [m]
+  double rolling_radius = 0.0;                ///< wheel radius at the reference point [m]
   double rail_y_min = 0.0, rail_y_max = 0.0;  ///< lateral extent of the loaded area on the rail [m]
   double deepest_rail_y = 0.0;  ///< deepest interpenetration point of the patch on the rail [m]
   int regions = 0;  ///< connected parts of the loaded area (2: two separate lobes in one patch)
   contact::Creepage creepage;
-  double normal_force = 0.0;  ///< F_n [N]
-  double force_x = 0.0;       ///< F_x [N]
-  double force_y = 0.0;       ///< F_y [N]
-  double moment_z = 0.0;      ///< M_z about the reference point [N m]
-  double approach = 0.0;      ///< rigid approach of the bodies along n [m]
-  double peak_pressure = 0.0;  ///< [Pa]
-  double area = 0.0;           ///< loaded area [m^2]
+  double normal_force = 0.0;       ///< F_n [N]
+  double force_x = 0.0;            ///< F_x [N]
+  double force_y = 0.0;            ///< F_y [N]
+  double moment_z = 0.0;           ///< M_z about the reference point [N m]
+  double approach = 0.0;           ///< rigid approach of the bodies along n [m]
+  double peak_pressure = 0.0;      ///< [Pa]
+  double area = 0.0;               ///< loaded area [m^2]
   double adhesion_fraction = 0.0;  ///< stick area / loaded area [-]
-  double force_vertical = 0.0;  ///< vertical force ON THE RAIL, + down [N]
-  double force_lateral = 0.0;   ///< lateral force ON THE RAIL, track y (+ right) [N]
-  bool converged = false;       ///< MIM normal and tangential solves converged
+  double force_vertical = 0.0;     ///< vertical force ON THE RAIL, + down [N]
+  double force_lateral = 0.0;      ///< lateral force ON THE RAIL, track y (+ right) [N]
+  bool converged = false;          ///< MIM normal and tangential solves converged
 };
 
 /// One wheel of one case.
