@@ -58,6 +58,8 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry sea
 void add_mim_commands(CLI::App& app, VerbHandler& handler);
 /// After add_contact_commands: contact mim-table.
 void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
+/// After add_contact_commands: contact wheelset.
+void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler);   // fe-kij
 /// derailment, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep

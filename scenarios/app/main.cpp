@@ -25,6 +25,7 @@ int run_main(int argc, char** argv) {
   add_geometry_commands(app, handler);
   add_mim_commands(app, handler);
   add_mim_table_commands(app, handler);
+  add_wheelset_contact_commands(app, handler);
   add_bench_commands(app, handler);
   add_fe_kij_commands(app, handler);
   add_analysis_commands(app, handler);

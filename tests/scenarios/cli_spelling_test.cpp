@@ -41,7 +41,8 @@ std::string read(const fs::path& p) {
 TEST(CliSpelling, help_shows_the_common_spellings_only) {
   for (const std::vector<std::string>& verb :
        {std::vector<std::string>{"contact", "curve"}, {"contact", "patch"}, {"contact", "mim"},
-        {"contact", "mim-table"}, {"geometry", "pair"}, {"bench", "contact"}}) {
+        {"contact", "mim-table"}, {"contact", "wheelset"}, {"geometry", "pair"},
+        {"bench", "contact"}}) {
     std::vector<std::string> args = {FERRODYN_EXE};
     args.insert(args.end(), verb.begin(), verb.end());
     args.emplace_back("--help");

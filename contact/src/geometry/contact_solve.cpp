@@ -168,7 +168,8 @@ WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose) 
 }
 
 GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const ContactPoint& pt,
-                   int nx, int ny, double dx, double ds, double x_centre, double s_centre) {
+                   int nx, int ny, double dx, double ds, double x_centre, double s_centre,
+                   double plane_angle) {
   if (nx < 1 || ny < 1 || !(dx > 0.0) || !(ds > 0.0)) {
     throw std::invalid_argument("sample_gap: need nx, ny >= 1 and dx, ds > 0 [m]");
   }
@@ -179,7 +180,8 @@ GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const Co
   const double ro = pair.rail_offset(), wo = pair.wheel_offset();
   double zr, dzr;
   rail.eval(pt.rail_y, zr, dzr);
-  const double f1 = sgn * dzr;  // track-frame rail slope dz/dy at the point
+  if (std::isfinite(plane_angle)) dzr = -std::tan(plane_angle);  // contact_angle = -atan(dzr)
+  const double f1 = sgn * dzr;  // track-frame slope dz/dy of the sampling plane
   const double nn = std::sqrt(1.0 + f1 * f1);
   const double ny_ = f1 / nn, nz_ = -1.0 / nn;     // normal, out of the rail
   const double ty = sgn / nn, tz = sgn * f1 / nn;  // lateral tangent, to the field

@@ -190,9 +190,13 @@ struct GapGrid {
   [[nodiscard]] double x(int ix) const { return x_centre + (ix - 0.5 * (nx - 1)) * dx; }
   [[nodiscard]] double s(int iy) const { return s_centre + (iy - 0.5 * (ny - 1)) * ds; }
 };
+/// `plane_angle` [rad], when finite, inclines the sampling plane by this contact angle (sign as
+/// ContactPoint::contact_angle) instead of the rail's slope at the point: the plane of a patch
+/// whose reference angle is an average over the patch.
 [[nodiscard]] GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose,
                                  const ContactPoint& point, int nx, int ny, double dx, double ds,
-                                 double x_centre = 0.0, double s_centre = 0.0);
+                                 double x_centre = 0.0, double s_centre = 0.0,
+                                 double plane_angle = std::numeric_limits<double>::quiet_NaN());
 
 /// `pose` moved vertically so that its deepest point just touches (smallest gap zero).
 [[nodiscard]] WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose);

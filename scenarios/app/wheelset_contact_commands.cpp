@@ -1,0 +1,121 @@
+// `ferrodyn contact wheelset CASES.yaml -o out.h5`: full wheel-rail contact (patches at their
+// penetration-weighted centres, MIM normal and rolling contact, height solved for the wheel
+// load with friction in the vertical balance) of every wheelset position of a pair file with
+// cases (the Manchester contact benchmark format); prints the table, writes HDF5 + CSV
+// and the picture of contact positions and patch extents against the lateral shift.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "ferro/scenarios/pair_file.hpp"
+#include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/wheelset_contact.hpp"
+
+namespace ferro::cli {
+namespace {
+
+namespace fc = ferro::contact;
+
+void print_table(const std::vector<scenarios::WheelsetContact>& results) {
+  fmt::print(
+      "{:>4} {:>5} {:>5} {:>2} {:>8} {:>8} {:>8} {:>7} {:>8} {:>10} {:>10} {:>9} {:>8} {:>8} "
+      "{:>8} {:>6} {:>7} {:>8}\n",
+      "case", "y", "wheel", "np", "height", "rail_y", "wheel_y", "angle", "N", "xi_x", "xi_y",
+      "phi", "F_x", "F_y", "M_z", "delta", "p_max", "Q");
+  fmt::print(
+      "{:>4} {:>5} {:>5} {:>2} {:>8} {:>8} {:>8} {:>7} {:>8} {:>10} {:>10} {:>9} {:>8} {:>8} "
+      "{:>8} {:>6} {:>7} {:>8}\n",
+      "", "mm", "", "", "mm", "mm", "mm", "deg", "N", "-", "-", "1/m", "N", "N", "N m", "um", "MPa",
+      "N");
+  for (const auto& r : results) {
+    for (const auto& w : r.wheels) {
+      for (const auto& p : w.patches) {
+        fmt::print(
+            "{:>4} {:>5.1f} {:>5} {:>2} {:>8.4f} {:>8.3f} {:>8.3f} {:>7.3f} {:>8.1f} {:>10.3e} "
+            "{:>10.3e} {:>9.4f} {:>8.1f} {:>8.1f} {:>8.3f} {:>6.2f} {:>7.1f} {:>8.1f}\n",
+            r.input.id, r.input.lateral * 1e3, w.side == fc::Side::left ? "left" : "right",
+            w.patches.size(), w.vertical * 1e3, p.rail_y * 1e3, p.wheel_y * 1e3,
+            p.contact_angle * 180.0 / std::numbers::pi, p.normal_force, p.creepage.longitudinal,
+            p.creepage.lateral, p.creepage.spin, p.force_x, p.force_y, p.moment_z, p.approach * 1e6,
+            p.peak_pressure * 1e-6, w.vertical_load);
+      }
+    }
+  }
+}
+
+int run_wheelset_contact(const std::string& yaml, const std::string& out,
+                         const std::vector<int>& only, bool plot) {
+  scenarios::WheelsetContactInput in = scenarios::load_wheelset_contact_file(yaml);
+  if (!only.empty()) {
+    std::set<int> known;
+    for (const auto& c : in.cases) known.insert(c.id);
+    std::vector<scenarios::WheelsetCase> kept;
+    for (int id : only) {
+      if (!known.count(id)) {
+        throw std::invalid_argument(fmt::format("--cases: case {} is not in {} (ids {}..{})", id,
+                                                yaml, *known.begin(), *known.rbegin()));
+      }
+      for (const auto& c : in.cases) {
+        if (c.id == id) kept.push_back(c);
+      }
+    }
+    in.cases = kept;
+  }
+  const fc::WheelRailPair pair = scenarios::make_wheel_rail_pair(in.pair);
+  const auto results = scenarios::solve_wheelset_contacts(pair, in);
+  print_table(results);
+  std::filesystem::path h5(out);
+  std::filesystem::path csv = h5;
+  csv.replace_extension(".csv");
+  scenarios::write_wheelset_contacts(results, in, h5.string(), csv.string());
+  fmt::print("wrote {}, {}\n", h5.string(), csv.string());
+  if (plot) {
+    if (scenarios::run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
+      fmt::print(stderr,
+                 "plotting failed ({} tools/wheelset_contact_plot.py {}); the table is "
+                 "written\n",
+                 scenarios::python_program(), h5.string());
+      return kExitRunFailure;
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler) {
+  CLI::App* contact = app.get_subcommand("contact");
+  auto yaml = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>("wheelset_contact.h5");
+  auto only = std::make_shared<std::vector<int>>();
+  auto no_plots = std::make_shared<bool>(false);
+  CLI::App* cmd = contact->add_subcommand(
+      "wheelset",
+      "Full contact of prescribed wheelset positions (pair file with cases, Manchester A-2.2 "
+      "format): patches at their penetration-weighted centres, MIM normal and rolling contact, "
+      "height solved for the wheel load with friction in the vertical balance");
+  cmd->add_option("cases_file", *yaml, "pair file with load, material, friction and cases (mm)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  add_output_option(cmd, *out,
+                    "HDF5 table to write (the CSV goes next to it, the picture to "
+                    "<stem>_plots/)")
+      ->capture_default_str();
+  cmd->add_option("--cases", *only, "only these case ids (default: every case)")->delimiter(',');
+  add_no_plots_flag(cmd, *no_plots);
+  cmd->callback([&handler, yaml, out, only, no_plots] {
+    handler = [yaml, out, only, no_plots] {
+      return run_wheelset_contact(*yaml, *out, *only, !*no_plots);
+    };
+  });
+}
+
+}  // namespace ferro::cli
