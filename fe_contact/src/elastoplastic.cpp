@@ -37,12 +37,12 @@ void RailSteel::validate(const std::string& where) const {
 }
 
 void HertzLoadCase::validate(const std::string& where) const {
-  for (const auto& [name, v] : {std::pair{"semi_axis_x", semi_axis_x},
-                                std::pair{"semi_axis_y", semi_axis_y},
-                                std::pair{"peak_pressure", peak_pressure}}) {
+  for (const auto& [name, v] :
+       {std::pair{"semi_axis_x", semi_axis_x}, std::pair{"semi_axis_y", semi_axis_y},
+        std::pair{"peak_pressure", peak_pressure}}) {
     if (!(v > 0.0) || !std::isfinite(v)) {
-      throw std::invalid_argument(fmt::format("{}.{}: must be finite and > 0, got {}", where,
-                                              name, v));
+      throw std::invalid_argument(
+          fmt::format("{}.{}: must be finite and > 0, got {}", where, name, v));
     }
   }
   if (elements_per_semi_axis < 2 || elements_per_semi_axis > 40) {
@@ -70,8 +70,8 @@ AxisVonMisesPeak hertz_circular_axis_von_mises_peak(double poisson) {
   // sigma_r = sigma_theta = p0 [-(1 + nu)(1 - z atan(a / z) / a) + 1 / (2 (1 + z^2 / a^2))],
   // sigma_z = -p0 / (1 + z^2 / a^2); von Mises on the axis = |sigma_z - sigma_r|.
   auto ratio = [poisson](double zeta) {
-    const double sr = -(1.0 + poisson) * (1.0 - zeta * std::atan(1.0 / zeta)) +
-                      0.5 / (1.0 + zeta * zeta);
+    const double sr =
+        -(1.0 + poisson) * (1.0 - zeta * std::atan(1.0 / zeta)) + 0.5 / (1.0 + zeta * zeta);
     const double sz = -1.0 / (1.0 + zeta * zeta);
     return std::abs(sz - sr);
   };
@@ -83,7 +83,10 @@ AxisVonMisesPeak hertz_circular_axis_von_mises_peak(double poisson) {
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int i = 0; i < 60; ++i) {
     const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    if (ratio(x1) > ratio(x2)) hi = x2; else lo = x1;
+    if (ratio(x1) > ratio(x2))
+      hi = x2;
+    else
+      lo = x1;
   }
   const double zeta = 0.5 * (lo + hi);
   return {ratio(zeta), zeta};
@@ -165,13 +168,12 @@ ElastoplasticResult hertz_load_cycle(const RailSteel& steel, const HertzLoadCase
   constexpr double kRelativeResidual = 1e-7;
   auto solve_at = [&](double factor) {
     md.set_real_variable("load_factor")[0] = factor;
-    gmm::iteration iter(factor > 0.0 ? kRelativeResidual : kRelativeResidual * force_scale, 0,
-                        40);
+    gmm::iteration iter(factor > 0.0 ? kRelativeResidual : kRelativeResidual * force_scale, 0, 40);
     getfem::standard_solve(md, iter);
     if (!iter.converged()) {
-      throw std::runtime_error(fmt::format(
-          "hertz_load_cycle: Newton did not converge at load factor {} (residual {})", factor,
-          iter.get_res()));
+      throw std::runtime_error(
+          fmt::format("hertz_load_cycle: Newton did not converge at load factor {} (residual {})",
+                      factor, iter.get_res()));
     }
     out.newton_iterations += static_cast<int>(iter.get_iteration());
     getfem::small_strain_elastoplasticity_next_iter(md, im, law, getfem::DISPLACEMENT_ONLY, vars,

@@ -47,13 +47,13 @@ TEST(ElastoplasticRail, first_yield_at_the_hertz_closed_form) {
   load.load_steps = 1;
   const ElastoplasticResult below = hertz_load_cycle(r900a, load);
   // Hertz centre displacement of one body: (1 - nu^2) pi p0 a / (2 E).
-  const double hertz_uz =
-      (1.0 - kSteel.poisson * kSteel.poisson) * M_PI * load.peak_pressure * load.semi_axis_x /
-      (2.0 * kSteel.young());
-  std::printf("p0 = %.0f MPa (%.2f p0_yield): u_z %.2f um (Hertz %.2f), eps_p %.2e, %ld dofs, "
-              "%.1f s CPU\n",
-              below.peak_pressure * 1e-6, 1.0 - kYieldMargin, below.displacement_loaded * 1e6,
-              hertz_uz * 1e6, below.max_plastic_strain, below.dofs, below.cpu_seconds);
+  const double hertz_uz = (1.0 - kSteel.poisson * kSteel.poisson) * M_PI * load.peak_pressure *
+                          load.semi_axis_x / (2.0 * kSteel.young());
+  std::printf(
+      "p0 = %.0f MPa (%.2f p0_yield): u_z %.2f um (Hertz %.2f), eps_p %.2e, %ld dofs, "
+      "%.1f s CPU\n",
+      below.peak_pressure * 1e-6, 1.0 - kYieldMargin, below.displacement_loaded * 1e6,
+      hertz_uz * 1e6, below.max_plastic_strain, below.dofs, below.cpu_seconds);
   EXPECT_EQ(below.max_plastic_strain, 0.0);
   EXPECT_NEAR(below.displacement_loaded / hertz_uz, 1.0, kDisplacementTolerance);
   EXPECT_LT(std::abs(below.displacement_residual), 1e-6 * below.displacement_loaded);
@@ -61,11 +61,12 @@ TEST(ElastoplasticRail, first_yield_at_the_hertz_closed_form) {
   load.peak_pressure = (1.0 + kYieldMargin) * p0_yield;
   load.load_steps = 2;
   const ElastoplasticResult above = hertz_load_cycle(r900a, load);
-  std::printf("p0 = %.0f MPa (%.2f p0_yield): eps_p %.2e at %.2f mm (closed form %.2f mm), "
-              "residual u_z %.3f um, %d Newton iterations, %.1f s CPU\n",
-              above.peak_pressure * 1e-6, 1.0 + kYieldMargin, above.max_plastic_strain,
-              above.depth_max_plastic_strain * 1e3, peak.depth_over_a * load.semi_axis_x * 1e3,
-              above.displacement_residual * 1e6, above.newton_iterations, above.cpu_seconds);
+  std::printf(
+      "p0 = %.0f MPa (%.2f p0_yield): eps_p %.2e at %.2f mm (closed form %.2f mm), "
+      "residual u_z %.3f um, %d Newton iterations, %.1f s CPU\n",
+      above.peak_pressure * 1e-6, 1.0 + kYieldMargin, above.max_plastic_strain,
+      above.depth_max_plastic_strain * 1e3, peak.depth_over_a * load.semi_axis_x * 1e3,
+      above.displacement_residual * 1e6, above.newton_iterations, above.cpu_seconds);
   EXPECT_GT(above.max_plastic_strain, 0.0);
   EXPECT_GT(above.displacement_residual, 0.0);
   // Plastic flow starts below the surface, around the closed-form depth (within two cells).
@@ -89,12 +90,13 @@ TEST(ElastoplasticRail, thesis_table_3_9_r900a_7_5t) {
   load.elements_per_semi_axis = 4;
   load.load_steps = 6;
   const ElastoplasticResult r = hertz_load_cycle(steel(489.0e6), load);
-  std::printf("R900A 7.5 t: p0 %.0f MPa (thesis p_max 992), u_z %.1f um (thesis 38.3), residual "
-              "%.2f um (thesis 5.0), eps_p %.2e at %.2f mm, %ld dofs, %d Newton iterations, "
-              "%.1f s CPU\n",
-              r.peak_pressure * 1e-6, r.displacement_loaded * 1e6,
-              r.displacement_residual * 1e6, r.max_plastic_strain,
-              r.depth_max_plastic_strain * 1e3, r.dofs, r.newton_iterations, r.cpu_seconds);
+  std::printf(
+      "R900A 7.5 t: p0 %.0f MPa (thesis p_max 992), u_z %.1f um (thesis 38.3), residual "
+      "%.2f um (thesis 5.0), eps_p %.2e at %.2f mm, %ld dofs, %d Newton iterations, "
+      "%.1f s CPU\n",
+      r.peak_pressure * 1e-6, r.displacement_loaded * 1e6, r.displacement_residual * 1e6,
+      r.max_plastic_strain, r.depth_max_plastic_strain * 1e3, r.dofs, r.newton_iterations,
+      r.cpu_seconds);
   EXPECT_GT(r.max_plastic_strain, 0.0);
   EXPECT_GT(r.displacement_residual, 5.0e-6 / kTable39Factor);
   EXPECT_LT(r.displacement_residual, 5.0e-6 * kTable39Factor);

@@ -88,9 +88,10 @@ TEST(FeLayer, thin_fe_layer_matches_interfacial_layer) {
   const double estimate =
       fe_contact::layer_k11_estimate(g, c11, a, layer.thickness, layer.shear_modulus);
   const fe_contact::SlopeResult half_space = fe_contact::layer_reduction_factors(c, layer);
-  std::printf("K11: FE layer %.4f, layer model on the FE body %.4f, closed form (C11 %.3f) %.4f, "
-              "layer model on the half-space %.4f\n",
-              fe.k.k11, model.k.k11, c11, estimate, half_space.k.k11);
+  std::printf(
+      "K11: FE layer %.4f, layer model on the FE body %.4f, closed form (C11 %.3f) %.4f, "
+      "layer model on the half-space %.4f\n",
+      fe.k.k11, model.k.k11, c11, estimate, half_space.k.k11);
   std::printf("K22: FE layer %.4f, layer model on the FE body %.4f, on the half-space %.4f\n",
               fe.k.k22, model.k.k22, half_space.k.k22);
   ASSERT_TRUE(fe.converged);

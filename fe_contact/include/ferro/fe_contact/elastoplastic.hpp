@@ -27,16 +27,16 @@ namespace ferro::fe_contact {
 /// Rail steel: elasticity, von Mises yield stress and linear isotropic hardening.
 struct RailSteel {
   contact::Material elastic;
-  double yield_stress = kNaN;       ///< sigma_y (uniaxial) [Pa]
-  double hardening_modulus = 0.0;   ///< H, d sigma_y / d(equivalent plastic strain) [Pa]
+  double yield_stress = kNaN;      ///< sigma_y (uniaxial) [Pa]
+  double hardening_modulus = 0.0;  ///< H, d sigma_y / d(equivalent plastic strain) [Pa]
   void validate(const std::string& where = "RailSteel") const;
 };
 
 /// Hertzian pressure on the rail and the mesh of the block that carries it.
 struct HertzLoadCase {
-  double semi_axis_x = kNaN;    ///< a (rolling direction) [m]
-  double semi_axis_y = kNaN;    ///< b [m]
-  double peak_pressure = kNaN;  ///< p0 [Pa]
+  double semi_axis_x = kNaN;       ///< a (rolling direction) [m]
+  double semi_axis_y = kNaN;       ///< b [m]
+  double peak_pressure = kNaN;     ///< p0 [Pa]
   int elements_per_semi_axis = 6;  ///< trilinear cells across min(a, b) [-]
   double growth = 1.6;             ///< size ratio of successive cells outside the patch [-]
   double extent = 12.0;            ///< block half-size in units of max(a, b) [-]
@@ -66,8 +66,8 @@ struct ElastoplasticResult {
 /// 3.45), maximised over the depth, and that depth over a; first yield at
 /// p0 = sigma_y / (peak ratio).
 struct AxisVonMisesPeak {
-  double ratio = kNaN;           ///< max sigma_vm / p0 [-]
-  double depth_over_a = kNaN;    ///< z / a of the maximum [-]
+  double ratio = kNaN;         ///< max sigma_vm / p0 [-]
+  double depth_over_a = kNaN;  ///< z / a of the maximum [-]
 };
 [[nodiscard]] AxisVonMisesPeak hertz_circular_axis_von_mises_peak(double poisson);
 
