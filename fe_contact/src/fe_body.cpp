@@ -5,6 +5,8 @@
 
 #include "ferro/fe_contact/fe_body.hpp"
 
+#include "structured_mesh.hpp"
+
 #include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
 #include <fmt/format.h>
@@ -75,6 +77,55 @@ std::vector<double> graded_lines(double a, double b, double h, double growth, do
   return left;
 }
 
+namespace detail {
+
+std::vector<std::size_t> build_structured_mesh(const StructuredBody& body, getfem::mesh& m) {
+  const std::size_t ns = body.s.size(), nt = body.t.size(), nw = body.w.size();
+  auto active = [&](std::size_t i, std::size_t j, std::size_t k) {
+    return !body.active || body.active(i, j, k);
+  };
+  auto place = [&](double s, double t, double w) {
+    return body.map ? body.map(s, t, w) : Point3{s, t, w};
+  };
+  // Nodes used by active cells, then the hexahedra (GetFEM vertex order: s fastest, then t, w).
+  const bgeot::pgeometric_trans pgt = bgeot::parallelepiped_geotrans(3, 1);
+  const std::size_t ns_nodes = body.periodic_s ? ns - 1 : ns;
+  std::vector<std::size_t> node(ns_nodes * nt * nw, kNoCell);
+  auto node_id = [&](std::size_t i, std::size_t j, std::size_t k) -> std::size_t& {
+    return node[(k * nt + j) * ns_nodes + (i % ns_nodes)];
+  };
+  std::vector<std::size_t> cell(ns * nt * nw, kNoCell);
+  std::array<bgeot::size_type, 8> v{};
+  for (std::size_t k = 0; k + 1 < nw; ++k)
+    for (std::size_t j = 0; j + 1 < nt; ++j)
+      for (std::size_t i = 0; i + 1 < ns; ++i) {
+        if (!active(i, j, k)) continue;
+        for (std::size_t c = 0; c < 8; ++c) {
+          const std::size_t ii = i + (c & 1), jj = j + ((c >> 1) & 1), kk = k + (c >> 2);
+          std::size_t& id = node_id(ii, jj, kk);
+          if (id == kNoCell) {
+            const Point3 p = place(body.s[ii], body.t[jj], body.w[kk]);
+            id = m.add_point(bgeot::base_node(p[0], p[1], p[2]), -1.0);
+          }
+          v[c] = id;
+        }
+        cell[(k * nt + j) * ns + i] = m.add_convex(pgt, v.begin());
+      }
+  return cell;
+}
+
+bgeot::short_type hexahedron_w_face(const getfem::mesh& m, std::size_t convex, int top) {
+  const bgeot::pconvex_structure cs = m.structure_of_convex(convex);
+  for (bgeot::short_type f = 0; f < cs->nb_faces(); ++f) {
+    bool all = true;
+    for (auto c : cs->ind_points_of_face(f)) all = all && static_cast<int>(c >> 2) == top;
+    if (all) return f;
+  }
+  throw std::logic_error("hexahedron_w_face: no such face");
+}
+
+}  // namespace detail
+
 namespace {
 
 // Index of line value v in lines (within tol), or throws.
@@ -116,39 +167,10 @@ FeInfluence surface_influence(const StructuredBody& body, const mim::Grid& g,
   }
   const std::clock_t cpu0 = std::clock();
   const std::size_t ns = body.s.size(), nt = body.t.size(), nw = body.w.size();
-  auto active = [&](std::size_t i, std::size_t j, std::size_t k) {
-    return !body.active || body.active(i, j, k);
-  };
-  auto place = [&](double s, double t, double w) {
-    return body.map ? body.map(s, t, w) : Point3{s, t, w};
-  };
-
-  // Nodes used by active cells, then the hexahedra (GetFEM vertex order: s fastest, then t, w).
   getfem::mesh m;
+  const std::vector<std::size_t> cell = detail::build_structured_mesh(body, m);
+  constexpr std::size_t kNone = detail::kNoCell;
   const bgeot::pgeometric_trans pgt = bgeot::parallelepiped_geotrans(3, 1);
-  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  const std::size_t ns_nodes = body.periodic_s ? ns - 1 : ns;
-  std::vector<std::size_t> node(ns_nodes * nt * nw, kNone);
-  auto node_id = [&](std::size_t i, std::size_t j, std::size_t k) -> std::size_t& {
-    return node[(k * nt + j) * ns_nodes + (i % ns_nodes)];
-  };
-  std::vector<std::size_t> cell(ns * nt * nw, kNone);
-  std::array<bgeot::size_type, 8> v{};
-  for (std::size_t k = 0; k + 1 < nw; ++k)
-    for (std::size_t j = 0; j + 1 < nt; ++j)
-      for (std::size_t i = 0; i + 1 < ns; ++i) {
-        if (!active(i, j, k)) continue;
-        for (std::size_t c = 0; c < 8; ++c) {
-          const std::size_t ii = i + (c & 1), jj = j + ((c >> 1) & 1), kk = k + (c >> 2);
-          std::size_t& id = node_id(ii, jj, kk);
-          if (id == kNone) {
-            const Point3 p = place(body.s[ii], body.t[jj], body.w[kk]);
-            id = m.add_point(bgeot::base_node(p[0], p[1], p[2]), -1.0);
-          }
-          v[c] = id;
-        }
-        cell[(k * nt + j) * ns + i] = m.add_convex(pgt, v.begin());
-      }
   if (m.nb_convex() == 0) throw std::invalid_argument("surface_influence: no active cell");
 
   getfem::mesh_fem mf(m, bgeot::dim_type(3));
@@ -158,10 +180,35 @@ FeInfluence surface_influence(const StructuredBody& body, const mim::Grid& g,
   im.set_integration_method(m.convex_index(), getfem::int_method_descriptor(fmt::format(
                                                   "IM_GAUSS_PARALLELEPIPED(3,{})", 2 * degree)));
   const std::size_t ndof = mf.nb_dof();
-  const double G = material.shear_modulus, nu = material.poisson;
-  getfem::model_real_plain_vector lambda(1, 2.0 * G * nu / (1.0 - 2.0 * nu)), mu(1, G);
+  // Cells grouped by material (the body's unless cell_material names another), one assembly each.
+  std::vector<const contact::Material*> materials{&material};
+  std::vector<getfem::mesh_region> regions(1);
+  for (std::size_t k = 0; k + 1 < nw; ++k)
+    for (std::size_t j = 0; j + 1 < nt; ++j)
+      for (std::size_t i = 0; i + 1 < ns; ++i) {
+        const std::size_t cv = cell[(k * nt + j) * ns + i];
+        if (cv == kNone) continue;
+        const contact::Material* mat = body.cell_material ? body.cell_material(i, j, k) : nullptr;
+        if (mat == nullptr) mat = &material;
+        const auto it = std::find(materials.begin(), materials.end(), mat);
+        const std::size_t r = static_cast<std::size_t>(it - materials.begin());
+        if (it == materials.end()) {
+          mat->validate("surface_influence.cell_material");
+          materials.push_back(mat);
+          regions.emplace_back();
+        }
+        regions[r].add(cv);
+      }
   getfem::model_real_sparse_matrix K(ndof, ndof);
-  getfem::asm_stiffness_matrix_for_homogeneous_linear_elasticity(K, im, mf, lambda, mu);
+  for (std::size_t r = 0; r < materials.size(); ++r) {
+    if (regions[r].is_empty()) continue;
+    const double G = materials[r]->shear_modulus, nu = materials[r]->poisson;
+    getfem::model_real_plain_vector lambda(1, 2.0 * G * nu / (1.0 - 2.0 * nu)), mu(1, G);
+    getfem::model_real_sparse_matrix Kr(ndof, ndof);
+    getfem::asm_stiffness_matrix_for_homogeneous_linear_elasticity(Kr, im, mf, lambda, mu,
+                                                                   regions[r]);
+    gmm::add(Kr, K);
+  }
 
   // Free DOFs (clamped nodes removed).
   std::vector<long> free_index(ndof, -1);
@@ -196,17 +243,8 @@ FeInfluence surface_influence(const StructuredBody& body, const mim::Grid& g,
     throw std::runtime_error("surface_influence: CHOLMOD factorisation failed");
   }
 
-  // Top face of a hexahedron: its four vertices have local index c with c >> 2 == 1.
-  bgeot::short_type top_face = bgeot::short_type(-1);
-  {
-    const bgeot::pconvex_structure cs = m.structure_of_convex(m.convex_index().first_true());
-    for (bgeot::short_type f = 0; f < cs->nb_faces(); ++f) {
-      const auto& ind = cs->ind_points_of_face(f);
-      bool top = true;
-      for (auto c : ind) top = top && (c >> 2) == 1;
-      if (top) top_face = f;
-    }
-  }
+  const bgeot::short_type top_face =
+      detail::hexahedron_w_face(m, m.convex_index().first_true(), 1);
 
   // Right-hand sides: unit traction over grid element (column s = 0, row is), integrated over
   // the top faces of the cells it covers, along the rolling, lateral and inward directions.

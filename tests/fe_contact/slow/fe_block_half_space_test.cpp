@@ -21,15 +21,17 @@ namespace {
 const contact::Material kSteel = contact::Material::from_young(210.0e9, 0.28);
 
 // Triquadratic hexahedra (Lagrange degree 2), one per grid element along the loaded column and
-// its neighbours, sizes doubling outwards to a block 100 x the loaded area's half-size with a
-// clamped bottom; traction integrated over the loaded element, displacement interpolated at the
-// element centres (annex B.3 gives centre values of uniformly loaded rectangles). Measured
-// against annex B.3: self -0.5 % (zz), -2.3 % (xx, yy); nearest neighbours within 4.3 %;
-// diagonal and second neighbours within 5 % (the doubling elements there are 2 grid elements
-// long). The bounds are these errors with a margin of 0.5 %.
-constexpr double kSelfTolerance = 0.028;
-constexpr double kNeighbourTolerance = 0.048;
-constexpr double kSecondNeighbourTolerance = 0.055;
+// its neighbours, with node lines 0.15 grid element either side of the loaded element's edges
+// and at depths 0.15 and 0.375 grid element (the strain of a uniform load is singular along the
+// load's edges), sizes growing by 2.5 outwards to a block 50 x the loaded area's half-size with
+// a clamped bottom; traction integrated over the loaded element, displacement interpolated at
+// the element centres (annex B.3 gives centre values of uniformly loaded rectangles).
+// Measured against annex B.3: self within 0.2 %, nearest neighbours within 1.1 %, diagonal
+// neighbour within 1.7 % (zz; the clamped bottom lowers zz with the distance), i.e. the 2 %
+// asked of the half-space limit. Second neighbours sit in the first grown elements (2.5 grid
+// elements long): measured within 4.6 %, bound 5 %.
+constexpr double kNearTolerance = 0.02;
+constexpr double kSecondNeighbourTolerance = 0.05;
 
 TEST(FeBlock, boussinesq_cerruti_near_the_load) {
   fe_contact::FeBlockSpec s;
@@ -37,9 +39,10 @@ TEST(FeBlock, boussinesq_cerruti_near_the_load) {
   s.material = kSteel;
   s.mesh.degree = 2;
   s.mesh.subdivisions = 1;
-  s.mesh.growth = 2.0;
+  s.mesh.growth = 2.5;
   s.mesh.near_columns = 1;
-  s.extent = 100.0;
+  s.extent = 50.0;
+  s.edge_refinement = 0.15;
   const fe_contact::FeInfluence fe = fe_contact::block_influence(s);
   const ColumnInfluence pair = fe_contact::pair_of_identical(fe.single_body);
   const contact::CombinedMaterial m = contact::combine(kSteel, kSteel);
@@ -51,9 +54,7 @@ TEST(FeBlock, boussinesq_cerruti_near_the_load) {
       const InfluenceCoefficients hs =
           influence_coefficients(ox * 1.0e-3, oy * 1.0e-3, 1.0e-3, 1.0e-3, m);
       const std::size_t k = pair.index(ox, is + oy, is);
-      const double tol = (ox == 0 && oy == 0)   ? kSelfTolerance
-                         : (ox + oy == 1)       ? kNeighbourTolerance
-                                                : kSecondNeighbourTolerance;
+      const double tol = ox <= 1 ? kNearTolerance : kSecondNeighbourTolerance;
       std::printf("offset (%d, %d): zz %.4f xx %.4f yy %.4f of annex B.3\n", ox, oy,
                   pair.zz[k] / hs.zz, pair.xx[k] / hs.xx, pair.yy[k] / hs.yy);
       EXPECT_NEAR(pair.zz[k] / hs.zz, 1.0, tol) << ox << ", " << oy;

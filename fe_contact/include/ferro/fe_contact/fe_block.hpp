@@ -6,6 +6,8 @@
 // References: Toumi (2016) annex B.3 (the half-space coefficients these reproduce for a large
 // block); Johnson, "Contact Mechanics" (1985) section 3.2 (point-load displacement below the
 // surface, which sets the clamped-bottom error ~ (3 - 2 nu) r / (2 (1 - nu) H)).
+// A bonded surface layer (thickness h, its own material) can cover the top face: the finite-element
+// counterpart of the interfacial layer's local tangential compliance h / G3.
 // Known deviations: the block is finite (extent x the loaded area's half-size in every direction),
 // which lowers the coefficients by about the displacement the half-space has at the block's depth.
 
@@ -23,6 +25,15 @@ struct FeBlockSpec {
   FeMeshLevel mesh;
   /// Block half-length, half-width and depth, in units of the loaded area's half-extent [-].
   double extent = 200.0;
+  /// Refinement at the edges of the centre grid element, where the strain of a uniform load is
+  /// singular (logarithmically): node lines at +-edge_refinement grid elements from its four
+  /// edges and below the surface at depths edge_refinement and 2.5 edge_refinement grid
+  /// elements; 0: none [-].
+  double edge_refinement = 0.0;
+  /// Bonded surface layer of another material over the whole top face (a third-body layer
+  /// meshed with finite elements): its thickness (0: no layer) and material.
+  double layer_thickness = 0.0;  ///< h [m]
+  contact::Material layer_material;
   void validate(const std::string& where = "FeBlockSpec") const;
 };
 

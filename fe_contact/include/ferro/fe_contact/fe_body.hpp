@@ -54,6 +54,9 @@ struct StructuredBody {
   std::function<bool(std::size_t, std::size_t, std::size_t)> active;
   /// Physical position of a parametric point [m]; empty: identity.
   std::function<Point3(double, double, double)> map;
+  /// Material of cell (i, j, k) where it differs from the body's (e.g. a bonded surface layer);
+  /// empty, or nullptr for a cell: the material passed to surface_influence.
+  std::function<const contact::Material*(std::size_t, std::size_t, std::size_t)> cell_material;
   /// Whether a node at a physical position is clamped (all components zero).
   std::function<bool(const Point3&)> clamped;
   /// The s lines close on themselves (node line s.back() is node line s.front(): a full ring).
