@@ -12,7 +12,6 @@
 #include <iostream>
 #include <limits>
 #include <map>
-#include <set>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -20,96 +19,20 @@
 #include <vector>
 
 #include "ferro/contact/hertz.hpp"
-#include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/contact/tangential_model.hpp"
 #include "cli.hpp"
-#include "ferro/scenarios/csv_batch.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
+#include "ferro/scenarios/contact_eval.hpp"
 
 namespace ferro::cli {
 namespace {
 
 namespace fc = ferro::contact;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// One Hertzian evaluation, as given on the command line or in a --batch CSV row.
-struct EvalInput {
-  double a = kNaN, b = kNaN;                            // semi-axes [m]
-  double curvature_x = kNaN, curvature_y = kNaN;        // A, B [1/m]
-  double fn = kNaN;                                     // [N]
-  double g1 = 82e9, nu1 = 0.28, g2 = 82e9, nu2 = 0.28;  // [Pa], [-] (steel by default)
-  double mu = kNaN;
-  double xi_x = 0.0, xi_y = 0.0, phi = 0.0;
-  std::string model = "fastsim";
-  double k11 = 1.0, k22 = 1.0, k23 = kNaN, k33 = 1.0;  // K23 unset: K23 = K22 (Toumi 4.2.4)
-  // K_ij table (overrides k11..k33): looked up at table_point, normal_force and peak_pressure
-  // axes filled from the patch when not given.
-  std::shared_ptr<const fc::KijTable> table;
-  std::map<std::string, double> table_point;
-};
-
-struct EvalOutput {
-  fc::ContactPatch patch;
-  fc::NormalProblem gap;  // the quadratic gap A x^2 + B y^2, for models that need it (MIM)
-  fc::TangentialSolution forces;
-  fc::KalkerCoefficients c;  // C_ij used (with K_ij applied), table or fit per the options
-};
-
-// Elliptic patch from A, B (Hertz) or from a, b (curvatures recovered from Hertz so that
-// VOCO's fits in A/B can be used).
-fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) {
-  const bool have_ab = std::isfinite(in.a) || std::isfinite(in.b);
-  const bool have_curv = std::isfinite(in.curvature_x) || std::isfinite(in.curvature_y);
-  if (have_ab == have_curv) {
-    throw std::invalid_argument(
-        "give either --a and --b (semi-axes [m]) or --curvature-x and --curvature-y (A, B [1/m])");
-  }
-  if (!(in.fn > 0.0))
-    throw std::invalid_argument(fmt::format("--fn: must be > 0 [N], got {}", in.fn));
-  if (have_curv) {
-    return fc::hertz_patch(
-        fc::hertz_solve(in.curvature_x, in.curvature_y, in.fn, m.contact_modulus),
-        in.curvature_x, in.curvature_y);
-  }
-  if (!(in.a > 0.0) || !(in.b > 0.0)) {
-    throw std::invalid_argument(
-        fmt::format("--a, --b: must both be > 0 [m], got {}, {}", in.a, in.b));
-  }
-  // Hertz inverse: the curvatures A, B that give this ellipse under F_n.
-  const fc::mim::HertzGap g = fc::mim::hertz_gap_for_ellipse(in.a, in.b, in.fn, m.contact_modulus);
-  return fc::elliptic_patch(in.a, in.b, in.fn, g.curvature_x, g.curvature_y);
-}
-
-EvalOutput evaluate(const EvalInput& in, const fc::TangentialModel& model,
-                    fc::CoefficientSource source) {
-  const fc::Material body1{in.g1, in.nu1}, body2{in.g2, in.nu2};
-  body1.validate("--g1/--nu1");
-  body2.validate("--g2/--nu2");
-  EvalOutput out;
-  out.patch = make_patch(in, fc::combine(body1, body2));
-  out.gap.curvature_x = out.patch.curvature_x;
-  out.gap.curvature_y = out.patch.curvature_y;
-  out.gap.normal_force = out.patch.normal_force;
-  out.gap.body1 = body1;
-  out.gap.body2 = body2;
-  fc::TangentialProblem p;
-  p.gap = &out.gap;
-  p.patch = &out.patch;
-  p.creepage = {in.xi_x, in.xi_y, in.phi};
-  p.friction = in.mu;
-  p.body1 = body1;
-  p.body2 = body2;
-  p.reduction = {in.k11, in.k22, std::isnan(in.k23) ? in.k22 : in.k23, in.k33};
-  if (in.table) p.reduction = in.table->at_patch(out.patch, in.table_point);
-  if (!(in.mu >= 0.0))
-    throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
-  out.forces = model.solve(p);
-  scenarios::require_finite_forces(out.forces, fmt::format("model '{}'", in.model));
-  out.c = fc::linear_creep_stiffness(p, source).c;
-  return out;
-}
+using scenarios::EvalInput;
+using scenarios::EvalOutput;
 
 fc::ModelOptions parse_options(const std::vector<std::string>& items) {
   fc::ModelOptions o;
@@ -141,66 +64,6 @@ void print_json(const EvalInput& in, const EvalOutput& out) {
   j["units"] = "SI (m, N, Pa, N m)";
   j["convention"] = "forces and moment on the wheel from the rail";
   fmt::print("{}\n", j.dump(2));
-}
-
-// --batch: CSV with a header on stdin; each row overrides the command-line values.
-int run_batch(const EvalInput& defaults, const fc::ModelOptions& options,
-              fc::CoefficientSource source) {
-  scenarios::CsvBatchReader reader(std::cin, "--batch: stdin");
-  const std::map<std::string, double EvalInput::*> numeric = {
-      {"a", &EvalInput::a},
-      {"b", &EvalInput::b},
-      {"curvature_x", &EvalInput::curvature_x},
-      {"curvature_y", &EvalInput::curvature_y},
-      {"fn", &EvalInput::fn},
-      {"g1", &EvalInput::g1},
-      {"nu1", &EvalInput::nu1},
-      {"g2", &EvalInput::g2},
-      {"nu2", &EvalInput::nu2},
-      {"mu", &EvalInput::mu},
-      {"xi_x", &EvalInput::xi_x},
-      {"xi_y", &EvalInput::xi_y},
-      {"phi", &EvalInput::phi},
-      {"spin", &EvalInput::phi},
-      {"k11", &EvalInput::k11},
-      {"k22", &EvalInput::k22},
-      {"k23", &EvalInput::k23},
-      {"k33", &EvalInput::k33}};
-  std::set<std::string> allowed = {"model"};
-  for (const auto& kv : numeric) allowed.insert(kv.first);
-  reader.require_known_columns(allowed);
-  const std::vector<std::string>& header = reader.header();
-  std::map<std::string, std::unique_ptr<fc::TangentialModel>> models;
-  fmt::print(
-      "row,model,semi_axis_x,semi_axis_y,peak_pressure,force_x,force_y,moment_z,adhesion_"
-      "fraction\n");
-  int row = 0;
-  std::vector<std::string> cells;
-  while (reader.next(cells)) {
-    EvalInput in = defaults;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (cells[i].empty()) continue;
-      if (header[i] == "model") {
-        in.model = cells[i];
-        continue;
-      }
-      in.*(numeric.at(header[i])) = reader.number(cells, i);
-    }
-    try {
-      auto it = models.find(in.model);
-      if (it == models.end())
-        it = models.emplace(in.model, fc::make_tangential_model(in.model, options)).first;
-      const EvalOutput out = evaluate(in, *it->second, source);
-      fmt::print("{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", row, in.model,
-                 out.patch.semi_axis_x, out.patch.semi_axis_y, out.patch.peak_pressure,
-                 out.forces.force_x, out.forces.force_y, out.forces.moment_z,
-                 out.forces.adhesion_fraction);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(reader.located(e.what()));
-    }
-    ++row;
-  }
-  return kExitOk;
 }
 
 std::string output_path(const std::string& dir, const std::string& name,
@@ -274,9 +137,13 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       }
       const fc::CoefficientSource source = fc::coefficient_source_from_name(
           fc::option_string(options, "coefficients", "kalker_table"));
-      if (*batch) return run_batch(input, options, source);
+      if (*batch) {
+        scenarios::evaluate_contact_batch(std::cin, "--batch: stdin", input, options, source,
+                                          std::cout);
+        return kExitOk;
+      }
       const auto model = fc::make_tangential_model(input.model, options);
-      print_json(input, evaluate(input, *model, source));
+      print_json(input, scenarios::evaluate_contact(input, *model, source));
       return kExitOk;
     };
   });

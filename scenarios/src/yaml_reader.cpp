@@ -3,8 +3,11 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -163,98 +166,328 @@ std::pair<int, int> position_of(const YAML::Node& node) {
 
 namespace {
 
-// Inputs on which yaml-cpp 0.7 loops without end, allocating: a document whose first token is
-// ',' (after comments, blank lines, a '---' marker and node properties: tags, anchors), and a document whose root block
-// collection starts at column r with a later line starting with ',' left of column r (a mapping)
-// or at most at column r (a list). None is a ferrodyn file (whose root is a mapping at column 0).
-// Returns the line (1-based) to name, or 0, and the message.
-struct HangingInput {
+// A byte YAML does not allow in a stream (C0 controls other than tab, line feed and carriage
+// return, and DEL): yaml-cpp 0.7 takes a NUL for a UTF-16/32 marker and reads the rest as other
+// characters (looping without end on some). Returns the line and column (1-based) of the first,
+// or {0, 0}, and the byte.
+struct ControlByte {
   int line = 0;
-  const char* message = "";
+  int column = 0;
+  unsigned char byte = 0;
 };
 
-// Line (1-based) of a ',' that follows only node properties (tags '!...', anchors '&...'),
-// blanks and comments from `pos` (a document's first token) on, or 0.
-int comma_after_properties(const std::string& text, std::size_t pos, int line_no) {
-  while (pos < text.size()) {
-    const char c = text[pos];
+ControlByte first_control_byte(const std::string& text) {
+  int line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
     if (c == '\n') {
-      ++line_no;
-      ++pos;
-    } else if (c == ' ' || c == '\t' || c == '\r') {
-      ++pos;
-    } else if (c == '#') {
-      pos = std::min(text.find('\n', pos), text.size());
-    } else if (c == '!' || c == '&') {
-      pos = std::min(text.find_first_of(" \t\r\n,[]{}", pos), text.size());
-    } else {
-      return c == ',' ? line_no : 0;
+      ++line;
+      line_start = i + 1;
+    } else if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+      return {line, static_cast<int>(i - line_start) + 1, c};
     }
-  }
-  return 0;
-}
-HangingInput hanging_flow_entry(const std::string& text) {
-  bool at_document_start = true;
-  // The document's first content line: its line, the column of its first token, and whether
-  // that token opens a block list.
-  int root_line = 0;
-  std::size_t root_column = 0;
-  bool root_list = false;
-  int line_no = 0;
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    const std::size_t end = std::min(text.find('\n', pos), text.size());
-    const std::string_view line(text.data() + pos, end - pos);
-    const std::size_t line_start = pos;
-    ++line_no;
-    pos = end + 1;
-    const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos || line[first] == '#') continue;
-    if (line.substr(0, 3) == "---" || line.substr(0, 3) == "...") {
-      at_document_start = true;
-      root_line = 0;
-      root_column = 0;
-      root_list = false;
-      const std::size_t rest = line.find_first_not_of(" \t\r", 3);
-      if (rest == std::string_view::npos || line[rest] == '#') continue;
-      if (const int comma = comma_after_properties(text, line_start + rest, line_no);
-          comma > 0) {
-        return {comma, "malformed YAML: a document cannot start with ','"};
-      }
-      at_document_start = false;
-      continue;
-    }
-    if (line[0] == '%') continue;  // directive
-    if (at_document_start) {
-      if (const int comma = comma_after_properties(text, line_start + first, line_no); comma > 0) {
-        return {comma, "malformed YAML: a document cannot start with ','"};
-      }
-      root_line = line_no;
-      root_column = first;
-      root_list = line[first] == '-' && (first + 1 == line.size() || line[first + 1] == ' ' ||
-                                         line[first + 1] == '\t' || line[first + 1] == '\r');
-    } else if (line[first] == ',' && (first < root_column || (root_list && first == root_column))) {
-      if (root_list) {
-        return {root_line, "expected a mapping of keys at the top level, got a list"};
-      }
-      return {line_no, "malformed YAML: a line cannot start with ',' left of the document's "
-                       "first key"};
-    }
-    at_document_start = false;
   }
   return {};
 }
 
+// yaml-cpp 0.7 loops without end, allocating, on inputs holding a ',' token outside every flow
+// collection ([ ] or { }): a document starting with ',', a ',' line after a root list, after an
+// anchored, tagged or quoted root scalar, after a root flow collection, ... Such a ',' is never
+// valid YAML: it separates entries only inside a flow collection, and a plain scalar cannot begin
+// with it. One scan of the text names the first one before yaml-cpp sees the text. It follows
+// yaml-cpp's tokens: flow depth, quoted scalars (a quote opens one wherever a token starts, even
+// right after another scalar), comments, tags (yaml-cpp's tag characters), anchors, aliases,
+// block scalars and the next lines of a multi-line plain scalar (whose quotes and brackets are
+// text). Where a line may continue a plain scalar or start a token, it takes the reading that
+// sees more commas.
+// Known deviation: a ',' or '? ' starting a line of a multi-line plain scalar (valid YAML) is
+// refused too; the message says to quote such a value.
+struct MisplacedComma {
+  int line = 0;  // 1-based; 0: none
+  int column = 0;
+  const char* message = "";
+  const char* key = "(document)";
+};
+
+class FlowEntryScan {
+ public:
+  explicit FlowEntryScan(const std::string& text) : text_(text) {}
+
+  MisplacedComma run() {
+    int line_no = 0;
+    // A UTF-8 byte order mark is not part of the text (yaml-cpp drops it).
+    const std::size_t start = text_.rfind("\xef\xbb\xbf", 0) == 0 ? 3 : 0;
+    for (std::size_t pos = start; pos <= text_.size();) {
+      const std::size_t end = std::min(text_.find('\n', pos), text_.size());
+      const std::string_view line(text_.data() + pos, end - pos);
+      pos = end + 1;
+      ++line_no;
+      if (const MisplacedComma m = scan_line(line, line_no); m.line > 0) return m;
+    }
+    return {};
+  }
+
+ private:
+  enum class Expect { kNode, kInPlain, kAfterNode };
+
+  static bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+  MisplacedComma reject(int line_no, std::size_t column) const {
+    if (root_list_) {
+      return {root_line_, 1, "expected a mapping of keys at the top level, got a list"};
+    }
+    return {line_no, static_cast<int>(column) + 1,
+            "malformed YAML: ',' outside [ ] or { } (a value cannot begin with ','; quote it)"};
+  }
+
+  // yaml-cpp 0.7 also loops on a '?' key indicator after a root scalar with a tag or anchor;
+  // ferrodyn keys are plain words, so every explicit key is refused where it stands.
+  static MisplacedComma reject_explicit_key(int line_no, std::size_t column) {
+    return {line_no, static_cast<int>(column) + 1,
+            "a key must be a plain word, got '? ' (complex keys written with '? ' are not "
+            "supported)",
+            "(key)"};
+  }
+
+  MisplacedComma scan_line(std::string_view line, int line_no) {
+    const std::size_t indent = line.find_first_not_of(" \t\r");
+    const bool empty = indent == std::string_view::npos;
+    // Content of a block scalar: blank lines and lines indented more than its owner.
+    if (block_owner_ >= 0) {
+      if (empty || static_cast<long>(indent) > block_owner_) return {};
+      block_owner_ = -1;
+    }
+    if (empty) return {};
+    std::size_t i = 0;
+    if (quote_ == 0 && depth_ == 0) {
+      if (line[indent] == '#') return {};
+      if (indent == 0 && line[0] == '%') return {};  // directive
+      const std::string_view marker = line.substr(0, 3);
+      const long continues = plain_continuation_;
+      plain_continuation_ = -1;
+      i = indent;
+      if (indent == 0 && (marker == "---" || marker == "...") &&
+          (line.size() == 3 || blank(line[3]))) {
+        at_document_start_ = true;
+        root_list_ = false;
+        i = 3;
+      } else if (continues >= 0 && static_cast<long>(indent) >= continues) {
+        // More text of a multi-line plain scalar: quotes and brackets in it are text.
+        if (line[indent] == ',') return reject(line_no, indent);
+        if (line[indent] == '?' && (indent + 1 >= line.size() || blank(line[indent + 1]))) {
+          return reject_explicit_key(line_no, indent);
+        }
+        expect_ = Expect::kInPlain;
+        node_column_ = static_cast<long>(indent);
+        return scan_tokens(line, line_no, i);
+      }
+      expect_ = Expect::kNode;
+      owner_ = static_cast<long>(indent);
+      owned_ = false;
+    } else if (quote_ == 0) {
+      i = indent;
+    }
+    return scan_tokens(line, line_no, i);
+  }
+
+  // Scans `line` from `i` on, in the state the previous lines left.
+  MisplacedComma scan_tokens(std::string_view line, int line_no, std::size_t i) {
+    for (; i < line.size(); ++i) {
+      const char c = line[i];
+      if (quote_ != 0) {
+        if (quote_ == '"' && c == '\\') {
+          ++i;
+        } else if (c == quote_) {
+          if (quote_ == '\'' && i + 1 < line.size() && line[i + 1] == '\'') {
+            ++i;
+          } else {
+            quote_ = 0;
+            expect_ = Expect::kAfterNode;
+          }
+        }
+        continue;
+      }
+      if (blank(c)) continue;
+      // A comment: at a token's start (as yaml-cpp's scanner reads it), or after a blank.
+      if (c == '#' && (expect_ != Expect::kInPlain || i == 0 || blank(line[i - 1]))) break;
+      const bool next_blank = i + 1 >= line.size() || blank(line[i + 1]);
+      if (expect_ == Expect::kNode && depth_ == 0 && at_document_start_) {
+        at_document_start_ = false;
+        root_list_ = c == '-' && next_blank;
+        root_line_ = line_no;
+      }
+      if (c == ',') {
+        if (depth_ == 0 && expect_ != Expect::kInPlain) return reject(line_no, i);
+        if (depth_ > 0) expect_ = Expect::kNode;
+        continue;
+      }
+      if (depth_ > 0) {
+        // Flow context: brackets and ',' are indicators wherever they stand; ':' when a blank
+        // or an indicator follows, or right after a quoted scalar ("a":1).
+        if (c == '[' || c == '{') {
+          ++depth_;
+          expect_ = Expect::kNode;
+        } else if (c == ']' || c == '}') {
+          --depth_;
+          expect_ = depth_ == 0 ? Expect::kAfterNode : Expect::kInPlain;
+        } else if (c == ':' && (next_blank || expect_ == Expect::kAfterNode ||
+                                std::string_view(",[]{}").find(line[i + 1]) !=
+                                    std::string_view::npos)) {
+          expect_ = Expect::kNode;
+        } else if (expect_ != Expect::kInPlain && (c == '\'' || c == '"')) {
+          quote_ = c;
+        } else if (expect_ == Expect::kNode && !(c == '?' && next_blank)) {
+          skip_property(line, i, c);
+        }
+        continue;
+      }
+      if (expect_ != Expect::kNode) {
+        // Block context, after a scalar: ": " starts the value. Inside a plain scalar the rest
+        // of the line is its text; after a quoted scalar, flow collection or alias, the next
+        // character starts a token, as it does for yaml-cpp's scanner (invalid YAML, but a ','
+        // or a quote there must be seen).
+        if (c == ':' && next_blank) {
+          expect_ = Expect::kNode;
+          owner_ = node_column_;
+          owned_ = true;
+          continue;
+        }
+        if (expect_ == Expect::kInPlain) continue;
+        expect_ = Expect::kNode;
+      }
+      if (c == '?' && next_blank) return reject_explicit_key(line_no, i);
+      if ((c == '-' || c == ':') && next_blank) {
+        owner_ = static_cast<long>(i);  // block list entry or empty key
+        owned_ = true;
+      } else if (c == '|' || c == '>') {
+        block_owner_ = owner_;
+        return {};
+      } else if (c == '\'' || c == '"') {
+        quote_ = c;
+        node_column_ = static_cast<long>(i);
+      } else if (c == '[' || c == '{') {
+        ++depth_;
+      } else {
+        node_column_ = static_cast<long>(i);
+        skip_property(line, i, c);
+      }
+    }
+    // A plain scalar running to the line's end may go on over the next lines: those indented
+    // past its key or list entry (any, for a scalar with neither on its line: the cautious side).
+    if (quote_ == 0 && depth_ == 0 && expect_ == Expect::kInPlain) {
+      plain_continuation_ = owned_ ? owner_ + 1 : 0;
+    }
+    return {};
+  }
+
+  // Characters of a tag after its '!' (yaml-cpp's: word characters, "#;/?:@&=+$_.~*'()",
+  // '%' escapes and the '!' ending a handle); a verbatim tag "!<...>" runs to its '>'.
+  static bool tag_char(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+           std::string_view("-#;/?:@&=+$_.~*'()%!").find(c) != std::string_view::npos;
+  }
+
+  // At a node's first character `c`: skips an anchor, tag or alias token (the node still
+  // starts after an anchor or tag; an alias is the whole node), else a plain scalar begins.
+  void skip_property(std::string_view line, std::size_t& i, char c) {
+    if (c == '!') {
+      if (i + 1 < line.size() && line[i + 1] == '<') {
+        while (i + 1 < line.size() && line[i + 1] != '>') ++i;
+      } else {
+        while (i + 1 < line.size() && tag_char(line[i + 1])) ++i;
+      }
+    } else if (c == '&' || c == '*') {
+      while (i + 1 < line.size() && !blank(line[i + 1]) &&
+             std::string_view(",[]{}").find(line[i + 1]) == std::string_view::npos) {
+        ++i;
+      }
+      if (c == '*') expect_ = Expect::kAfterNode;
+    } else {
+      expect_ = Expect::kInPlain;
+    }
+  }
+
+  const std::string& text_;
+  int depth_ = 0;                 // open flow collections
+  char quote_ = 0;                // '\'' or '"' inside a quoted scalar
+  Expect expect_ = Expect::kNode;
+  long owner_ = 0;                // column of the node owning what follows (key, '-')
+  long node_column_ = 0;          // column where the last scalar began
+  bool owned_ = false;            // owner_ is a key or '-' of this line (not its indentation)
+  long block_owner_ = -1;         // inside a block scalar: its owner's column; else -1
+  long plain_continuation_ = -1;  // a plain scalar may go on at lines indented this much; or -1
+  bool at_document_start_ = true;
+  bool root_list_ = false;        // the document's root is a block list
+  int root_line_ = 0;
+};
+
+// Counts a stream's documents without building them, up to kMaxDocuments, and keeps where the
+// second one starts. yaml-cpp 0.7 reads a token that no node can take (e.g. a stray ',') as the
+// start of one more empty document, again and again: YAML::LoadAll then never ends. A bounded
+// count ends, and a ferrodyn file holds one document.
+constexpr int kMaxDocuments = 16;
+
+class DocumentCounter : public YAML::EventHandler {
+ public:
+  [[nodiscard]] int count() const { return count_; }
+  [[nodiscard]] const YAML::Mark& second() const { return second_; }
+
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (++count_ == 2) second_ = mark;
+  }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
+  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
+  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                const std::string&) override {
+    node(mark);
+  }
+  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {
+    node(mark);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {
+    node(mark);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  // The second document is named by its first node where it has one.
+  void node(const YAML::Mark& mark) {
+    if (count_ == 2 && !second_node_) {
+      second_ = mark;
+      second_node_ = true;
+    }
+  }
+
+  int count_ = 0;
+  YAML::Mark second_ = YAML::Mark::null_mark();
+  bool second_node_ = false;
+};
+
 }  // namespace
 
 YamlFile parse_yaml_text(const std::string& text, const std::string& path) {
-  if (const HangingInput h = hanging_flow_entry(text); h.line > 0) {
-    throw YamlInputError(path, h.line, 1, "(document)", h.message);
+  if (const ControlByte b = first_control_byte(text); b.line > 0) {
+    throw YamlInputError(path, b.line, b.column, "(document)",
+                         fmt::format("byte 0x{:02x} is not text: a ferrodyn file is UTF-8 text, "
+                                     "without control characters other than tab and line ends",
+                                     b.byte));
+  }
+  if (const MisplacedComma m = FlowEntryScan(text).run(); m.line > 0) {
+    throw YamlInputError(path, m.line, m.column, m.key, m.message);
   }
   YamlFile f{path, text, {}};
-  std::vector<YAML::Node> documents;
+  DocumentCounter documents;
   try {
-    documents = YAML::LoadAll(text);
+    std::istringstream in(text);
+    YAML::Parser parser(in);
+    while (documents.count() < kMaxDocuments && parser.HandleNextDocument(documents)) {
+    }
+    if (documents.count() <= 1) f.root = YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     throw YamlInputError(path, e.mark.line + 1, e.mark.column + 1, "(document)",
                          fmt::format("nested deeper than {} levels; ferrodyn input files nest a "
@@ -264,14 +497,14 @@ YamlFile parse_yaml_text(const std::string& text, const std::string& path) {
     throw YamlInputError(path, e.mark.line + 1, e.mark.column + 1, "(document)",
                          fmt::format("malformed YAML: {}", e.msg));
   }
-  if (documents.size() > 1) {
-    const auto [l, c] = position_of(documents[1]);
-    throw YamlInputError(path, l, c, "(document)",
-                         fmt::format("{} YAML documents in one file (separated by '---'); a "
+  if (documents.count() > 1) {
+    const YAML::Mark& m = documents.second();
+    throw YamlInputError(path, m.line + 1, m.column + 1, "(document)",
+                         fmt::format("{}{} YAML documents in one file (separated by '---'); a "
                                      "ferrodyn file holds exactly one",
-                                     documents.size()));
+                                     documents.count() >= kMaxDocuments ? "at least " : "",
+                                     documents.count()));
   }
-  if (!documents.empty()) f.root = documents.front();
   if (!f.root.IsMap()) {
     throw YamlInputError(
         path, 1, 1, "(document)",

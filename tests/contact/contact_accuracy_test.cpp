@@ -12,27 +12,16 @@
 #include "ferro/contact/mim_tangential_model.hpp"
 #include "ferro/contact/saturation_laws.hpp"
 #include "ferro/contact/tangential_model.hpp"
+#include "reference_tangential_case.hpp"
 
 namespace fc = ferro::contact;
 
 namespace {
 
-// The reference set's material and load: F_n = 82 kN, G = 82 GPa, nu = 0.28, mu = 0.3.
-constexpr double kFn = 82.0e3, kMu = 0.3, kG = 82.0e9, kNu = 0.28;
-const fc::Material kMat = fc::Material::from_young(2.0 * kG * (1.0 + kNu), kNu);
-
-struct Case {
-  fc::ContactPatch patch;
-  fc::TangentialProblem problem;
-  Case(double a, double b, fc::Creepage c) {
-    patch = fc::elliptic_patch(a, b, kFn);
-    problem.patch = &patch;
-    problem.creepage = c;
-    problem.friction = kMu;
-    problem.body1 = problem.body2 = kMat;
-  }
-  Case(const Case&) = delete;
-};
+// The reference set (support/reference_tangential_case.hpp).
+constexpr double kFn = ferro::test::kRefNormalForce, kMu = ferro::test::kRefFriction;
+const fc::Material kMat = ferro::test::reference_material();
+using Case = ferro::test::ReferenceCase;
 
 fc::TangentialSolution solve(const std::string& model, const fc::ModelOptions& o,
                              const fc::TangentialProblem& p) {

@@ -10,26 +10,16 @@
 #include <utility>
 
 #include "ferro/contact/tangential_model.hpp"
+#include "reference_tangential_case.hpp"
 
 namespace fc = ferro::contact;
 
 namespace {
 
-constexpr double kFn = 82.0e3, kMu = 0.3, kG = 82.0e9, kNu = 0.28;
-const fc::Material kMat = fc::Material::from_young(2.0 * kG * (1.0 + kNu), kNu);
-
-struct Case {
-  fc::ContactPatch patch;
-  fc::TangentialProblem problem;
-  Case(double a, double b, fc::Creepage c) {
-    patch = fc::elliptic_patch(a, b, kFn);
-    problem.patch = &patch;
-    problem.creepage = c;
-    problem.friction = kMu;
-    problem.body1 = problem.body2 = kMat;
-  }
-  Case(const Case&) = delete;
-};
+// The reference set (support/reference_tangential_case.hpp).
+constexpr double kFn = ferro::test::kRefNormalForce, kMu = ferro::test::kRefFriction,
+                 kG = ferro::test::kRefShearModulus, kNu = ferro::test::kRefPoisson;
+using Case = ferro::test::ReferenceCase;
 
 fc::TangentialSolution solve(const fc::ModelOptions& o, const fc::TangentialProblem& p) {
   return fc::make_tangential_model("fastrip", o)->solve(p);

@@ -41,12 +41,12 @@ const BadScene kBadScenes[] = {
     {"vehicle_curve_without_radius", 9, "track.sections[2].radius", "missing required key"},
     {"vehicle_bad_contact_override", 8, "contact.tangential_options", "mz"},
     {"duplicate_key", 19, "simulation.speed", "first given at line 18, again at line 19"},
-    {"complex_key", 17, "(key)", "a key must be a plain word, got a list"},
+    {"complex_key", 17, "(key)", "a key must be a plain word, got '? '"},
     {"second_document", 27, "(document)", "2 YAML documents in one file"},
     {"deep_nesting", 20, "(document)", "nested deeper than"},
     {"include_directory", 12, "track", "is a directory"},
     {"include_name_too_long", 12, "track", "File name too long"},
-    {"leading_comma", 1, "(document)", "cannot start with ','"},
+    {"leading_comma", 1, "(document)", "',' outside [ ] or { }"},
 };
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};

@@ -10,13 +10,14 @@
 #include "ferro/contact/mim_table.hpp"
 #include "ferro/contact/mim_tangential_model.hpp"
 #include "ferro/contact/tangential_model.hpp"
+#include "reference_tangential_case.hpp"
 
 namespace fc = ferro::contact;
 
 namespace {
 
-constexpr double kFn = 82.0e3, kMu = 0.3, kG = 82.0e9, kNu = 0.28;
-const fc::Material kMat = fc::Material::from_young(2.0 * kG * (1.0 + kNu), kNu);
+// The reference set (support/reference_tangential_case.hpp).
+constexpr double kFn = ferro::test::kRefNormalForce, kMu = ferro::test::kRefFriction;
 
 const fc::MimTable& default_table() {
   static const fc::MimTable t = [] {
@@ -33,12 +34,8 @@ struct Forces {
 
 // Table and direct MIM (the table's own grid) in mu F_n and mu F_n c.
 void compare(double a, double b, fc::Creepage c, Forces& table, Forces& direct) {
-  const fc::ContactPatch patch = fc::elliptic_patch(a, b, kFn);
-  fc::TangentialProblem p;
-  p.patch = &patch;
-  p.creepage = c;
-  p.friction = kMu;
-  p.body1 = p.body2 = kMat;
+  const ferro::test::ReferenceCase k(a, b, c);
+  const fc::TangentialProblem& p = k.problem;
   const double s = kMu * kFn, sc = s * std::sqrt(a * b);
   const fc::TangentialSolution t = fc::MimTableModel(default_table()).solve(p);
   fc::MimModelOptions direct_options;

@@ -1,0 +1,58 @@
+#pragma once
+// One Hertzian evaluation of a tangential contact model, alone or as a CSV batch of cases
+// (`ferrodyn contact eval [--batch]`). Forces and moment are those of the rail on the wheel
+// (F_x = -G a b C11 xi_x in the linear range); SI units throughout.
+
+#include <istream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/tangential_model.hpp"
+
+namespace ferro::scenarios {
+
+/// One case. The patch is given either by its semi-axes (a, b) or by the relative curvatures
+/// (A, B), never both.
+struct EvalInput {
+  static constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+  double a = kUnset, b = kUnset;                      ///< semi-axes [m]
+  double curvature_x = kUnset, curvature_y = kUnset;  ///< A, B [1/m]
+  double fn = kUnset;                                 ///< normal load [N]
+  double g1 = 82e9, nu1 = 0.28, g2 = 82e9, nu2 = 0.28;  ///< [Pa], [-] (steel by default)
+  double mu = kUnset;                                   ///< friction coefficient [-]
+  double xi_x = 0.0, xi_y = 0.0, phi = 0.0;  ///< creepages [-], [-], spin [1/m]
+  std::string model = "fastsim";             ///< tangential model name (make_tangential_model)
+  double k11 = 1.0, k22 = 1.0, k23 = kUnset, k33 = 1.0;  ///< K23 unset: K23 = K22 (Toumi 4.2.4)
+  /// K_ij table (overrides k11..k33): looked up at table_point, the normal_force and
+  /// peak_pressure axes filled from the patch when not given.
+  std::shared_ptr<const contact::KijTable> table;
+  std::map<std::string, double> table_point;
+};
+
+struct EvalOutput {
+  contact::ContactPatch patch;
+  contact::NormalProblem gap;  ///< the quadratic gap A x^2 + B y^2, for models that need it (MIM)
+  contact::TangentialSolution forces;
+  contact::KalkerCoefficients c;  ///< C_ij used (K_ij applied), table or fit per `source`
+};
+
+/// Solves one case with `model`. Throws std::invalid_argument naming the option (--a, --fn, ...)
+/// for bad input, or when the model's result is not finite.
+[[nodiscard]] EvalOutput evaluate_contact(const EvalInput& in,
+                                          const contact::TangentialModel& model,
+                                          contact::CoefficientSource source);
+
+/// CSV batch: a header naming EvalInput's fields (a, b, curvature_x, curvature_y, fn, g1, nu1,
+/// g2, nu2, mu, xi_x, xi_y, phi or spin, k11, k22, k23, k33, model), then one case per row; an
+/// empty cell keeps the value of `defaults`. Writes a header and one CSV row per case to `out`
+/// as each is solved. Throws std::invalid_argument located as "<input_name>:<line>: ...".
+void evaluate_contact_batch(std::istream& in, const std::string& input_name,
+                            const EvalInput& defaults, const contact::ModelOptions& options,
+                            contact::CoefficientSource source, std::ostream& out);
+
+}  // namespace ferro::scenarios
