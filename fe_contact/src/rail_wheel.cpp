@@ -34,6 +34,17 @@ RowSpan rows(const contact::mim::Grid& g) {
   return {g.y0 - 0.5 * g.dy, g.y0 + (g.ny - 0.5) * g.dy};
 }
 
+// Mesh spacing at the loaded column of a body: element sizes hx, hy (grid element over the
+// level's subdivisions), the half-length `near` kept at that size along s, the grid's rows.
+struct LoadedColumn {
+  double hx, hy, near;
+  RowSpan r;
+};
+LoadedColumn loaded_column(const contact::mim::Grid& g, const FeMeshLevel& lv) {
+  return {g.dx / lv.subdivisions, g.dy / lv.subdivisions, (lv.near_columns + 0.5) * g.dx,
+          rows(g)};
+}
+
 // Crown height above the crown top (<= 0) of the 60E1 head at lateral position y, from the
 // profile's arcs, held constant beyond |y| = 30 mm.
 class Crown {
@@ -104,9 +115,7 @@ StructuredBody rail_body(const RailSpec& spec) {
   spec.validate();
   const contact::mim::Grid& g = spec.grid;
   const FeMeshLevel& lv = spec.mesh;
-  const double hx = g.dx / lv.subdivisions, hy = g.dy / lv.subdivisions;
-  const double near = (lv.near_columns + 0.5) * g.dx;
-  const RowSpan r = rows(g);
+  const auto [hx, hy, near, r] = loaded_column(g, lv);
   const double foot_top = -(spec.height - spec.foot_thickness);
   StructuredBody b;
   b.s = graded_lines(-near, near, hx, lv.growth, -0.5 * spec.length, 0.5 * spec.length);
@@ -138,9 +147,7 @@ StructuredBody wheel_body(const WheelSpec& spec) {
   spec.validate();
   const contact::mim::Grid& g = spec.grid;
   const FeMeshLevel& lv = spec.mesh;
-  const double hx = g.dx / lv.subdivisions, hy = g.dy / lv.subdivisions;
-  const double near = (lv.near_columns + 0.5) * g.dx;
-  const RowSpan r = rows(g);
+  const auto [hx, hy, near, r] = loaded_column(g, lv);
   const double R = spec.radius, half_turn = std::numbers::pi * R;
   const double web_lo = -0.5 * spec.web_thickness, web_hi = 0.5 * spec.web_thickness;
   const double web_c = 0.5 * (spec.rim_field_side - spec.rim_flange_side);

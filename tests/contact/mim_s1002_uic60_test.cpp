@@ -56,32 +56,6 @@ CentredCase centred_case_gap() {
   return c;
 }
 
-// Connected components of the contact area (4-neighbourhood).
-int components(const fm::Grid& grid, const fm::Field& p) {
-  std::vector<int> label(grid.size(), 0);
-  int n = 0;
-  for (std::size_t k0 = 0; k0 < grid.size(); ++k0) {
-    if (p[k0] <= 0.0 || label[k0] != 0) continue;
-    ++n;
-    std::vector<std::size_t> stack{k0};
-    label[k0] = n;
-    while (!stack.empty()) {
-      const std::size_t k = stack.back();
-      stack.pop_back();
-      const int ix = static_cast<int>(k % grid.nx), iy = static_cast<int>(k / grid.nx);
-      const int nb[4][2] = {{ix - 1, iy}, {ix + 1, iy}, {ix, iy - 1}, {ix, iy + 1}};
-      for (const auto& q : nb) {
-        if (q[0] < 0 || q[0] >= grid.nx || q[1] < 0 || q[1] >= grid.ny) continue;
-        const std::size_t m = grid.index(q[0], q[1]);
-        if (p[m] > 0.0 && label[m] == 0) {
-          label[m] = n;
-          stack.push_back(m);
-        }
-      }
-    }
-  }
-  return n;
-}
 
 }  // namespace
 
@@ -126,7 +100,7 @@ TEST(mim_s1002_uic60, thesis_centred_case_two_lobes) {
               "%d tangential products, %d components\n",
               r.approach * 1e3, r.normal_force, r.force_x, r.force_y, r.moment_z, pmax / 1e6,
               in_contact * c.grid.element_area() * 1e6, double(stick) / in_contact,
-              r.tangential_matvecs, components(c.grid, r.pressure));
+              r.tangential_matvecs, fm::count_positive_regions(c.grid, r.pressure));
   for (int iy : peaks) std::printf("  lobe: line-load maximum at s = %.3f mm, %.1f N/mm\n",
                                    c.grid.y(iy) * 1e3, q[iy] * 1e-3);
   EXPECT_NEAR(r.approach / kApproachThesis, 1.0, kTolApproach);
@@ -136,7 +110,7 @@ TEST(mim_s1002_uic60, thesis_centred_case_two_lobes) {
   double dip = qmax;
   for (int iy = peaks[0]; iy <= peaks[1]; ++iy) dip = std::min(dip, q[iy]);
   EXPECT_LT(dip, (1.0 - kProminence) * std::min(q[peaks[0]], q[peaks[1]]));
-  EXPECT_EQ(components(c.grid, r.pressure), 1);  // connected lobes
+  EXPECT_EQ(fm::count_positive_regions(c.grid, r.pressure), 1);  // connected lobes
   // Patch inside the sampled window (the thesis's grid covers it): no pressure on the border.
   for (int iy = 0; iy < c.grid.ny; ++iy) {
     EXPECT_EQ(r.pressure[c.grid.index(0, iy)], 0.0);

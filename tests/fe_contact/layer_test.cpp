@@ -10,24 +10,16 @@
 #include "ferro/contact/mim/influence_operator.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"
+#include "thesis_hertz_case.hpp"
 
 using namespace ferro;
 using namespace ferro::fe_contact;
 
 namespace {
 
-// Thesis chapter 3 case (Toumi 2016 Tables 3.1, 3.7): 7.5 t wheel load, Hertz a = 6.66 mm,
-// b = 5.05 mm, E = 210 GPa, nu = 0.28, mu = 0.2.
+// Thesis chapter 3 case (tests/support/thesis_hertz_case.hpp), default margin.
 HertzCase thesis_case(int elements_minor = 24) {
-  HertzCase c;
-  c.reference_force = 7.5e3 * 9.81;
-  c.reference_semi_axis_x = 6.66e-3;
-  c.reference_semi_axis_y = 5.05e-3;
-  c.normal_force = c.reference_force;
-  c.body = contact::Material::from_young(210.0e9, 0.28);
-  c.friction = 0.2;
-  c.elements_minor = elements_minor;
-  return c;
+  return ferro::test::thesis_hertz_case(elements_minor, HertzCase{}.margin);
 }
 
 // The series estimate treats the layer as carrying the Kalker-linear traction distribution of a

@@ -42,4 +42,31 @@ void Grid::validate(const std::string& where) const {
   }
 }
 
+int count_positive_regions(const Grid& grid, const Field& field) {
+  std::vector<int> label(grid.size(), 0);
+  int n = 0;
+  for (std::size_t k0 = 0; k0 < grid.size(); ++k0) {
+    if (!(field[k0] > 0.0) || label[k0] != 0) continue;
+    ++n;
+    std::vector<std::size_t> stack{k0};
+    label[k0] = n;
+    while (!stack.empty()) {
+      const std::size_t k = stack.back();
+      stack.pop_back();
+      const int ix = static_cast<int>(k % static_cast<std::size_t>(grid.nx));
+      const int iy = static_cast<int>(k / static_cast<std::size_t>(grid.nx));
+      const int nb[4][2] = {{ix - 1, iy}, {ix + 1, iy}, {ix, iy - 1}, {ix, iy + 1}};
+      for (const auto& q : nb) {
+        if (q[0] < 0 || q[0] >= grid.nx || q[1] < 0 || q[1] >= grid.ny) continue;
+        const std::size_t m = grid.index(q[0], q[1]);
+        if (field[m] > 0.0 && label[m] == 0) {
+          label[m] = n;
+          stack.push_back(m);
+        }
+      }
+    }
+  }
+  return n;
+}
+
 }  // namespace ferro::contact::mim

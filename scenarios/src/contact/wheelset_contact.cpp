@@ -263,33 +263,6 @@ fc::Creepage creepages_at(const fc::WheelRailPair& pair, const fc::WheelsetPose&
   return k;
 }
 
-// Connected parts (4-neighbourhood) of the loaded elements.
-int loaded_regions(const fm::Grid& grid, const fm::Field& p) {
-  std::vector<int> label(grid.size(), 0);
-  int n = 0;
-  for (std::size_t k0 = 0; k0 < grid.size(); ++k0) {
-    if (!(p[k0] > 0.0) || label[k0] != 0) continue;
-    ++n;
-    std::vector<std::size_t> stack{k0};
-    label[k0] = n;
-    while (!stack.empty()) {
-      const std::size_t k = stack.back();
-      stack.pop_back();
-      const int ix = static_cast<int>(k % static_cast<std::size_t>(grid.nx));
-      const int iy = static_cast<int>(k / static_cast<std::size_t>(grid.nx));
-      const int nb[4][2] = {{ix - 1, iy}, {ix + 1, iy}, {ix, iy - 1}, {ix, iy + 1}};
-      for (const auto& q : nb) {
-        if (q[0] < 0 || q[0] >= grid.nx || q[1] < 0 || q[1] >= grid.ny) continue;
-        const std::size_t m = grid.index(q[0], q[1]);
-        if (p[m] > 0.0 && label[m] == 0) {
-          label[m] = n;
-          stack.push_back(m);
-        }
-      }
-    }
-  }
-  return n;
-}
 
 // Solves one patch found around candidate `cand`; `covered` receives its rail extent.
 PatchContact solve_patch(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
@@ -427,7 +400,7 @@ PatchContact solve_patch(const fc::WheelRailPair& pair, const fc::WheelsetPose& 
   out.rail_y_min = loaded > 0 ? rail_y_of_s(ylo) : ref.rail_y;
   out.rail_y_max = loaded > 0 ? rail_y_of_s(yhi) : ref.rail_y;
   if (out.rail_y_min > out.rail_y_max) std::swap(out.rail_y_min, out.rail_y_max);
-  out.regions = loaded_regions(grid, r.pressure);
+  out.regions = fm::count_positive_regions(grid, r.pressure);
   // Force on the wheel F = F_n n + F_x t1 + F_y t2; on the rail -F (track frame, z down).
   const Eigen::Vector3d t2 = n.cross(Eigen::Vector3d::UnitX());
   const Eigen::Vector3d f_wheel =

@@ -12,6 +12,7 @@
 #include "ferro/fe_contact/creep_slopes.hpp"
 #include "ferro/fe_contact/fe_block.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"
+#include "thesis_hertz_case.hpp"
 
 using namespace ferro;
 using namespace ferro::contact::mim;
@@ -27,15 +28,7 @@ TEST(FeLayer, thin_fe_layer_matches_interfacial_layer) {
   // Thesis chapter 3 case (Toumi 2016 Tables 3.1, 3.7): 7.5 t, a = 6.66 mm, b = 5.05 mm,
   // E = 210 GPa, nu = 0.28, mu = 0.2; grid of 10 elements across b with a 50 % margin (the
   // finite block's patch is wider than the half-space's).
-  fe_contact::HertzCase c;
-  c.reference_force = 7.5e3 * 9.81;
-  c.reference_semi_axis_x = 6.66e-3;
-  c.reference_semi_axis_y = 5.05e-3;
-  c.normal_force = c.reference_force;
-  c.body = contact::Material::from_young(210.0e9, 0.28);
-  c.friction = 0.2;
-  c.elements_minor = 10;
-  c.margin = 0.5;
+  const fe_contact::HertzCase c = test::thesis_hertz_case(10, 0.5);
   // Thesis layer: h = 125 um, G3 = 820 MPa (Poisson ratio not given: 0.3).
   fe_contact::InterfaceLayer layer;
   layer.thickness = 125.0e-6;

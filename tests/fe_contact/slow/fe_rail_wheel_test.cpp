@@ -12,6 +12,7 @@
 #include "ferro/fe_contact/creep_slopes.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"
 #include "ferro/fe_contact/rail_wheel.hpp"
+#include "thesis_hertz_case.hpp"
 
 using namespace ferro;
 using namespace ferro::contact::mim;
@@ -22,18 +23,7 @@ const contact::Material kSteel = contact::Material::from_young(210.0e9, 0.28);
 
 // Thesis case: 7.5 t, Hertz a = 6.66 mm, b = 5.05 mm, mu = 0.2 (Tables 3.1, 3.7); grid 8
 // elements across the patch width with a 60 % margin (the finite bodies widen the patch).
-fe_contact::HertzCase thesis_case() {
-  fe_contact::HertzCase c;
-  c.reference_force = 7.5e3 * 9.81;
-  c.normal_force = c.reference_force;
-  c.reference_semi_axis_x = 6.66e-3;
-  c.reference_semi_axis_y = 5.05e-3;
-  c.body = kSteel;
-  c.friction = 0.2;
-  c.elements_minor = 8;
-  c.margin = 0.6;
-  return c;
-}
+fe_contact::HertzCase thesis_case() { return test::thesis_hertz_case(8, 0.6); }
 
 // Coarsest level of the convergence study in docs/VALIDATION.md (triquadratic hexahedra, sizes
 // growing by 2.5 away from the loaded column).

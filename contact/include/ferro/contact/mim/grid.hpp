@@ -42,6 +42,10 @@ struct Grid {
 /// A scalar field on a grid (row-major, x fastest).
 using Field = std::vector<double>;
 
+/// Number of connected parts (4-neighbourhood) of the elements where `field` > 0, e.g. the
+/// lobes of a contact area from its pressure.
+[[nodiscard]] int count_positive_regions(const Grid& grid, const Field& field);
+
 /// Samples f(x, y) at every element centre.
 template <class F>
 [[nodiscard]] Field sample(const Grid& grid, F&& f) {
