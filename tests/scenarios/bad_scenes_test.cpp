@@ -27,6 +27,8 @@ const BadScene kBadScenes[] = {
     {"missing_schema_version", 1, "schema_version", "reads schema_version 1"},
     {"wrong_schema_version", 1, "schema_version", "supported: 1"},
     {"negative_rtol", 23, "solver.rtol", "must lie in (0, 1)"},
+    {"max_order_too_high", 24, "solver.max_order", "1..5 for cvode_bdf"},
+    {"stability_flag_not_boolean", 24, "solver.stability_limit_detection", "allowed: true, false"},
     {"unknown_signal", 26, "output.csv", "did you mean 'wheelset.y'?"},
     {"unknown_initial_state", 20, "simulation.initial.wheelset.lateral",
      "valid keys here: wheelset.y"},
