@@ -123,8 +123,7 @@ FeKijConfig read_config(const std::string& path) {
   }
   const std::string out = top.string_or("output", "kij.h5");
   cfg.output = fs::path(out).is_absolute() ? out : (fs::path(path).parent_path() / out).string();
-  const std::string plots = top.string_or("plots", "true", {"true", "false"});
-  cfg.plots = plots == "true";
+  cfg.plots = top.boolean_or("plots", true);
   top.finish();
   s.validate(path);
   return cfg;

@@ -149,6 +149,8 @@ TEST(IntegratorSettings, max_order_outside_the_method_range_is_rejected) {
   }
   s.method = "cvode_adams";
   EXPECT_NO_THROW(s.validate("solver"));
+  s.method = "odeint_dopri5";  // no order to cap: refused, not ignored
+  EXPECT_THROW(s.validate("solver"), std::invalid_argument);
 }
 
 TEST(OutputGrid, includes_end_point) {

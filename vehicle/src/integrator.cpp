@@ -45,6 +45,12 @@ void IntegratorSettings::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.max_steps: must be >= 1, got {}", where, max_steps));
   }
+  if (max_order != 0 && method != "cvode_bdf" && method != "cvode_adams") {
+    throw std::invalid_argument(fmt::format(
+        "{}.max_order: only cvode_bdf (1..5) and cvode_adams (1..12) take an order cap; {} "
+        "needs 0, got {}",
+        where, method, max_order));
+  }
   if (max_order < 0 || max_order > 12 || (method == "cvode_bdf" && max_order > 5)) {
     throw std::invalid_argument(fmt::format(
         "{}.max_order: must be 0 (the method's own) or 1..5 for cvode_bdf, 1..12 for "
