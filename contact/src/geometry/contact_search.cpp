@@ -404,19 +404,25 @@ void share_joined_runs(const RunMember* members, int count, double drop,
     if (end - start == 1) {
       effective_gap[start] = members[start].gap - drop;
     } else {
+      // Barrier depth raised by the search's prominence (a minimum less than kProminence
+      // below its barrier is merged into its neighbour by candidate_points()), so a member
+      // appearing at that prominence starts with no excess, no weight and no depth.
+      auto barrier_depth = [&](int i) {
+        const double dmax = std::max(joint(i), joint(i + 1));
+        return dmax + std::min(dmax, kProminence);
+      };
       double sum = 0.0;
       for (int i = start; i < end; ++i) {
         const double d = drop - members[i].gap;
-        const double dmax = std::max(joint(i), joint(i + 1));
-        effective_gap[i] = std::max(0.0, d - dmax);  // excess, for now
+        effective_gap[i] = std::max(0.0, d - barrier_depth(i));  // excess, for now
         sum += effective_gap[i];
       }
       const double n = static_cast<double>(end - start);
       for (int i = start; i < end; ++i) {
         const double d = drop - members[i].gap;
-        const double dmax = std::max(joint(i), joint(i + 1));
+        const double dmax = std::min(d, barrier_depth(i));
         const double w = sum > 0.0 ? effective_gap[i] / sum : 1.0 / n;
-        effective_gap[i] = -(d - dmax * (1.0 - w));
+        effective_gap[i] = d > 0.0 ? -(d - (1.0 - w) * dmax * dmax / d) : -d;
       }
     }
     start = end;

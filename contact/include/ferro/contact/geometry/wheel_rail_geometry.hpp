@@ -150,12 +150,17 @@ struct RunMember {
 /// A barrier below the rail (depth D = drop - barrier > 0) joins its two neighbours into one run:
 /// the penetrating stretch between them is one patch. Member i of a run, at depth d_i = drop -
 /// gap_i, with D_i the deeper of its two adjacent submerged barriers, excess e_i = d_i - D_i >= 0
-/// and weight w_i = e_i / sum_run e, penetrates by d_i - D_i (1 - w_i). So:
-/// - a barrier just submerging (D -> 0) leaves every member's depth unchanged;
+/// and weight w_i = e_i / sum_run e, penetrates by d_i - (1 - w_i) D_i^2 / d_i. (D_i is taken
+/// deeper by the search's 1 um prominence, min(D_i, 1 um), so that a minimum which the search
+/// starts to report once it is 1 um below its barrier enters with no depth.) So:
+/// - a barrier just submerging (D -> 0) leaves every member's depth and its rate unchanged (the
+///   correction is second order in D), so the run's stiffness does not step as it joins;
 /// - a member merging with its barrier (e_i -> 0, a minimum that vanishes) carries nothing and
 ///   the others get their full depth back;
 /// - two members whose depths cross swap nothing (the rule is symmetric);
-/// - the run's depths grow together at the rate of one contact (the weights sum to 1).
+/// - deeper in, the depths grow at a rate between w_i and 1 each: from two contacts' stiffness
+///   when the barrier just submerges towards one contact's when the run is one flat patch
+///   (D -> d, members sharing d by their weights).
 /// Every effective gap is therefore continuous in the pose, where keeping only the deepest member
 /// jumps by the members' distance when their depths cross. An unjoined member keeps gap - drop.
 /// Known deviation: a run is one non-Hertzian patch in reality; sharing its depth among Hertzian
