@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/io/hdf5.hpp"
 
 namespace fc = ferro::contact;
+namespace fio = ferro::io;
 
 namespace {
 
@@ -70,6 +72,18 @@ TEST(make_contact_source, every_kind_and_the_table_cache) {
   const auto& t = dynamic_cast<const fc::MultiPointContactTable&>(*rebuilt);
   EXPECT_EQ(t.node_count(), 11u);
   EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 11u);
+  // A cache in an older layout (format_version 1, 15 columns) is rebuilt, not an error; a file
+  // that is not a table at all is still refused by name.
+  {
+    fio::H5File old = fio::H5File::create(tab.table_file);
+    old.set_attribute("/", "format_version", 1.0);
+    old.write_array("/node_offset", std::vector<double>{0.0}, {1});
+    old.write_array("/candidates", std::vector<double>(15, 0.0), {1, 15});
+  }
+  EXPECT_TRUE(fc::MultiPointContactTable::is_table_of_another_version(tab.table_file));
+  (void)fc::make_contact_source(tab);
+  EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 11u);
+  EXPECT_FALSE(fc::MultiPointContactTable::is_table_of_another_version(tab.table_file));
   std::filesystem::remove(tab.table_file);
 }
 

@@ -41,7 +41,9 @@ std::shared_ptr<const ContactGeometrySource> make_contact_source(const ContactSo
   if (spec.kind == "table") {
     const auto pair = make_pair(spec);
     const std::uint64_t fp = MultiPointContactTable::fingerprint(*pair, spec.table);
-    if (!spec.table_file.empty() && std::filesystem::exists(spec.table_file)) {
+    // A cache written by another format version of the table is rebuilt and overwritten.
+    if (!spec.table_file.empty() && std::filesystem::exists(spec.table_file) &&
+        !MultiPointContactTable::is_table_of_another_version(spec.table_file)) {
       auto t = std::make_shared<MultiPointContactTable>(
           MultiPointContactTable::load_hdf5(spec.table_file));
       if (t->fingerprint() == fp) return t;

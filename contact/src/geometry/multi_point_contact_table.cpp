@@ -550,6 +550,17 @@ void MultiPointContactTable::save_hdf5(const std::string& path) const {
   file.close();
 }
 
+bool MultiPointContactTable::is_table_of_another_version(const std::string& path) {
+  try {
+    const io::H5File file = io::H5File::open_read(path);
+    return file.has_attribute("/", "format_version") && file.exists("/node_offset") &&
+           file.exists("/candidates") &&
+           file.number_attribute("/", "format_version") != kFormatVersion;
+  } catch (const io::Hdf5Error&) {
+    return false;
+  }
+}
+
 MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path) {
   const io::H5File file = [&] {
     try {

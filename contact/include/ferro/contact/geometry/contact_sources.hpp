@@ -184,6 +184,9 @@ class MultiPointContactTable final : public ContactGeometrySource {
   /// Tabulates `pair` on the grid (about 0.1 ms per node).
   static MultiPointContactTable build(const WheelRailPair& pair,
                                       const MultiPointTableParams& params);
+  /// True when `path` is an HDF5 multi-point table written by another format version (a cache
+  /// to rebuild); false for the current version and for any other file.
+  static bool is_table_of_another_version(const std::string& path);
   /// Reads a table written by save_hdf5; throws std::invalid_argument naming the file/dataset.
   static MultiPointContactTable load_hdf5(const std::string& path);
   /// Writes the grid as attributes, /node_offset [n_nodes + 1] and /candidates [n x 18]
