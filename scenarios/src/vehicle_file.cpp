@@ -251,10 +251,10 @@ void check_bump_stop_table(MapReader& r, const SuspensionElementSpec& s, const s
 const std::vector<std::string>& wheel_rail_keys() {
   static const std::vector<std::string> keys = {
       "geometry",     "wheel_profile", "rail_profile",       "imported_table", "table_file",
-      "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "wheel_conical_tread", "conicity",
+      "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
       "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
-      "reduction_table", "reduction_table_point", "regularisation_speed"};
+      "reduction_table", "reduction_table_point", "regularisation_speed", "wheel_conical_tread"};
   return keys;
 }
 

@@ -778,7 +778,8 @@ std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
   try {
     if (std::isfinite(spec.wheel_tread_conicity) &&
         (spec.geometry == "search" || spec.geometry == "table")) {
-      return make_source_with_conical_tread(cs, spec.wheel_tread_conicity, spec.wheel_tread_join_y);
+      return make_source_with_conical_tread(cs, spec.wheel_tread_conicity,
+                                            spec.wheel_tread_join_y);
     }
     return contact::make_contact_source(cs);
   } catch (const std::invalid_argument& e) {
