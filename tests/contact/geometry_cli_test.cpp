@@ -102,7 +102,9 @@ TEST(geometry_cli, batch_csv_in_csv_out) {
     ++rows;
     if (line.rfind("11,", 0) == 0 && line.find(",right,") != std::string::npos) ++case11_right;
   }
-  EXPECT_EQ(rows, 2 + 3);      // centred: one point per wheel; y = 5 mm: 1 left + 2 right
+  // Centred: the two connected lobes of each wheel are two members of one joined run (each
+  // wheel's gap has two minima under the rail); y = 5 mm: 1 left + 2 right (separate runs).
+  EXPECT_EQ(rows, 4 + 3);
   EXPECT_EQ(case11_right, 2);  // two-point contact on the right wheel
 }
 

@@ -29,7 +29,14 @@ const std::string kData = FERRO_DATA_DIR;
 // ~7 mm per cell) a branch is cut rather than averaged across a jump, so a point may sit up to
 // 2 kBranchMatch + a cell's motion from the search's: 10 um, 3 mm, 0.25 rad (measured 7.1 um,
 // 2.4 mm, 0.21 rad). A table point is never further than that from a real one (no fake point).
-constexpr double kTypicalPenetrationTol = 1.0e-6;  // [m], 95th percentile
+// Where a submerged barrier joins candidates into one run, the members share the run's depth
+// through the barrier (share_joined_runs), which the table interpolates with its own gradient:
+// the typical tier is 1.5 um (measured 1.26 um). A branch born inside a cell is absent from the
+// table until the cell's half-weight point; a wheel whose member count differs for that reason
+// is counted, not compared point by point: at most kMembershipShare of the wheels (measured
+// 1 of 400).
+constexpr double kTypicalPenetrationTol = 1.5e-6;  // [m], 95th percentile
+constexpr double kMembershipShare = 0.01;
 constexpr double kTypicalPositionTol = 0.5e-3;     // [m], 95th percentile
 constexpr double kPenetrationTol = 10.0e-6;        // [m], every point
 constexpr double kPositionTol = 3.0e-3;            // [m], every point
@@ -51,11 +58,22 @@ const fc::MultiPointContactTable& a22_table() {
   return t;
 }
 
+int count_on(const std::vector<fc::WheelRailContact>& v, fc::Side side) {
+  return static_cast<int>(std::count_if(v.begin(), v.end(),
+                                        [&](const fc::WheelRailContact& c) { return c.side == side; }));
+}
+
 // Every point of `a` deeper than kPenetrationTol has a partner in `b` (same wheel, nearest in
-// wheel_y) within the every-point tolerances.
+// wheel_y) within the every-point tolerances; wheels whose member count differs are skipped and
+// counted in `membership_differs`.
 void expect_matched(const std::vector<fc::WheelRailContact>& a,
-                    const std::vector<fc::WheelRailContact>& b, const std::string& what) {
+                    const std::vector<fc::WheelRailContact>& b, const std::string& what,
+                    int* membership_differs = nullptr) {
+  for (const fc::Side side : {fc::Side::left, fc::Side::right}) {
+    if (membership_differs && count_on(a, side) != count_on(b, side)) ++*membership_differs;
+  }
   for (const fc::WheelRailContact& p : a) {
+    if (membership_differs && count_on(a, p.side) != count_on(b, p.side)) continue;
     if (p.penetration < kPenetrationTol) continue;
     const fc::WheelRailContact* best = nullptr;
     for (const fc::WheelRailContact& q : b) {
@@ -97,7 +115,7 @@ TEST(multi_point_contact_table, agrees_with_the_online_search_off_the_grid) {
       depth(20e-6, 120e-6);
   std::vector<fc::WheelRailContact> a, b;
   std::vector<double> pen_err, pos_err;
-  int points = 0;
+  int points = 0, wheels = 0, membership_differs = 0;
   for (int n = 0; n < 200; ++n) {
     fc::WheelsetPose pose{lat(rng), 0.0, roll(rng), 0.0};
     pose = fc::touching_pose(*pair, pose);
@@ -106,8 +124,10 @@ TEST(multi_point_contact_table, agrees_with_the_online_search_off_the_grid) {
     table.contacts(pose, b);
     const std::string what = "y " + std::to_string(pose.lateral) + " roll " +
                              std::to_string(pose.roll);
-    expect_matched(a, b, "search->table " + what);
-    expect_matched(b, a, "table->search " + what);
+    expect_matched(a, b, "search->table " + what, &membership_differs);
+    int counted_once = 0;  // the same wheels as above
+    expect_matched(b, a, "table->search " + what, &counted_once);
+    wheels += 2;
     points += static_cast<int>(a.size());
     for (const fc::Side side : {fc::Side::left, fc::Side::right}) {
       const fc::WheelRailContact* p = deepest(a, side);
@@ -118,6 +138,7 @@ TEST(multi_point_contact_table, agrees_with_the_online_search_off_the_grid) {
     }
   }
   EXPECT_GT(points, 200);
+  EXPECT_LE(membership_differs, kMembershipShare * wheels);
   EXPECT_LT(percentile95(pen_err), kTypicalPenetrationTol);
   EXPECT_LT(percentile95(pos_err), kTypicalPositionTol);
 }

@@ -164,6 +164,37 @@ double refine_minimum(const SideContext& c, double yw, double h) {
   return yw;
 }
 
+// Parabolic refinement of a section-gap maximum (a barrier between two minima) bracketed
+// around yw with half-width h, as refine_minimum() for a minimum. Returns the refined section.
+double refine_maximum(const SideContext& c, double yw, double h) {
+  const ProfileCurve& wheel = c.pair->wheel();
+  auto gap = [&](double y) {
+    const Section sec = section_min(c, y);
+    return sec.valid ? sec.gap : -kFar;
+  };
+  double gm = gap(yw);
+  for (int it = 0; it < 4; ++it) {
+    const double ya = std::max(yw - h, wheel.y_min()), yb = std::min(yw + h, wheel.y_max());
+    const double ga = gap(ya), gb = gap(yb);
+    double ynew = yw;
+    const double denom = (ga - 2.0 * gm + gb);
+    if (denom < 0.0 && ya < yw && yb > yw) {
+      ynew = std::clamp(yw + 0.5 * h * (ga - gb) / denom, yw - h, yw + h);
+    } else if (ga > gm || gb > gm) {
+      ynew = ga > gb ? ya : yb;
+    }
+    if (ynew != yw) {
+      const double gn = gap(ynew);
+      if (gn > gm) {
+        yw = ynew;
+        gm = gn;
+      }
+    }
+    h *= 0.1;
+  }
+  return yw;
+}
+
 ContactPoint make_point(const SideContext& c, Side side, double yw) {
   const Section s = section_min(c, yw);
   ContactPoint p;
@@ -286,11 +317,16 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
   struct Min {
     std::size_t k;
     double barrier;
+    std::size_t k_barrier;  // scan section of the barrier (when finite)
   };
   std::vector<Min> mins;
   double run_max = -kFar;
+  std::size_t k_run_max = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    run_max = std::max(run_max, g[k]);
+    if (g[k] > run_max) {
+      run_max = g[k];
+      k_run_max = k;
+    }
     const bool left_ok = k == 0 || g[k] < g[k - 1];
     const bool right_ok = k + 1 == n || g[k] <= g[k + 1];
     if (!(left_ok && right_ok) || g[k] >= kFar) continue;
@@ -299,50 +335,109 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
       if (run_max - higher < kProminence) {
         if (g[k] < g[mins.back().k]) mins.back().k = k;  // same valley: keep the deeper
         run_max = g[k];
+        k_run_max = k;
         continue;
       }
-      mins.push_back({k, run_max});
+      mins.push_back({k, run_max, k_run_max});
     } else {
-      mins.push_back({k, std::numeric_limits<double>::infinity()});
+      mins.push_back({k, std::numeric_limits<double>::infinity(), 0});
     }
     run_max = g[k];
+    k_run_max = k;
   }
   std::vector<ContactPoint> out;
   out.reserve(mins.size());
-  double pending = -kFar;  // barrier carried over skipped candidates
+  // Barrier carried over skipped candidates: its value and scan section.
+  double pending = -kFar;
+  std::size_t k_pending = 0;
   for (const Min& m : mins) {
     if (g[m.k] > max_gap + kEstimateMargin) {
-      pending = std::max({pending, m.barrier, g[m.k]});
+      if (std::isfinite(m.barrier) && m.barrier > pending) {
+        pending = m.barrier;
+        k_pending = m.k_barrier;
+      }
+      if (g[m.k] > pending) {
+        pending = g[m.k];
+        k_pending = m.k;
+      }
       continue;
     }
     const double y0 = wheel.y_min() + h * static_cast<double>(m.k);
     const double yw = refine_minimum(c, y0, h);
     ContactPoint p = make_point(c, side, yw);
-    p.barrier = std::max(pending, m.barrier);
+    const bool from_pending = pending > m.barrier;
+    if (std::isfinite(m.barrier) || from_pending) {
+      // The barrier refined to the section-gap maximum near its scan section (the scan's
+      // estimate samples it every section_step only).
+      const std::size_t kb = from_pending ? k_pending : m.k_barrier;
+      const double yb = refine_maximum(c, wheel.y_min() + h * static_cast<double>(kb), h);
+      const Section sb = section_min(c, yb);
+      if (sb.valid) {
+        double zr, dzr, ddzr;
+        pair.rail().eval2(sb.rail_y, zr, dzr, ddzr);
+        p.barrier = std::max(sb.gap, p.vertical_gap);
+        p.barrier_x = sb.px;
+        p.barrier_y = sb.py;
+        p.barrier_z = sb.pz + sb.gap;
+        p.barrier_angle = -std::atan(dzr);
+      } else {
+        p.barrier = from_pending ? pending : m.barrier;
+      }
+    }
     pending = -kFar;
     out.push_back(p);
   }
   return out;
 }
 
+void share_joined_runs(const RunMember* members, int count, double drop,
+                       double* effective_gap) {
+  // Depth of the submerged barrier between member i - 1 and i (0: not joined).
+  auto joint = [&](int i) {
+    if (i <= 0 || i >= count || members[i].side != members[i - 1].side) return 0.0;
+    return std::max(0.0, drop - members[i].barrier);
+  };
+  int start = 0;
+  while (start < count) {
+    int end = start + 1;
+    while (end < count && joint(end) > 0.0) ++end;
+    if (end - start == 1) {
+      effective_gap[start] = members[start].gap - drop;
+    } else {
+      double sum = 0.0;
+      for (int i = start; i < end; ++i) {
+        const double d = drop - members[i].gap;
+        const double dmax = std::max(joint(i), joint(i + 1));
+        effective_gap[i] = std::max(0.0, d - dmax);  // excess, for now
+        sum += effective_gap[i];
+      }
+      const double n = static_cast<double>(end - start);
+      for (int i = start; i < end; ++i) {
+        const double d = drop - members[i].gap;
+        const double dmax = std::max(joint(i), joint(i + 1));
+        const double w = sum > 0.0 ? effective_gap[i] / sum : 1.0 / n;
+        effective_gap[i] = -(d - dmax * (1.0 - w));
+      }
+    }
+    start = end;
+  }
+}
+
 std::vector<ContactPoint> contacts_from_candidates(const std::vector<ContactPoint>& candidates,
                                                    double extra_drop) {
-  // The barrier of a candidate is the largest section gap between it and the previous candidate
-  // of the same wheel (infinite for a wheel's first candidate). When the barrier is submerged
-  // the whole stretch between the two penetrates: one connected run, keep its deepest point.
+  std::vector<RunMember> members(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    members[i] = {candidates[i].side, candidates[i].vertical_gap, candidates[i].barrier};
+  }
+  std::vector<double> gap(candidates.size());
+  share_joined_runs(members.data(), static_cast<int>(members.size()), extra_drop, gap.data());
   std::vector<ContactPoint> out;
-  for (const ContactPoint& cand : candidates) {
-    if (!(cand.vertical_gap - extra_drop < 0.0)) continue;
-    ContactPoint p = cand;
-    p.vertical_gap = cand.vertical_gap - extra_drop;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!(gap[i] < 0.0)) continue;
+    ContactPoint p = candidates[i];
+    p.vertical_gap = gap[i];
     p.penetration = -p.vertical_gap * std::cos(p.contact_angle);
-    const bool connected =
-        !out.empty() && out.back().side == p.side && cand.barrier - extra_drop < 0.0;
-    if (connected) {
-      if (p.vertical_gap < out.back().vertical_gap) out.back() = p;
-    } else {
-      out.push_back(p);
-    }
+    out.push_back(p);
   }
   return out;
 }

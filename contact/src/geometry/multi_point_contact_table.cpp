@@ -22,7 +22,7 @@ namespace {
 
 // Barrier stored for a wheel's first candidate (no previous one): never submerged [m].
 constexpr double kNoBarrier = 1.0;
-constexpr int kFields = 15;  // columns of /candidates
+constexpr int kFields = 18;  // columns of /candidates
 using Candidate = MultiPointContactTable::Candidate;
 // The numeric Candidate fields in the column order of /candidates (after the side column).
 constexpr std::array<double Candidate::*, kFields - 1> kColumns = {
@@ -30,11 +30,12 @@ constexpr std::array<double Candidate::*, kFields - 1> kColumns = {
     &Candidate::y,             &Candidate::z,              &Candidate::wheel_y,
     &Candidate::rail_y,        &Candidate::contact_angle,  &Candidate::rolling_radius,
     &Candidate::curvature_a,   &Candidate::curvature_b,    &Candidate::dgap_dlateral,
-    &Candidate::dgap_droll,    &Candidate::dgap_dyaw};
+    &Candidate::dgap_droll,    &Candidate::dgap_dyaw,      &Candidate::dbarrier_dlateral,
+    &Candidate::dbarrier_droll, &Candidate::dbarrier_dyaw};
 // Columns interpolated with the corner weights alone: all from x on (gap and barrier carry a
 // Taylor shift).
 constexpr std::size_t kFirstWeighted = 2;
-constexpr double kFormatVersion = 1.0;
+constexpr double kFormatVersion = 2.0;
 
 int axis_count(double min, double max, double step, const char* name) {
   if (!std::isfinite(min) || !std::isfinite(max) || max < min) {
@@ -157,18 +158,54 @@ MultiPointContactTable MultiPointContactTable::build(const WheelRailPair& pair,
             kept[keep[r]] = static_cast<int>(r) < params.max_points_per_wheel &&
                             c[keep[r]].vertical_gap <= deepest + params.capture_depth;
           }
+          // Gap gradient over the grid axes at a point of the wheel/rail surfaces (envelope
+          // theorem: the derivative of the minimum is the partial derivative at the fixed
+          // minimising wheel point P): with the rail slope dz/dy = -s tan(gamma) at the point
+          // and d = P - C (C the axle centre), d(gap) = slope dP_y - dP_z, dP = omega x d for a
+          // rotation omega (roll: about the yawed axle direction (cos yaw, sin yaw, 0); yaw:
+          // about z). A barrier is a maximum over sections of these minima: same formula at
+          // its own section.
+          const double sgn = side == Side::right ? 1.0 : -1.0;
+          const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
+          auto gradient = [&](double x, double y, double z_rail, double gap, double angle) {
+            const double slope = -sgn * std::tan(angle);
+            const double dx = x, dy = y - pose.lateral;
+            const double dz = (z_rail - gap) - (-pair.params().nominal_radius);
+            return std::array<double, 3>{slope, slope * (-cy * dz) - (cy * dy - sy * dx),
+                                         slope * dx};
+          };
           // In wheel_y order; a dropped candidate's barrier and gap fold into the next one's.
           double pending = -kNoBarrier;
+          std::array<double, 3> pending_grad{};
           for (std::size_t q = 0; q < c.size(); ++q) {
-            const double barrier = std::isfinite(c[q].barrier) ? c[q].barrier : kNoBarrier;
+            const bool has_barrier = std::isfinite(c[q].barrier);
+            const double barrier = has_barrier ? c[q].barrier : kNoBarrier;
+            const std::array<double, 3> gap_grad = gradient(
+                c[q].x, c[q].y, c[q].z, c[q].vertical_gap, c[q].contact_angle);
+            const std::array<double, 3> barrier_grad =
+                has_barrier ? gradient(c[q].barrier_x, c[q].barrier_y, c[q].barrier_z,
+                                       c[q].barrier, c[q].barrier_angle)
+                            : std::array<double, 3>{};
             if (!kept[q]) {
-              pending = std::max({pending, barrier, c[q].vertical_gap});
+              if (has_barrier && barrier > pending) {
+                pending = barrier;
+                pending_grad = barrier_grad;
+              }
+              if (c[q].vertical_gap > pending) {
+                pending = c[q].vertical_gap;
+                pending_grad = gap_grad;
+              }
               continue;
             }
             Candidate s;
             s.side = side;
             s.gap = c[q].vertical_gap;
-            s.barrier = std::min(kNoBarrier, std::max(pending, barrier));
+            const bool folded = pending > barrier;
+            s.barrier = std::min(kNoBarrier, folded ? pending : barrier);
+            const std::array<double, 3>& bg = folded ? pending_grad : barrier_grad;
+            s.dbarrier_dlateral = bg[0];
+            s.dbarrier_droll = bg[1];
+            s.dbarrier_dyaw = bg[2];
             s.x = c[q].x;
             s.y = c[q].y;
             s.z = c[q].z;
@@ -178,19 +215,9 @@ MultiPointContactTable MultiPointContactTable::build(const WheelRailPair& pair,
             s.rolling_radius = c[q].rolling_radius;
             s.curvature_a = c[q].curvature_a;
             s.curvature_b = c[q].curvature_b;
-            // Gap gradient over the grid axes (envelope theorem: the derivative of the minimum
-            // is the partial derivative at the fixed minimising wheel point P): with the rail
-            // slope dz/dy = -s tan(gamma) at the point and d = P - C (C the axle centre),
-            // d(gap) = slope dP_y - dP_z, dP = omega x d for a rotation omega (roll: about the
-            // yawed axle direction (cos yaw, sin yaw, 0); yaw: about z).
-            const double sgn = side == Side::right ? 1.0 : -1.0;
-            const double slope = -sgn * std::tan(c[q].contact_angle);
-            const double dx = c[q].x, dy = c[q].y - pose.lateral;
-            const double dz = (c[q].z - c[q].vertical_gap) - (-pair.params().nominal_radius);
-            const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
-            s.dgap_dlateral = slope;
-            s.dgap_droll = slope * (-cy * dz) - (cy * dy - sy * dx);
-            s.dgap_dyaw = slope * dx;
+            s.dgap_dlateral = gap_grad[0];
+            s.dgap_droll = gap_grad[1];
+            s.dgap_dyaw = gap_grad[2];
             t.nodes_.push_back(s);
             pending = -kNoBarrier;
           }
@@ -400,7 +427,7 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
     const double taylor = wsum > 1.0 - 1e-12 ? 0.5 : 1.0;
     Candidate s;  // every field 0
     s.side = g.side;
-    double wbarrier = 0.0;
+    double wbarrier = 0.0, barrier_shift = 0.0;
     for (int c = 0; c < (1 << d); ++c) {
       if (g.corner[c] < 0 || w[c] == 0.0) continue;
       const Candidate& q = nodes_[static_cast<std::size_t>(g.corner[c])];
@@ -409,15 +436,22 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
                                      q.dgap_droll * offset[c][1] + q.dgap_dyaw * offset[c][2]);
       s.gap += wc * (q.gap + shift);
       // A corner where the branch is its wheel's first candidate has no barrier (kNoBarrier):
-      // the barrier comes from the corners that have one.
+      // the barrier comes from the corners that have one, with its own gradient.
       if (q.barrier < kNoBarrier) {
-        s.barrier += w[c] * (q.barrier + shift);
+        const double bshift = q.dbarrier_dlateral * offset[c][0] +
+                              q.dbarrier_droll * offset[c][1] + q.dbarrier_dyaw * offset[c][2];
+        s.barrier += w[c] * q.barrier;
+        barrier_shift += w[c] * bshift;
         wbarrier += w[c];
       }
       for (std::size_t k = kFirstWeighted; k < kColumns.size(); ++k)
         s.*kColumns[k] += wc * q.*kColumns[k];
     }
-    s.barrier = wbarrier > 0.0 ? s.barrier / wbarrier : kNoBarrier;
+    // Half the gradient term where every corner has the barrier (exact for quadratics, as the
+    // gap), the full first-order Taylor value otherwise.
+    const double barrier_taylor = wbarrier > 1.0 - 1e-12 ? 0.5 : 1.0;
+    s.barrier = wbarrier > 0.0 ? (s.barrier + barrier_taylor * barrier_shift) / wbarrier
+                               : kNoBarrier;
     emit(s);
   }
 }
@@ -467,17 +501,21 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
     }
     buf[static_cast<std::size_t>(j + 1)] = key;
   }
-  // Connected runs of penetration, as contacts_from_candidates().
+  // Penetrating candidates, joined runs sharing their depth as contacts_from_candidates().
   const double drop = pose.vertical;
+  std::array<RunMember, kBuf> members;
+  std::array<double, kBuf> gap;
   for (int i = 0; i < n; ++i) {
     const Candidate& s = buf[static_cast<std::size_t>(i)];
-    if (!(s.gap - drop < 0.0)) continue;
-    const bool connected = !out.empty() && out.back().side == s.side && s.barrier - drop < 0.0;
-    if (connected) {
-      if (s.gap - drop < out.back().vertical_gap) out.back() = to_contact(s, drop);
-    } else {
-      out.push_back(to_contact(s, drop));
-    }
+    members[static_cast<std::size_t>(i)] = {s.side, s.gap, s.barrier};
+  }
+  share_joined_runs(members.data(), n, drop, gap.data());
+  for (int i = 0; i < n; ++i) {
+    const double g = gap[static_cast<std::size_t>(i)];
+    if (!(g < 0.0)) continue;
+    out.push_back(to_contact(buf[static_cast<std::size_t>(i)], drop));
+    out.back().vertical_gap = g;
+    out.back().penetration = -g * std::cos(out.back().contact_angle);
   }
 }
 

@@ -128,8 +128,8 @@ struct MultiPointTableParams {
 /// geometry (point, profile coordinates, contact angle, rolling radius, curvatures A, B).
 /// Look-up: vertical gaps are affine in the vertical position, so the gap at the actual pose is
 /// the interpolated reference gap minus pose.vertical; penetration = -gap cos(contact angle).
-/// Penetrating candidates are grouped into connected runs as search_contacts() does (a submerged
-/// barrier joins two candidates; the deeper one stands for the run).
+/// Penetrating candidates joined by a submerged barrier share their depth as search_contacts()
+/// does (share_joined_runs(): continuous in the pose).
 ///
 /// Branches. Interpolation is per candidate branch, never across branches, so a jump of the
 /// contact (tread to flange) gives two points near the jump, each with its own geometry, and
@@ -150,8 +150,11 @@ struct MultiPointTableParams {
 ///
 /// References: see wheel_rail_geometry.hpp (search).
 /// Known deviations: (multi)linear interpolation of the point's geometry along each branch
-/// (error ~ step^2 times its second derivative); the barrier takes its candidate's gap gradient;
-/// a branch born inside a cell appears at the cell's half-weight point, not where it is born;
+/// (error ~ step^2 times its second derivative);
+/// a branch born inside a cell appears at the cell's half-weight point, not where it is born
+/// (inside a joined run its partners' shared depth then steps by up to the barrier's depth);
+/// the barrier of a candidate that follows candidates dropped by max_points_per_wheel or
+/// capture_depth takes the gradient of the barrier or gap it was folded from;
 /// where the point races along the flange root (several mm per cell) its position is that of
 /// the nearer node's branch (up to ~2 mm off); an absent axis (min == max) is not looked at (a
 /// table without a yaw axis answers at any yaw as at yaw_min); poses outside the grid throw (no
@@ -173,6 +176,9 @@ class MultiPointContactTable final : public ContactGeometrySource {
     double curvature_a = 0.0, curvature_b = 0.0;  ///< [1/m]
     /// Gradient of `gap` over the grid axes at the node (exact, envelope theorem) [m, m/rad].
     double dgap_dlateral = 0.0, dgap_droll = 0.0, dgap_dyaw = 0.0;
+    /// Gradient of `barrier` over the grid axes, at the barrier's own section (same theorem:
+    /// the barrier is a maximum over sections of per-section minima) [m, m/rad].
+    double dbarrier_dlateral = 0.0, dbarrier_droll = 0.0, dbarrier_dyaw = 0.0;
   };
 
   /// Tabulates `pair` on the grid (about 0.1 ms per node).
@@ -180,7 +186,7 @@ class MultiPointContactTable final : public ContactGeometrySource {
                                       const MultiPointTableParams& params);
   /// Reads a table written by save_hdf5; throws std::invalid_argument naming the file/dataset.
   static MultiPointContactTable load_hdf5(const std::string& path);
-  /// Writes the grid as attributes, /node_offset [n_nodes + 1] and /candidates [n x 15]
+  /// Writes the grid as attributes, /node_offset [n_nodes + 1] and /candidates [n x 18]
   /// (columns: side (0 left, 1 right), then the Candidate fields in order; SI).
   void save_hdf5(const std::string& path) const;
 

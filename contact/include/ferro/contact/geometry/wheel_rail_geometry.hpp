@@ -14,8 +14,9 @@
 // circle the point of smallest vertical distance to the (prismatic) rail is found by Newton's
 // method on the circle angle, which places the contact ahead of or behind the axle under yaw
 // (the flange contact leads). Local minima of this section gap over y_w are the candidate
-// points; every connected run of penetrating sections gives one contact point at its deepest
-// section (refined by parabolic interpolation), so tread + flange contact give two points.
+// points (refined by parabolic interpolation), so tread + flange contact give two points; where
+// a submerged barrier joins two candidates into one penetrating run, they share its depth
+// continuously (share_joined_runs()).
 //
 // References: Shabana, Zaazaa & Sugiyama, "Railroad Vehicle Dynamics" (2008) ch. 4 (wheel and
 // rail surface geometry, contact angle, rolling radius); Toumi (2016) eqs. (1), (5)-(16)
@@ -114,6 +115,9 @@ struct ContactPoint {
   double barrier = std::numeric_limits<double>::infinity();  ///< largest section gap between
                                                              ///< this and the previous candidate on
                                                              ///< the same wheel [m]
+  /// Where the barrier is (a finite barrier only): the nearest point of the barrier's section on
+  /// the rail surface, track frame [m], and the rail's contact angle there [rad].
+  double barrier_x = 0.0, barrier_y = 0.0, barrier_z = 0.0, barrier_angle = 0.0;
   double normal_force = 0.0;                                 ///< set by solve_vertical_load [N]
   [[nodiscard]] bool on_flange() const { return contact_angle > kFlangeAngle; }
   static constexpr double kFlangeAngle = 0.5236;  ///< 30 deg: above it the point is "flange"
@@ -130,8 +134,39 @@ struct ContactPoint {
 /// std::invalid_argument when `candidates` is empty.
 [[nodiscard]] const ContactPoint& deepest_candidate(const std::vector<ContactPoint>& candidates);
 
-/// Contact points at `pose`: one per connected run of interpenetration on each wheel, both
-/// wheels (left first, then right, each in increasing wheel_y).
+/// One candidate as the joined-run rule sees it: its wheel, its vertical gap and its barrier to
+/// the previous candidate of the same wheel (a wheel's first candidate: +infinity), at the
+/// reference vertical position [m].
+struct RunMember {
+  Side side = Side::right;
+  double gap = 0.0;
+  double barrier = std::numeric_limits<double>::infinity();
+};
+
+/// Effective vertical gaps of candidates joined into runs, at a drop `drop` [m] below the
+/// reference. `members` holds the candidates of both wheels, left first, each wheel in increasing
+/// wheel_y; `effective_gap` receives one value per member (negative: the member carries load).
+///
+/// A barrier below the rail (depth D = drop - barrier > 0) joins its two neighbours into one run:
+/// the penetrating stretch between them is one patch. Member i of a run, at depth d_i = drop -
+/// gap_i, with D_i the deeper of its two adjacent submerged barriers, excess e_i = d_i - D_i >= 0
+/// and weight w_i = e_i / sum_run e, penetrates by d_i - D_i (1 - w_i). So:
+/// - a barrier just submerging (D -> 0) leaves every member's depth unchanged;
+/// - a member merging with its barrier (e_i -> 0, a minimum that vanishes) carries nothing and
+///   the others get their full depth back;
+/// - two members whose depths cross swap nothing (the rule is symmetric);
+/// - the run's depths grow together at the rate of one contact (the weights sum to 1).
+/// Every effective gap is therefore continuous in the pose, where keeping only the deepest member
+/// jumps by the members' distance when their depths cross. An unjoined member keeps gap - drop.
+/// Known deviation: a run is one non-Hertzian patch in reality; sharing its depth among Hertzian
+/// members is a regularisation of the multi-Hertzian kind (as virtual-penetration methods reduce
+/// the penetration), not a patch solution. In a run of three or more members the rule stays
+/// continuous except where an inner member vanishes (its two barriers fold into one).
+void share_joined_runs(const RunMember* members, int count, double drop, double* effective_gap);
+
+/// Contact points at `pose`: every penetrating candidate of each wheel, both wheels (left
+/// first, then right, each in increasing wheel_y); candidates joined by a submerged barrier share
+/// their depth as share_joined_runs() says.
 [[nodiscard]] std::vector<ContactPoint> search_contacts(const WheelRailPair& pair,
                                                         const WheelsetPose& pose);
 
