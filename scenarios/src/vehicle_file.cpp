@@ -254,7 +254,7 @@ const std::vector<std::string>& wheel_rail_keys() {
       "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
       "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
-      "reduction_table", "reduction_table_point", "regularisation_speed"};
+      "reduction_table", "reduction_table_point", "regularisation_speed", "wheel_conical_tread"};
   return keys;
 }
 
@@ -277,6 +277,20 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   w.flange_back_distance = r.number_or("flange_back_distance", w.flange_back_distance);
   w.flange_back_y = r.number_or("flange_back_y", w.flange_back_y);
   w.rail_inclination = r.number_or("rail_inclination", w.rail_inclination);
+  if (r.has("wheel_conical_tread")) {
+    // The thesis' S1002 with a 1/10 conical tread: the tread beyond join_y becomes a cone.
+    MapReader t = r.map("wheel_conical_tread");
+    w.wheel_tread_conicity = t.number("conicity");
+    if (!(w.wheel_tread_conicity > 0.0 && w.wheel_tread_conicity < 1.0))
+      t.fail("conicity", fmt::format("must lie in (0, 1), got {}", w.wheel_tread_conicity));
+    w.wheel_tread_join_y = t.number("join_y");
+    if (!(std::abs(w.wheel_tread_join_y) < 0.1))
+      t.fail("join_y", fmt::format("must lie in (-0.1, 0.1) m (wheel-profile y, taping line at 0), "
+                                   "got {}", w.wheel_tread_join_y));
+    t.finish();
+  } else {
+    r.allow("wheel_conical_tread");
+  }
   w.conicity = r.number_or("conicity", w.conicity);
   w.contact_half_distance = r.number_or("contact_half_distance", w.contact_half_distance);
   w.conical_curvature_a = r.number_or("conical_curvature_a", w.conical_curvature_a);
@@ -358,6 +372,9 @@ void check_wheel_rail(const MapReader& r, const vehicle::WheelRailSpec& w) {
   if (w.geometry == "table" || w.geometry == "search") {
     need(!w.wheel_profile.empty(), "wheel_profile", "the wheel profile file");
     need(!w.rail_profile.empty(), "rail_profile", "the rail profile file");
+  } else if (r.has("wheel_conical_tread")) {
+    r.fail("wheel_conical_tread", fmt::format("applies to geometry table or search, not '{}'",
+                                              w.geometry));
   } else if (w.geometry == "imported") {
     need(!w.imported_table.empty(), "imported_table", "the CSV contact table");
   } else if (w.geometry == "conical") {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "ferro/scenarios/analysis/critical_speed.hpp"
 #include "ferro/scenarios/analysis/limit_cycle.hpp"
@@ -105,6 +106,43 @@ TEST(LimitCycle, SupercriticalAmplitudeIsSqrtMu) {
   HopfNormalForm stable(-0.2, false);
   const std::vector<double> x0 = {0.5, 0.0};
   EXPECT_EQ(run_until_settled(stable, x0, o).outcome, Oscillation::kDecayed);
+}
+
+// The supercritical normal form inside a wall at r = 1.5: the right-hand side fails beyond it.
+class WalledHopf final : public vehicle::OdeSystem {
+ public:
+  explicit WalledHopf(double mu) : free_(mu, false) {}
+  [[nodiscard]] std::size_t size() const override { return 2; }
+  int rhs(double t, std::span<const double> x, std::span<double> xd) const override {
+    if (x[0] * x[0] + x[1] * x[1] > kWall * kWall) return vehicle::kRhsFatal;
+    return free_.rhs(t, x, xd);
+  }
+  [[nodiscard]] std::vector<vehicle::SignalInfo> state_info() const override {
+    return free_.state_info();
+  }
+  static constexpr double kWall = 1.5;
+
+ private:
+  HopfNormalForm free_;
+};
+
+TEST(LimitCycle, FailureAtTheStartIsAnErrorNotAnOscillation) {
+  const auto o = settle_options();
+  // mu = 4: the cycle (r = 2) lies beyond the wall, so a small start grows into the wall after
+  // a few periods: an oscillation that diverged.
+  WalledHopf sys(4.0);
+  const std::vector<double> small = {0.01, 0.0};
+  const auto grown = run_until_settled(sys, small, o);
+  EXPECT_EQ(grown.outcome, Oscillation::kDiverged);
+  EXPECT_GT(grown.time, 0.5);  // r grows as e^(4t) from 0.01 to 1.5: t ~ 1.25 s
+  // A start beyond the wall cannot be integrated at all: an error, not a sustained cycle.
+  const std::vector<double> inside_wall = {2.0, 0.0};
+  try {
+    (void)run_until_settled(sys, inside_wall, o);
+    FAIL() << "a failing start was taken for an oscillation";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("failed at its start"), std::string::npos) << e.what();
+  }
 }
 
 TEST(LimitCycle, SubcriticalBistability) {

@@ -342,6 +342,14 @@ TEST(VehicleFile, located_errors_name_line_key_and_allowed_values) {
        "does not exist"},
       {"  geometry: table ", "  geometry: conical ", "wheel_rail.conicity",
        "required for geometry 'conical'"},
+      {"  rail_inclination: 0.0 ", "  wheel_conical_tread: {conicity: 1.5, join_y: -0.015}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.wheel_conical_tread.conicity", "must lie in (0, 1)"},
+      {"  rail_inclination: 0.0 ", "  wheel_conical_tread: {conicity: 0.1, join_y: -15}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.wheel_conical_tread.join_y",
+       "must lie in (-0.1, 0.1) m"},
+      {"  rail_inclination: 0.0 ", "  wheel_conical_tread: {conicity: 0.1}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.wheel_conical_tread.join_y",
+       "missing required key 'join_y'"},
       {"  nominal_rolling_radius: 0.46", "  nominal_rolling_radius: 0.46\n  dofs: [y, yaw, spn]",
        "wheelset.dofs", "did you mean 'spin'?"},
   };

@@ -4,7 +4,12 @@
 // scenarios/vehicles/manchester_vehicle1.yaml.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
+#include "ferro/contact/geometry/contact_geometry_source.hpp"
 #include "ferro/scenarios/scene.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -40,6 +45,40 @@ TEST(VehicleScene, contact_and_track_parts_override_the_vehicle_file) {
   // The included vehicle file is kept in the scene text written to the output.
   EXPECT_NE(s.text.find("included: "), std::string::npos);
   EXPECT_NE(s.text.find("Manchester benchmark vehicle 1"), std::string::npos);
+}
+
+TEST(VehicleScene, thesis_conical_tread_rolls_as_a_one_in_ten_cone) {
+  // The thesis pair (S1002 with a 1/10 conical tread on UIC60 inclined 1:10) as the thesis
+  // scenes select it. Oracle, a cone: while both wheels touch the cone, the rolling-radius
+  // difference is exactly 2 gamma y (gamma = 0.1) and the contact angle relative to the axle is
+  // atan(0.1) on both wheels. Tolerances: the table is interpolated on its lateral grid, and the
+  // contact point moves on the rail crown but not off the cone for |y| <= 4 mm.
+  constexpr double kConicity = 0.1;
+  constexpr double kRadiusDiffTol = 0.02;   // relative, table interpolation
+  constexpr double kAngleTol = 2.0e-3;      // rad, table interpolation
+  const Scene s = load_scene("scenarios/scenes/thesis_critical_speed.yaml");
+  const auto& w = s.model.vehicle.wheel_rail;
+  EXPECT_EQ(w.wheel_tread_conicity, kConicity);
+  EXPECT_EQ(w.wheel_tread_join_y, -0.015);
+  const auto source = vehicle::make_geometry_source(w, "");
+  std::vector<contact::WheelRailContact> points;
+  for (const double y : {-4.0e-3, -2.0e-3, 2.0e-3, 4.0e-3}) {
+    // Lower the wheelset until both wheels touch (0.02 mm steps): the rigid contact state.
+    contact::WheelsetPose pose;
+    pose.lateral = y;
+    double r[2] = {NAN, NAN};
+    for (pose.vertical = -5.0e-3; pose.vertical < 10.0e-3; pose.vertical += 0.02e-3) {
+      source->contacts(pose, points);
+      r[0] = r[1] = NAN;
+      for (const auto& c : points) r[static_cast<int>(c.side)] = c.rolling_radius;
+      if (std::isfinite(r[0]) && std::isfinite(r[1])) break;
+    }
+    for (const auto& c : points)
+      EXPECT_NEAR(std::abs(c.contact_angle), std::atan(kConicity), kAngleTol) << y;
+    ASSERT_TRUE(std::isfinite(r[0]) && std::isfinite(r[1])) << y;
+    // Shift to the right (+y, contact frame): the right wheel rolls on a larger radius.
+    EXPECT_NEAR((r[1] - r[0]) / (2.0 * kConicity * y), 1.0, kRadiusDiffTol) << y;
+  }
 }
 
 TEST(VehicleScene, tangential_override) {

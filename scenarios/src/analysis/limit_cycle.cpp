@@ -125,6 +125,21 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
     r.rhs_evaluations += res.rhs_evaluations;
     r.time = res.t_reached;
     r.final_state = res.state;
+    if (!left_bounds && res.status == vehicle::IntegrationResult::Status::kSolverFailure &&
+        t0 == 0.0) {
+      // A failure before the reference state has swung once across zero and back is no
+      // oscillation: the start itself cannot be integrated.
+      const auto& ref = series[options.reference];
+      int sign_changes = 0;
+      for (std::size_t i = 1; i < ref.size(); ++i)
+        if ((ref[i] > 0.0) != (ref[i - 1] > 0.0)) ++sign_changes;
+      if (sign_changes < 2) {
+        throw std::runtime_error(fmt::format(
+            "the run failed at its start, before one oscillation (t = {:.3g} s: {}); the "
+            "initial state cannot be integrated (a disturbance that puts a wheel into the rail?)",
+            res.t_reached, res.message));
+      }
+    }
     if (left_bounds || res.status == vehicle::IntegrationResult::Status::kSolverFailure) {
       r.outcome = Oscillation::kDiverged;
       r.message = left_bounds ? fmt::format("amplitude above {} at t = {:.4g} s",

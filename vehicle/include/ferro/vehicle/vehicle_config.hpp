@@ -93,6 +93,12 @@ struct WheelRailSpec {
   /// (EN 13715 / S1002 profiles: -0.070).
   double flange_back_y = kNaN;
   double rail_inclination = 0.0;        ///< applied to the rail profile as read [rad]
+  /// Geometry "table" / "search": when finite, the wheel tread for wheel-profile y >=
+  /// wheel_tread_join_y is replaced by a cone of this conicity, continuous at the join, flange
+  /// and root kept (contact::splice_conical_tread; the thesis' S1002 with a 1/10 conical tread).
+  /// NaN: the wheel profile as read [-].
+  double wheel_tread_conicity = kNaN;
+  double wheel_tread_join_y = kNaN;     ///< [m], wheel-profile coordinates
   double conicity = kNaN;               ///< geometry "conical" [-]
   double contact_half_distance = kNaN;  ///< e, geometry "conical" [m]
   double conical_curvature_a = kNaN;    ///< A, geometry "conical" [1/m]

@@ -75,7 +75,10 @@ struct SettleResult {
 };
 
 /// Integrates `system` from x0 in segments until the reference amplitude settles, decays or
-/// diverges (or max_time). Throws std::invalid_argument for bad options.
+/// diverges (or max_time). Throws std::invalid_argument for bad options, and
+/// std::runtime_error when the solver fails before the reference state has swung across zero
+/// and back once: a start that cannot be integrated (e.g. a wheel put into the rail by the
+/// disturbance) is no oscillation.
 [[nodiscard]] SettleResult run_until_settled(const vehicle::OdeSystem& system,
                                              std::span<const double> x0,
                                              const SettleOptions& options);
