@@ -11,7 +11,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <numeric>
 #include <stdexcept>
 
@@ -709,34 +708,6 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
 
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-
-// The source `cs` asks for, on the wheel profile with its tread replaced by a cone (the pair is
-// built here because the contact factory takes profile files); the table cache works as in
-// contact::make_contact_source (fingerprint of the spliced pair and the grid).
-std::shared_ptr<const contact::ContactGeometrySource> make_source_with_conical_tread(
-    const contact::ContactSourceSpec& cs, double conicity, double join_y) {
-  require(std::isfinite(join_y),
-          "wheel_rail.wheel_tread_join_y: required with wheel_tread_conicity [m]");
-  const contact::Profile wheel = contact::splice_conical_tread(
-      contact::read_profile(cs.wheel_profile, contact::ProfileKind::wheel), conicity, join_y);
-  const auto pair = std::make_shared<const contact::WheelRailPair>(
-      wheel, contact::read_profile(cs.rail_profile, contact::ProfileKind::rail), cs.pair);
-  if (cs.kind == "search") return std::make_shared<const contact::SearchContactSource>(pair);
-  const std::uint64_t fp = contact::MultiPointContactTable::fingerprint(*pair, cs.table);
-  if (!cs.table_file.empty() && std::filesystem::exists(cs.table_file)) {
-    auto t = std::make_shared<contact::MultiPointContactTable>(
-        contact::MultiPointContactTable::load_hdf5(cs.table_file));
-    if (t->fingerprint() == fp) return t;
-  }
-  auto t = std::make_shared<contact::MultiPointContactTable>(
-      contact::MultiPointContactTable::build(*pair, cs.table));
-  if (!cs.table_file.empty()) t->save_hdf5(cs.table_file);
-  return t;
-}
-
-}  // namespace
-
 std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
     const WheelRailSpec& spec, const std::string& base_dir) {
   const auto resolve = [&base_dir](const std::string& path) {
@@ -766,6 +737,12 @@ std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
     cs.pair.nominal_radius = spec.nominal_radius;
     cs.pair.rail_inclination = spec.rail_inclination;
     cs.table_file = resolve(spec.table_file);
+    if (std::isfinite(spec.wheel_tread_conicity)) {
+      require(std::isfinite(spec.wheel_tread_join_y),
+              "wheel_rail.wheel_tread_join_y: required with wheel_tread_conicity [m]");
+      cs.wheel_tread_conicity = spec.wheel_tread_conicity;
+      cs.wheel_tread_join_y = spec.wheel_tread_join_y;
+    }
   } else if (spec.geometry == "imported") {
     require(!spec.imported_table.empty(),
             "wheel_rail.imported_table: required by geometry imported");
@@ -776,11 +753,6 @@ std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
         spec.geometry));
   }
   try {
-    if (std::isfinite(spec.wheel_tread_conicity) &&
-        (spec.geometry == "search" || spec.geometry == "table")) {
-      return make_source_with_conical_tread(cs, spec.wheel_tread_conicity,
-                                            spec.wheel_tread_join_y);
-    }
     return contact::make_contact_source(cs);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(

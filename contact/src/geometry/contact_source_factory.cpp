@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -21,9 +22,16 @@ std::shared_ptr<const WheelRailPair> make_pair(const ContactSourceSpec& spec) {
         "ContactSourceSpec.wheel_profile/rail_profile: geometry '{}' needs both profile files",
         spec.kind));
   }
-  return std::make_shared<const WheelRailPair>(read_profile(spec.wheel_profile, ProfileKind::wheel),
-                                               read_profile(spec.rail_profile, ProfileKind::rail),
-                                               spec.pair);
+  Profile wheel = read_profile(spec.wheel_profile, ProfileKind::wheel);
+  if (std::isfinite(spec.wheel_tread_conicity)) {
+    if (!std::isfinite(spec.wheel_tread_join_y)) {
+      throw std::invalid_argument(
+          "ContactSourceSpec.wheel_tread_join_y: required with wheel_tread_conicity [m]");
+    }
+    wheel = splice_conical_tread(wheel, spec.wheel_tread_conicity, spec.wheel_tread_join_y);
+  }
+  return std::make_shared<const WheelRailPair>(
+      wheel, read_profile(spec.rail_profile, ProfileKind::rail), spec.pair);
 }
 
 }  // namespace

@@ -306,6 +306,10 @@ struct ContactSourceSpec {
   /// CSV table), "conical" (analytic cone).
   std::string kind = "table";
   std::string wheel_profile;   ///< table, search: wheel profile file (read_profile)
+  /// table, search: when finite, the wheel's tread is replaced by a cone of this conicity from
+  /// wheel_tread_join_y on (splice_conical_tread(); the thesis' 1/10 variant) [-, m].
+  double wheel_tread_conicity = std::numeric_limits<double>::quiet_NaN();
+  double wheel_tread_join_y = std::numeric_limits<double>::quiet_NaN();
   std::string rail_profile;    ///< table, search: rail profile file (read_profile)
   WheelRailPairParams pair;    ///< table, search
   MultiPointTableParams table; ///< table: grid
