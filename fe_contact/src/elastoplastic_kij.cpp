@@ -1,0 +1,88 @@
+// K_ij range of a wheel on an elasto-plastic rail (first pass, shaken down).
+//
+// References: see elastoplastic_kij.hpp.
+// Known deviations: see elastoplastic_kij.hpp (elastic normal compliance, stationary yielded
+// zone, elastic wheel).
+
+#include "ferro/fe_contact/elastoplastic_kij.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+
+#include "ferro/contact/mim/influence_operator.hpp"
+#include "ferro/fe_contact/matrix_operator.hpp"
+
+namespace ferro::fe_contact {
+
+namespace mim = contact::mim;
+
+void ElastoplasticKijSpec::validate(const std::string& where) const {
+  contact.validate(where + ".contact");
+  RailSteel steel;
+  steel.elastic = contact.body;
+  steel.yield_stress = yield_stress;
+  steel.hardening_modulus = hardening_modulus;
+  steel.validate(where);
+  HertzLoadCase load;
+  load.semi_axis_x = contact.semi_axis_x();
+  load.semi_axis_y = contact.semi_axis_y();
+  load.peak_pressure = 1.0;
+  load.elements_per_semi_axis = elements_per_semi_axis;
+  load.load_steps = load_steps;
+  load.growth = growth;
+  load.extent = extent;
+  load.validate(where);
+}
+
+ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spec,
+                                                 const SlopeOptions& options) {
+  spec.validate();
+  options.validate();
+  const std::clock_t cpu0 = std::clock();
+  const double a = spec.contact.semi_axis_x(), b = spec.contact.semi_axis_y();
+  RailSteel steel;
+  steel.elastic = spec.contact.body;
+  steel.yield_stress = spec.yield_stress;
+  steel.hardening_modulus = spec.hardening_modulus;
+  HertzLoadCase load;
+  load.semi_axis_x = a;
+  load.semi_axis_y = b;
+  load.peak_pressure = 3.0 * spec.contact.normal_force / (2.0 * M_PI * a * b);
+  load.elements_per_semi_axis = spec.elements_per_semi_axis;
+  load.load_steps = spec.load_steps;
+  load.growth = spec.growth;
+  load.extent = spec.extent;
+  load.compliance_grid = elastoplastic_grid(a, b, spec.elements_per_semi_axis);
+
+  ElastoplasticKij out;
+  out.grid = load.compliance_grid;
+  out.cycle = hertz_load_cycle(steel, load);
+
+  const contact::CombinedMaterial pair = contact::combine(spec.contact.body, spec.contact.body);
+  const mim::Field gap = spec.contact.gap(out.grid);
+  SlopeCase sc;
+  sc.normal_force = spec.contact.normal_force;
+  sc.friction = spec.contact.friction;
+  sc.semi_axis_x = a;
+  mim::InfluenceOperator half_space(out.grid, pair);
+
+  // First pass: half-space pair plus the yielded rail's tangential correction.
+  SurfaceCompliance loaded = SurfaceCompliance::half_space(out.grid, pair);
+  loaded.add_tangential(out.cycle.tangent_correction);
+  MatrixComplianceOperator first_pass(std::move(loaded), pair);
+  out.first_pass = reduction_factors(first_pass, half_space, gap, sc, options);
+
+  // Shaken down: elastic compliance, the residual dent deepens the gap.
+  mim::Field dented = gap;
+  for (std::size_t i = 0; i < dented.size(); ++i) dented[i] += out.cycle.residual_dent[i];
+  out.shaken_down.half_space = out.first_pass.half_space;
+  out.shaken_down.modified = creep_stiffness(half_space, dented, sc, options);
+  out.shaken_down.update_ratios();
+  out.cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  return out;
+}
+
+}  // namespace ferro::fe_contact
