@@ -65,6 +65,7 @@ void HertzLoadCase::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.load_steps: must be in [1, 100], got {}", where, load_steps));
   }
+  if (dent_grid.nx != 0) dent_grid.validate(where + ".dent_grid");
   if (compliance_grid.nx != 0) {
     const contact::mim::Grid& g = compliance_grid;
     g.validate(where + ".compliance_grid");
@@ -410,9 +411,10 @@ ElastoplasticResult hertz_load_cycle(const RailSteel& steel, const HertzLoadCase
     solve_at(static_cast<double>(step) / load.load_steps);
   }
   out.displacement_loaded = -md.real_variable("u")[centre_dof] * 1e-3;
+  const contact::mim::Grid& dent_grid = load.dent_grid.nx != 0 ? load.dent_grid : grid;
   SurfaceSampler sampler;
+  if (dent_grid.nx != 0) sampler = SurfaceSampler(mf, body.s, body.t);
   if (with_compliance) {
-    sampler = SurfaceSampler(mf, body.s, body.t);
     const TangentInput in{&m, &mf, &im, &im_tensor, &im_scalar, &cell, &body, &grid, &steel};
     out.tangent_correction =
         tangent_correction(in, md, ep_before_last, sampler, kBottom, out.flowing_points);
@@ -430,9 +432,9 @@ ElastoplasticResult hertz_load_cycle(const RailSteel& steel, const HertzLoadCase
         }
   }
   out.displacement_residual = -md.real_variable("u")[centre_dof] * 1e-3;
-  if (with_compliance) {
+  if (dent_grid.nx != 0) {
     const getfem::model_real_plain_vector& u = md.real_variable("u");
-    out.residual_dent = contact::mim::sample(grid, [&](double x, double y) {
+    out.residual_dent = contact::mim::sample(dent_grid, [&](double x, double y) {
       return -sampler.value(u, x * 1e3, y * 1e3, 2) * 1e-3;
     });
   }

@@ -56,6 +56,10 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
   load.growth = spec.growth;
   load.extent = spec.extent;
   load.compliance_grid = elastoplastic_grid(a, b, spec.elements_per_semi_axis);
+  // The shaken-down rail is elastic (half-space compliance): its run needs no FE coefficients and
+  // takes the finer grid of the contact case, on which the dent is interpolated.
+  const mim::Grid fine = spec.contact.grid();
+  load.dent_grid = fine;
 
   ElastoplasticKij out;
   out.grid = load.compliance_grid;
@@ -75,12 +79,15 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
   MatrixComplianceOperator first_pass(std::move(loaded), pair);
   out.first_pass = reduction_factors(first_pass, half_space, gap, sc, options);
 
-  // Shaken down: elastic compliance, the residual dent deepens the gap.
-  mim::Field dented = gap;
+  // Shaken down: elastic compliance, the residual dent deepens the gap (fine grid).
+  const mim::Field fine_gap = spec.contact.gap(fine);
+  mim::Field dented = fine_gap;
   for (std::size_t i = 0; i < dented.size(); ++i) dented[i] += out.cycle.residual_dent[i];
-  out.shaken_down.half_space = out.first_pass.half_space;
-  out.shaken_down.modified = creep_stiffness(half_space, dented, sc, options);
+  mim::InfluenceOperator fine_half_space(fine, pair);
+  out.shaken_down.half_space = creep_stiffness(fine_half_space, fine_gap, sc, options);
+  out.shaken_down.modified = creep_stiffness(fine_half_space, dented, sc, options);
   out.shaken_down.update_ratios();
+  out.fine_grid = fine;
   out.cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   return out;
 }

@@ -56,6 +56,9 @@ struct HertzLoadCase {
   /// and ny so that the patch centre is a node); nx == 0: no compliance, the mesh has cells of
   /// min(a, b) / elements_per_semi_axis over 1.25 a x 1.25 b.
   contact::mim::Grid compliance_grid;
+  /// Grid on whose element centres the residual dent is sampled (any grid inside the mesh's
+  /// surface; the FE field is interpolated); nx == 0: the compliance grid.
+  contact::mim::Grid dent_grid;
   void validate(const std::string& where = "HertzLoadCase") const;
   /// Normal force of the Hertz pressure, 2 pi a b p0 / 3 [N].
   [[nodiscard]] double normal_force() const;
@@ -74,7 +77,8 @@ struct ElastoplasticResult {
   /// tangent) minus that of the same mesh elastic, single body in the contact frame (x rolling,
   /// y lateral, z outward; zz left zero) [m/Pa].
   SurfaceCompliance tangent_correction;
-  /// With a compliance grid: residual u_z into the rail at the grid-element centres [m].
+  /// With a compliance or dent grid: residual u_z into the rail at the dent grid's element
+  /// centres [m].
   contact::mim::Field residual_dent;
   int flowing_points = 0;  ///< integration points flowing in the last load step [-]
   /// Integration points whose plastic strain changed during unloading (0: the unloading was

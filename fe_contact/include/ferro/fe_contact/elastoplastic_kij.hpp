@@ -7,6 +7,9 @@
 // - shaken down: after unloading the rail responds elastically about its residual state (checked:
 //   no plastic flow during unloading, so reloading retraces the unloading path), its compliance
 //   is the elastic one and only its geometry has changed: the residual dent is added to the gap.
+//   This run needs no FE coefficients, so it takes the contact case's finer grid
+//   (HertzCase::elements_minor, margin), on which the FE dent is interpolated: a dent of a few um
+//   changes the patch by less than one element of the FE-cell grid.
 // The wheel is an elastic half-space in both.
 //
 // References: Toumi (2016) section 3.3 (elasto-plastic rail, K11ep = 0.63, K22ep = 0.46 against
@@ -27,8 +30,9 @@
 namespace ferro::fe_contact {
 
 struct ElastoplasticKijSpec {
-  /// Load, Hertz patch (scaled from its reference), wheel and rail steel elasticity, friction.
-  /// elements_minor and margin are not used (the grid is the FE mesh's surface cells).
+  /// Load, Hertz patch (scaled from its reference), wheel and rail steel elasticity, friction;
+  /// elements_minor and margin give the shaken-down run's grid (the first pass runs on the FE
+  /// mesh's surface cells).
   HertzCase contact;
   double yield_stress = kNaN;      ///< rail sigma_y [Pa]
   double hardening_modulus = 0.0;  ///< rail H [Pa] (see RailSteel)
@@ -41,9 +45,10 @@ struct ElastoplasticKijSpec {
 
 struct ElastoplasticKij {
   ElastoplasticResult cycle;  ///< the load-unload cycle (Table 3.9 quantities)
-  contact::mim::Grid grid;
+  contact::mim::Grid grid;       ///< first-pass grid (the FE surface cells)
+  contact::mim::Grid fine_grid;  ///< shaken-down grid (the contact case's)
   SlopeResult first_pass;   ///< yielded rail under load (frozen tangent) vs half-space
-  SlopeResult shaken_down;  ///< elastic rail with the residual dent vs half-space (same gap, F_n)
+  SlopeResult shaken_down;  ///< elastic rail with the residual dent vs half-space (same F_n)
   double cpu_seconds = 0.0;  ///< whole computation [s]
 };
 
