@@ -65,6 +65,10 @@ void HertzLoadCase::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.load_steps: must be in [1, 100], got {}", where, load_steps));
   }
+  if (unload_steps < 0 || unload_steps > 100) {
+    throw std::invalid_argument(
+        fmt::format("{}.unload_steps: must be in [0, 100], got {}", where, unload_steps));
+  }
   if (dent_grid.nx != 0) dent_grid.validate(where + ".dent_grid");
   if (compliance_grid.nx != 0) {
     const contact::mim::Grid& g = compliance_grid;
@@ -420,8 +424,8 @@ ElastoplasticResult hertz_load_cycle(const RailSteel& steel, const HertzLoadCase
         tangent_correction(in, md, ep_before_last, sampler, kBottom, out.flowing_points);
   }
   const getfem::model_real_plain_vector ep_peak = md.real_variable("Previous_Ep");
-  for (int step = load.load_steps - 1; step >= 0; --step)
-    solve_at(static_cast<double>(step) / load.load_steps);
+  const int unload = load.unload_steps > 0 ? load.unload_steps : load.load_steps;
+  for (int step = unload - 1; step >= 0; --step) solve_at(static_cast<double>(step) / unload);
   {
     const getfem::model_real_plain_vector& ep_end = md.real_variable("Previous_Ep");
     for (std::size_t q = 0; q < ep_end.size() / 9; ++q)

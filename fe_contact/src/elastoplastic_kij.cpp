@@ -32,6 +32,7 @@ void ElastoplasticKijSpec::validate(const std::string& where) const {
   load.peak_pressure = 1.0;
   load.elements_per_semi_axis = elements_per_semi_axis;
   load.load_steps = load_steps;
+  load.unload_steps = unload_steps;
   load.growth = growth;
   load.extent = extent;
   load.validate(where);
@@ -53,13 +54,17 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
   load.peak_pressure = 3.0 * spec.contact.normal_force / (2.0 * M_PI * a * b);
   load.elements_per_semi_axis = spec.elements_per_semi_axis;
   load.load_steps = spec.load_steps;
+  load.unload_steps = spec.unload_steps;
   load.growth = spec.growth;
   load.extent = spec.extent;
   load.compliance_grid = elastoplastic_grid(a, b, spec.elements_per_semi_axis);
   // The shaken-down rail is elastic (half-space compliance): its run needs no FE coefficients and
-  // takes the finer grid of the contact case, on which the dent is interpolated.
+  // takes the finer grid of the contact case. A rolling pass leaves a groove invariant along the
+  // rail: the stationary dent's cross-section through the patch centre (x = 0), one column.
   const mim::Grid fine = spec.contact.grid();
   load.dent_grid = fine;
+  load.dent_grid.nx = 2;  // the smallest grid; column 0 is x = 0
+  load.dent_grid.x0 = 0.0;
 
   ElastoplasticKij out;
   out.grid = load.compliance_grid;
@@ -79,10 +84,12 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
   MatrixComplianceOperator first_pass(std::move(loaded), pair);
   out.first_pass = reduction_factors(first_pass, half_space, gap, sc, options);
 
-  // Shaken down: elastic compliance, the residual dent deepens the gap (fine grid).
+  // Shaken down: elastic compliance, the residual groove deepens the gap (fine grid).
   const mim::Field fine_gap = spec.contact.gap(fine);
   mim::Field dented = fine_gap;
-  for (std::size_t i = 0; i < dented.size(); ++i) dented[i] += out.cycle.residual_dent[i];
+  for (int iy = 0; iy < fine.ny; ++iy)
+    for (int ix = 0; ix < fine.nx; ++ix)
+      dented[fine.index(ix, iy)] += out.cycle.residual_dent[load.dent_grid.index(0, iy)];
   mim::InfluenceOperator fine_half_space(fine, pair);
   out.shaken_down.half_space = creep_stiffness(fine_half_space, fine_gap, sc, options);
   out.shaken_down.modified = creep_stiffness(fine_half_space, dented, sc, options);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -59,7 +60,8 @@ struct FeKijConfig {
 //   axes:    {normal_force: [...], layer_thickness: [...], layer_shear_modulus: [...],
 //             layer_yield_shear: [...], yield_stress: [...]}  # any non-empty subset;
 //                                                         # yield_stress: only with normal_force
-//   plastic: {elements_per_semi_axis, load_steps, hardening_modulus, growth, extent}
+//   plastic: {elements_per_semi_axis, load_steps, unload_steps, hardening_modulus, growth,
+//             extent}
 //                                                         # FE rail with the yield_stress axis
 //   solver:  {tolerance, probe_creepage, probe_spin_times_a}
 //   curves:  {creepages: [...]}                           # optional
@@ -112,6 +114,7 @@ FeKijConfig read_config(const std::string& path) {
     fe_contact::ElastoplasticKijSpec& e = s.plastic;
     e.elements_per_semi_axis = static_cast<int>(pl.integer_or("elements_per_semi_axis", 4));
     e.load_steps = static_cast<int>(pl.integer_or("load_steps", 6));
+    e.unload_steps = static_cast<int>(pl.integer_or("unload_steps", 0));
     e.hardening_modulus = pl.number_or("hardening_modulus", 0.0);
     e.growth = pl.number_or("growth", 1.6);
     e.extent = pl.number_or("extent", 12.0);
@@ -174,9 +177,16 @@ bool read_journal(const fs::path& dir, std::size_t i, contact::ReductionFactors&
       ls >> f.k11 >> f.k22 >> f.k23 >> f.k33;
       first = static_cast<bool>(ls) && positive(f);
     } else if (tag == "cycle") {
+      // Tokens through strtod: an elastic point has no plastic-strain depth ("nan").
       plastic->cycle.assign(8, 0.0);
-      for (double& v : plastic->cycle) ls >> v;
-      cycle = static_cast<bool>(ls);
+      cycle = true;
+      for (double& v : plastic->cycle) {
+        std::string token;
+        ls >> token;
+        char* end = nullptr;
+        v = std::strtod(token.c_str(), &end);
+        cycle = cycle && !token.empty() && end == token.c_str() + token.size();
+      }
     }
   }
   return first && cycle;
@@ -301,9 +311,12 @@ int run_fe_kij(const std::string& config_path, bool restart) {
         "(elasto-plastic rail + elastic half-space wheel vs half-space pair)";
     prov["mesh_sizes"] = fmt::format(
         "J2 rail block, trilinear hexahedra: {} cells across min(a, b) = the MIM grid elements, "
-        "growth {:g}, extent {:g} max(a, b); {} load steps up and down; hardening modulus {:g} Pa",
+        "growth {:g}, extent {:g} max(a, b); {} load steps up, {} down; hardening modulus {:g} "
+        "Pa",
         spec.plastic.elements_per_semi_axis, spec.plastic.growth, spec.plastic.extent,
-        spec.plastic.load_steps, spec.plastic.hardening_modulus);
+        spec.plastic.load_steps,
+        spec.plastic.unload_steps > 0 ? spec.plastic.unload_steps : spec.plastic.load_steps,
+        spec.plastic.hardening_modulus);
     prov["range"] =
         "K11..K33: shaken down (elastic rail about its residual state, residual dent in the "
         "gap); K*_first_pass: first pass (frozen elasto-plastic tangent of the rail under the "

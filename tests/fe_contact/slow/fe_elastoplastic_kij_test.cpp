@@ -114,7 +114,11 @@ TEST_P(Table39, row) {
   s.contact.friction = 0.2;
   s.yield_stress = r.yield_stress;
   s.elements_per_semi_axis = 4;
-  s.load_steps = 6;
+  // 4 steps up, 1 down: against 6 and 6 (the table's setting) the residual moves by 0.25 %, the
+  // first-pass K by < 1e-5, at 80 % of the CPU (docs/VALIDATION.md); one unloading step is exact
+  // while the unloading is elastic (checked below).
+  s.load_steps = 4;
+  s.unload_steps = 1;
   const ElastoplasticKij k = elastoplastic_reduction_factors(s);
   const ElastoplasticResult& c = k.cycle;
   const double p0_yield = r.yield_stress / hertz_circular_axis_von_mises_peak(kSteel.poisson).ratio;
@@ -138,6 +142,7 @@ TEST_P(Table39, row) {
     EXPECT_NEAR(k.shaken_down.k.k11, 1.0, kSameCompliance);
   } else if (c.peak_pressure > (1.0 + kYieldMargin) * p0_yield) {
     EXPECT_GT(c.flowing_points, 0);
+    EXPECT_EQ(c.reverse_flowing_points, 0);
     EXPECT_LT(k.first_pass.k.k11, 1.0 - kVisibleReduction);
     EXPECT_LT(k.first_pass.k.k22, 1.0 - kVisibleReduction);
   }

@@ -52,6 +52,9 @@ struct HertzLoadCase {
   double growth = 1.6;             ///< size ratio of successive cells outside the patch [-]
   double extent = 12.0;            ///< block half-size in units of max(a, b) [-]
   int load_steps = 4;              ///< equal load increments up to p0 [-]
+  /// Equal decrements back to zero; 0: as many as load_steps. One is exact when the unloading
+  /// is elastic (ElastoplasticResult::reverse_flowing_points == 0) [-].
+  int unload_steps = 0;
   /// Grid of the rail compliance: its elements are the mesh's surface cells (centred, even nx
   /// and ny so that the patch centre is a node); nx == 0: no compliance, the mesh has cells of
   /// min(a, b) / elements_per_semi_axis over 1.25 a x 1.25 b.

@@ -6,11 +6,18 @@
 //   half-space: the FE tangent minus the same mesh elastic, so the FE discretisation cancels);
 // - shaken down: after unloading the rail responds elastically about its residual state (checked:
 //   no plastic flow during unloading, so reloading retraces the unloading path), its compliance
-//   is the elastic one and only its geometry has changed: the residual dent is added to the gap.
-//   This run needs no FE coefficients, so it takes the contact case's finer grid
-//   (HertzCase::elements_minor, margin), on which the FE dent is interpolated: a dent of a few um
-//   changes the patch by less than one element of the FE-cell grid.
-// The wheel is an elastic half-space in both.
+//   is the elastic one and only its geometry has changed: the residual groove is added to the gap.
+//   A rolling pass leaves a groove invariant along the rail; we take the cross-section of the
+//   stationary cycle's residual dent through the patch centre as its profile. This run needs no
+//   FE coefficients, so it takes the contact case's finer grid (HertzCase::elements_minor,
+//   margin), on which the FE dent is interpolated: a groove of a few um changes the patch by less
+//   than one element of the FE-cell grid.
+// The wheel is an elastic half-space in both. Why this method: the initial creep slope is that of
+// full adhesion at vanishing creepage, i.e. an incremental problem about the loaded state, so the
+// only compliance that enters is the rail's tangent compliance there; freezing the plastic state
+// and taking every flowing point as loading gives the softest first-pass response (a lower
+// bound of the first-pass K); once the cycle has shaken down the increments about the residual
+// state are elastic (Melan), so only the changed geometry remains.
 //
 // References: Toumi (2016) section 3.3 (elasto-plastic rail, K11ep = 0.63, K22ep = 0.46 against
 // Kalker's C_ij with the elastic FE model at 0.72 / 0.56; R900A, 350HT; Table 3.9), eqs. (146)-
@@ -20,7 +27,8 @@
 // pressure does not redistribute as the rail yields: the thesis's p_max drops 5-15 %); the first
 // pass takes the stationary load's yielded zone and every flowing point as loading (see
 // elastoplastic.hpp), not the asymmetric zone of a rolling load; the wheel stays elastic (in the
-// thesis both are R900A); hardening as in elastoplastic.hpp.
+// thesis both are R900A); the groove's depth is that of the stationary cycle (a rolling pass
+// ratchets more); hardening as in elastoplastic.hpp.
 
 #include "ferro/contact/mim/grid.hpp"
 #include "ferro/fe_contact/creep_slopes.hpp"
@@ -38,6 +46,7 @@ struct ElastoplasticKijSpec {
   double hardening_modulus = 0.0;  ///< rail H [Pa] (see RailSteel)
   int elements_per_semi_axis = 4;  ///< FE cells and grid elements across min(a, b) [-]
   int load_steps = 6;              ///< equal load increments up to p0 [-]
+  int unload_steps = 0;            ///< equal decrements to zero (0: load_steps) [-]
   double growth = 1.6;             ///< FE cell growth outside the grid [-]
   double extent = 12.0;            ///< FE block half-size over max(a, b) [-]
   void validate(const std::string& where = "ElastoplasticKijSpec") const;
