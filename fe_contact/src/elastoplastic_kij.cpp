@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "ferro/contact/mim/influence_operator.hpp"
+#include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/fe_contact/matrix_operator.hpp"
 
 namespace ferro::fe_contact {
@@ -60,11 +61,15 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
   load.compliance_grid = elastoplastic_grid(a, b, spec.elements_per_semi_axis);
   // The shaken-down rail is elastic (half-space compliance): its run needs no FE coefficients and
   // takes the finer grid of the contact case. A rolling pass leaves a groove invariant along the
-  // rail: the stationary dent's cross-section through the patch centre (x = 0), one column.
+  // rail: the stationary dent's cross-section through the patch centre (x = 0), sampled on one
+  // column three times the fine grid's width (a deep groove widens the patch).
   const mim::Grid fine = spec.contact.grid();
+  const int extra = fine.ny;  // rows added each side of the sampled column
   load.dent_grid = fine;
   load.dent_grid.nx = 2;  // the smallest grid; column 0 is x = 0
   load.dent_grid.x0 = 0.0;
+  load.dent_grid.ny = fine.ny + 2 * extra;
+  load.dent_grid.y0 = fine.y0 - extra * fine.dy;
 
   ElastoplasticKij out;
   out.grid = load.compliance_grid;
@@ -84,17 +89,34 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
   MatrixComplianceOperator first_pass(std::move(loaded), pair);
   out.first_pass = reduction_factors(first_pass, half_space, gap, sc, options);
 
-  // Shaken down: elastic compliance, the residual groove deepens the gap (fine grid).
-  const mim::Field fine_gap = spec.contact.gap(fine);
-  mim::Field dented = fine_gap;
-  for (int iy = 0; iy < fine.ny; ++iy)
-    for (int ix = 0; ix < fine.nx; ++ix)
-      dented[fine.index(ix, iy)] += out.cycle.residual_dent[load.dent_grid.index(0, iy)];
-  mim::InfluenceOperator fine_half_space(fine, pair);
-  out.shaken_down.half_space = creep_stiffness(fine_half_space, fine_gap, sc, options);
-  out.shaken_down.modified = creep_stiffness(fine_half_space, dented, sc, options);
-  out.shaken_down.update_ratios();
-  out.fine_grid = fine;
+  // Shaken down: elastic compliance, the residual groove deepens the gap (fine grid, widened by
+  // rows of the same size, same row lattice, until the dented patch stays off its boundary).
+  for (int widen = 0;; widen += fine.ny / 2) {
+    if (widen > extra) {
+      throw std::runtime_error(fmt::format(
+          "elastoplastic_reduction_factors: the patch on the grooved rail is wider than {} "
+          "elements",
+          fine.ny + 2 * extra));
+    }
+    mim::Grid g = fine;
+    g.ny = fine.ny + 2 * widen;
+    g.y0 = fine.y0 - widen * fine.dy;
+    const mim::Field g_gap = spec.contact.gap(g);
+    mim::Field dented = g_gap;
+    for (int iy = 0; iy < g.ny; ++iy)
+      for (int ix = 0; ix < g.nx; ++ix)
+        dented[g.index(ix, iy)] +=
+            out.cycle.residual_dent[load.dent_grid.index(0, iy + extra - widen)];
+    mim::InfluenceOperator g_half_space(g, pair);
+    const mim::NormalSolution n =
+        mim::solve_normal_force(g_half_space, dented, sc.normal_force, options.mim.normal);
+    if (n.boundary_contact_elements > 0) continue;
+    out.shaken_down.half_space = creep_stiffness(g_half_space, g_gap, sc, options);
+    out.shaken_down.modified = creep_stiffness(g_half_space, dented, sc, options);
+    out.shaken_down.update_ratios();
+    out.fine_grid = g;
+    break;
+  }
   out.cpu_seconds = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   return out;
 }

@@ -55,7 +55,7 @@ struct ElastoplasticKijSpec {
 struct ElastoplasticKij {
   ElastoplasticResult cycle;  ///< the load-unload cycle (Table 3.9 quantities)
   contact::mim::Grid grid;       ///< first-pass grid (the FE surface cells)
-  contact::mim::Grid fine_grid;  ///< shaken-down grid (the contact case's)
+  contact::mim::Grid fine_grid;  ///< shaken-down grid (the contact case's, widened if needed)
   SlopeResult first_pass;   ///< yielded rail under load (frozen tangent) vs half-space
   SlopeResult shaken_down;  ///< elastic rail with the residual dent vs half-space (same F_n)
   double cpu_seconds = 0.0;  ///< whole computation [s]
