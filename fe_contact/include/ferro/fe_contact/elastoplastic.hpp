@@ -24,7 +24,8 @@
 // with every flowing point taken as loading (no elastic unloading of points the tangential
 // increment relieves: the softest first-pass response); the tangent's hardening term takes H as
 // GetFEM's isotropic modulus Hi (exact for perfect plasticity, H = 0, the runs of Table 3.9);
-// trilinear hexahedra with full integration (some volumetric locking of the plastic flow).
+// trilinear hexahedra with full integration (prone to volumetric locking under isochoric
+// plastic flow: a stiffer plastic response).
 
 #include <string>
 
