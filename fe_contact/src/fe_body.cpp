@@ -124,6 +124,34 @@ bgeot::short_type hexahedron_w_face(const getfem::mesh& m, std::size_t convex, i
   throw std::logic_error("hexahedron_w_face: no such face");
 }
 
+Eigen::MatrixXd solve_clamped(const getfem::model_real_sparse_matrix& K,
+                              const std::vector<long>& free_index, long nfree,
+                              const Eigen::MatrixXd& B, const char* where) {
+  const std::size_t ndof = free_index.size();
+  gmm::csc_matrix<double> Kc;
+  gmm::copy(K, Kc);
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(Kc.pr.size() / 2 + ndof);
+  for (std::size_t col = 0; col < ndof; ++col) {
+    if (free_index[col] < 0) continue;
+    for (std::size_t p = Kc.jc[col]; p < Kc.jc[col + 1]; ++p) {
+      const std::size_t row = Kc.ir[p];
+      if (free_index[row] < 0 || free_index[row] < free_index[col]) continue;  // lower triangle
+      trip.emplace_back(free_index[row], free_index[col], Kc.pr[p]);
+    }
+  }
+  Eigen::SparseMatrix<double> A(nfree, nfree);
+  A.setFromTriplets(trip.begin(), trip.end());
+  trip = {};
+  Kc = gmm::csc_matrix<double>();
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  llt.compute(A);
+  if (llt.info() != Eigen::Success) {
+    throw std::runtime_error(fmt::format("{}: CHOLMOD factorisation failed", where));
+  }
+  return llt.solve(B);
+}
+
 }  // namespace detail
 
 namespace {
@@ -221,28 +249,6 @@ FeInfluence surface_influence(const StructuredBody& body, const mim::Grid& g,
   if (nfree == static_cast<long>(ndof)) {
     throw std::invalid_argument("surface_influence: no clamped node (rigid-body motion)");
   }
-  gmm::csc_matrix<double> Kc;
-  gmm::copy(K, Kc);
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(Kc.pr.size() / 2 + ndof);
-  for (std::size_t col = 0; col < ndof; ++col) {
-    if (free_index[col] < 0) continue;
-    for (std::size_t p = Kc.jc[col]; p < Kc.jc[col + 1]; ++p) {
-      const std::size_t row = Kc.ir[p];
-      if (free_index[row] < 0 || free_index[row] < free_index[col]) continue;  // lower triangle
-      trip.emplace_back(free_index[row], free_index[col], Kc.pr[p]);
-    }
-  }
-  Eigen::SparseMatrix<double> A(nfree, nfree);
-  A.setFromTriplets(trip.begin(), trip.end());
-  trip = {};
-  Kc = gmm::csc_matrix<double>();
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
-  llt.compute(A);
-  if (llt.info() != Eigen::Success) {
-    throw std::runtime_error("surface_influence: CHOLMOD factorisation failed");
-  }
-
   const bgeot::short_type top_face =
       detail::hexahedron_w_face(m, m.convex_index().first_true(), 1);
 
@@ -277,7 +283,7 @@ FeInfluence surface_influence(const StructuredBody& body, const mim::Grid& g,
         if (free_index[i] >= 0) B(free_index[i], 3 * is + d) = rhs[i];
     }
   }
-  const Eigen::MatrixXd X = llt.solve(B);
+  const Eigen::MatrixXd X = detail::solve_clamped(K, free_index, nfree, B, "surface_influence");
 
   // Sampling: FE interpolation at the grid-element centres (w = 0) of every column offset.
   FeInfluence out;

@@ -1,7 +1,8 @@
 // K_ij sweep over wheel load and interfacial-layer parameters.
 //
 // References: see kij_sweep.hpp.
-// Known deviations: see kij_sweep.hpp (layer operator only).
+// Known deviations: see kij_sweep.hpp (no finite-body axis; elasto-plastic rail without layer
+// or curves).
 
 #include "ferro/fe_contact/kij_sweep.hpp"
 
@@ -17,8 +18,13 @@ namespace ferro::fe_contact {
 
 const std::vector<std::string>& sweep_axis_names() {
   static const std::vector<std::string> names{"normal_force", "layer_thickness",
-                                              "layer_shear_modulus", "layer_yield_shear"};
+                                              "layer_shear_modulus", "layer_yield_shear",
+                                              "yield_stress"};
   return names;
+}
+
+bool KijSweepSpec::elastoplastic() const {
+  return std::find(axis_names.begin(), axis_names.end(), "yield_stress") != axis_names.end();
 }
 
 void KijSweepSpec::validate(const std::string& where) const {
@@ -35,7 +41,7 @@ void KijSweepSpec::validate(const std::string& where) const {
     if (std::find(allowed.begin(), allowed.end(), axis_names[i]) == allowed.end()) {
       throw std::invalid_argument(fmt::format(
           "{}.axes.{}: unknown axis; allowed: normal_force, layer_thickness, "
-          "layer_shear_modulus, layer_yield_shear",
+          "layer_shear_modulus, layer_yield_shear, yield_stress",
           where, axis_names[i]));
     }
     if (std::count(axis_names.begin(), axis_names.end(), axis_names[i]) > 1) {
@@ -52,6 +58,34 @@ void KijSweepSpec::validate(const std::string& where) const {
             ">= 0), got {}",
             where, axis_names[i], j, ax[j]));
       }
+    }
+  }
+  if (elastoplastic()) {
+    for (const std::string& n : axis_names) {
+      if (n.rfind("layer_", 0) == 0) {
+        throw std::invalid_argument(fmt::format(
+            "{}.axes.{}: the elasto-plastic rail (axis yield_stress) takes no layer axis; "
+            "allowed with yield_stress: normal_force",
+            where, n));
+      }
+    }
+    if (layer.thickness > 0.0) {
+      throw std::invalid_argument(fmt::format(
+          "{}.layer.thickness: must be 0 with the yield_stress axis (no layer on the "
+          "elasto-plastic rail), got {}",
+          where, layer.thickness));
+    }
+    if (!curve_creepages.empty()) {
+      throw std::invalid_argument(fmt::format(
+          "{}.curve_creepages: creep curves are not available with the yield_stress axis", where));
+    }
+    const std::size_t iy = static_cast<std::size_t>(
+        std::find(axis_names.begin(), axis_names.end(), "yield_stress") - axis_names.begin());
+    for (double v : axes[iy]) {
+      ElastoplasticKijSpec p = plastic;
+      p.contact = contact;
+      p.yield_stress = v;
+      p.validate(where + ".plastic");
     }
   }
   for (std::size_t j = 0; j < curve_creepages.size(); ++j) {
@@ -96,6 +130,22 @@ KijPoint compute_point(const KijSweepSpec& spec, std::size_t index) {
   InterfaceLayer layer;
   spec.configure(index, c, layer);
   KijPoint p;
+  if (spec.elastoplastic()) {
+    ElastoplasticKijSpec e = spec.plastic;
+    e.contact = c;
+    const std::vector<double> x = spec.coordinates(index);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (spec.axis_names[i] == "yield_stress") e.yield_stress = x[i];
+    const ElastoplasticKij r = elastoplastic_reduction_factors(e, spec.slope);
+    p.slopes = r.shaken_down;
+    p.has_first_pass = true;
+    p.first_pass = r.first_pass;
+    p.cycle = r.cycle;
+    p.nx = r.grid.nx;
+    p.ny = r.grid.ny;
+    p.element_size = r.grid.dx;
+    return p;
+  }
   p.slopes = layer_reduction_factors(c, layer, spec.slope);
   const contact::mim::Grid grid = c.grid();
   p.nx = grid.nx;
@@ -121,7 +171,8 @@ KijPoint compute_point(const KijSweepSpec& spec, std::size_t index) {
 
 contact::KijTable make_table(const KijSweepSpec& spec,
                              const std::vector<contact::ReductionFactors>& k,
-                             std::map<std::string, std::string> provenance) {
+                             std::map<std::string, std::string> provenance,
+                             const std::vector<contact::ReductionFactors>& first_pass) {
   if (k.size() != spec.points()) {
     throw std::invalid_argument(fmt::format("make_table: {} results for {} points", k.size(),
                                             spec.points()));
@@ -135,6 +186,20 @@ contact::KijTable make_table(const KijSweepSpec& spec,
   }
   contact::KijTable t(spec.axis_names, spec.axes, k11, k22, k23, k33);
   t.set_provenance(std::move(provenance));
+  if (!first_pass.empty()) {
+    if (first_pass.size() != k.size()) {
+      throw std::invalid_argument(fmt::format("make_table: {} first-pass results for {} points",
+                                              first_pass.size(), k.size()));
+    }
+    std::vector<double> f11, f22, f23, f33;
+    for (const contact::ReductionFactors& f : first_pass) {
+      f11.push_back(f.k11);
+      f22.push_back(f.k22);
+      f23.push_back(f.k23);
+      f33.push_back(f.k33);
+    }
+    t.set_first_pass(f11, f22, f23, f33);
+  }
   return t;
 }
 

@@ -4,7 +4,9 @@
 // References: see fe_body.hpp.
 // Known deviations: see fe_body.hpp (trilinear mapped cells).
 
+#include <Eigen/Dense>
 #include <getfem/getfem_mesh.h>
+#include <getfem/getfem_models.h>
 
 #include <cstddef>
 #include <limits>
@@ -24,5 +26,12 @@ std::vector<std::size_t> build_structured_mesh(const StructuredBody& body, getfe
 /// Local face of a hexahedron of build_structured_mesh whose vertices all have c >> 2 == top
 /// (1: the face at the cell's upper w line, 0: the lower).
 bgeot::short_type hexahedron_w_face(const getfem::mesh& m, std::size_t convex, int top);
+
+/// Solves K X = B for the symmetric positive definite stiffness `K` restricted to the free DOFs
+/// (free_index[i] >= 0 is the row of DOF i; clamped DOFs have -1), CHOLMOD supernodal Cholesky.
+/// B and X have one row per free DOF. Throws std::runtime_error when the factorisation fails.
+Eigen::MatrixXd solve_clamped(const getfem::model_real_sparse_matrix& K,
+                              const std::vector<long>& free_index, long nfree,
+                              const Eigen::MatrixXd& B, const char* where);
 
 }  // namespace ferro::fe_contact::detail

@@ -1,5 +1,5 @@
-// `ferrodyn fe-kij CONFIG.yaml`: K_ij reduction-factor table over wheel load and interfacial-layer
-// parameters (fe_contact), written in the docs/KIJ_TABLE.md layout (version 2), with creep and
+// `ferrodyn fe-kij CONFIG.yaml`: K_ij reduction-factor table over wheel load, interfacial-layer
+// parameters and the rail's yield stress (fe_contact), written in the docs/KIJ_TABLE.md layout (version 2), with creep and
 // derivative curves per configuration. Finished points are kept in a journal directory next to
 // the output, so an interrupted run resumes where it stopped.
 #include <fmt/format.h>
@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -57,7 +58,11 @@ struct FeKijConfig {
 //             elements_minor, margin}
 //   layer:   {thickness, shear_modulus, yield_shear}      # defaults of the unswept layer axes
 //   axes:    {normal_force: [...], layer_thickness: [...], layer_shear_modulus: [...],
-//             layer_yield_shear: [...]}                   # any non-empty subset
+//             layer_yield_shear: [...], yield_stress: [...]}  # any non-empty subset;
+//                                                         # yield_stress: only with normal_force
+//   plastic: {elements_per_semi_axis, load_steps, unload_steps, hardening_modulus, growth,
+//             extent}
+//                                                         # FE rail with the yield_stress axis
 //   solver:  {tolerance, probe_creepage, probe_spin_times_a}
 //   curves:  {creepages: [...]}                           # optional
 //   output:  kij.h5                                       # relative to the config file
@@ -98,16 +103,22 @@ FeKijConfig read_config(const std::string& path) {
       s.axis_names.push_back(name);
       s.axes.push_back(number_list(a, name));
     }
-    if (a.has("yield_stress")) {
-      a.fail("yield_stress",
-             "the elasto-plastic rail is not available in this version; allowed axes: "
-             "normal_force, layer_thickness, layer_shear_modulus, layer_yield_shear");
-    }
     a.finish();
     if (s.axis_names.empty()) {
       top.fail("axes", "give at least one of normal_force, layer_thickness, "
-                       "layer_shear_modulus, layer_yield_shear");
+                       "layer_shear_modulus, layer_yield_shear, yield_stress");
     }
+  }
+  {
+    MapReader pl = top.map_or_empty("plastic");
+    fe_contact::ElastoplasticKijSpec& e = s.plastic;
+    e.elements_per_semi_axis = static_cast<int>(pl.integer_or("elements_per_semi_axis", 4));
+    e.load_steps = static_cast<int>(pl.integer_or("load_steps", 6));
+    e.unload_steps = static_cast<int>(pl.integer_or("unload_steps", 0));
+    e.hardening_modulus = pl.number_or("hardening_modulus", 0.0);
+    e.growth = pl.number_or("growth", 1.6);
+    e.extent = pl.number_or("extent", 12.0);
+    pl.finish();
   }
   {
     MapReader so = top.map_or_empty("solver");
@@ -134,12 +145,51 @@ std::string journal_name(const fs::path& dir, std::size_t i) {
   return (dir / fmt::format("point_{:05d}.txt", i)).string();
 }
 
-bool read_journal(const fs::path& dir, std::size_t i, contact::ReductionFactors& k) {
+// Elasto-plastic rail: the first-pass K and the load cycle of a point (Table 3.9 quantities).
+struct PlasticRecord {
+  contact::ReductionFactors first_pass;
+  std::vector<double> cycle;  // p0, u_loaded, u_residual, eps_p, depth, flowing, reverse, cpu
+};
+constexpr const char* kCycleColumns =
+    "peak_pressure_Pa,displacement_loaded_m,displacement_residual_m,max_plastic_strain,"
+    "depth_max_plastic_strain_m,flowing_points,reverse_flowing_points,cycle_cpu_s";
+
+bool positive(const contact::ReductionFactors& k) {
+  return k.k11 > 0.0 && k.k22 > 0.0 && k.k23 > 0.0 && k.k33 > 0.0;
+}
+
+bool read_journal(const fs::path& dir, std::size_t i, contact::ReductionFactors& k,
+                  PlasticRecord* plastic) {
   std::ifstream in(journal_name(dir, i));
   if (!in) return false;
   std::string tag;
   in >> tag >> k.k11 >> k.k22 >> k.k23 >> k.k33;
-  return in && tag == "K" && k.k11 > 0.0 && k.k22 > 0.0 && k.k23 > 0.0 && k.k33 > 0.0;
+  if (!in || tag != "K" || !positive(k)) return false;
+  if (plastic == nullptr) return true;
+  // Elasto-plastic points also need their first-pass and cycle lines.
+  std::string line;
+  bool first = false, cycle = false;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    ls >> tag;
+    if (tag == "KFP") {
+      contact::ReductionFactors& f = plastic->first_pass;
+      ls >> f.k11 >> f.k22 >> f.k23 >> f.k33;
+      first = static_cast<bool>(ls) && positive(f);
+    } else if (tag == "cycle") {
+      // Tokens through strtod: an elastic point has no plastic-strain depth ("nan").
+      plastic->cycle.assign(8, 0.0);
+      cycle = true;
+      for (double& v : plastic->cycle) {
+        std::string token;
+        ls >> token;
+        char* end = nullptr;
+        v = std::strtod(token.c_str(), &end);
+        cycle = cycle && !token.empty() && end == token.c_str() + token.size();
+      }
+    }
+  }
+  return first && cycle;
 }
 
 void write_journal(const fs::path& dir, std::size_t i, const fe_contact::KijPoint& p) {
@@ -150,6 +200,15 @@ void write_journal(const fs::path& dir, std::size_t i, const fe_contact::KijPoin
     const contact::ReductionFactors& k = p.slopes.k;
     out << fmt::format("K {:.17g} {:.17g} {:.17g} {:.17g}\n", k.k11, k.k22, k.k23, k.k33);
     out << fmt::format("grid {} {} {:.17g}\n", p.nx, p.ny, p.element_size);
+    if (p.has_first_pass) {
+      const contact::ReductionFactors& f = p.first_pass.k;
+      const fe_contact::ElastoplasticResult& c = p.cycle;
+      out << fmt::format("KFP {:.17g} {:.17g} {:.17g} {:.17g}\n", f.k11, f.k22, f.k23, f.k33);
+      out << fmt::format("cycle {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {} {} {:.6g}\n",
+                         c.peak_pressure, c.displacement_loaded, c.displacement_residual,
+                         c.max_plastic_strain, c.depth_max_plastic_strain, c.flowing_points,
+                         c.reverse_flowing_points, c.cpu_seconds);
+    }
     if (!out) throw std::runtime_error(fmt::format("{}: cannot write", tmp));
   }
   fs::rename(tmp, name);
@@ -183,10 +242,12 @@ int run_fe_kij(const std::string& config_path, bool restart) {
   fs::create_directories(work);
   const std::size_t n = spec.points();
   std::vector<contact::ReductionFactors> k(n);
+  const bool plastic = spec.elastoplastic();
+  std::vector<PlasticRecord> records(plastic ? n : 0);
   std::vector<bool> done(n, false);
   std::size_t resumed = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    done[i] = read_journal(work, i, k[i]);
+    done[i] = read_journal(work, i, k[i], plastic ? &records[i] : nullptr);
     resumed += done[i] ? 1 : 0;
   }
   fmt::print("fe-kij: {} configurations ({} already done in {})\n", n, resumed, work.string());
@@ -213,6 +274,18 @@ int run_fe_kij(const std::string& config_path, bool restart) {
         write_curves(work, i, spec.coordinates(i), spec.axis_names, p);
       }
       k[i] = p.slopes.k;
+      if (plastic) {
+        const fe_contact::ElastoplasticResult& c = p.cycle;
+        records[i].first_pass = p.first_pass.k;
+        records[i].cycle = {c.peak_pressure,
+                            c.displacement_loaded,
+                            c.displacement_residual,
+                            c.max_plastic_strain,
+                            c.depth_max_plastic_strain,
+                            static_cast<double>(c.flowing_points),
+                            static_cast<double>(c.reverse_flowing_points),
+                            c.cpu_seconds};
+      }
       done[i] = true;
       grid_nx = p.nx;
       grid_ny = p.ny;
@@ -231,12 +304,44 @@ int run_fe_kij(const std::string& config_path, bool restart) {
   prov["elements_minor"] = std::to_string(spec.contact.elements_minor);
   if (grid_nx > 0) prov["grid_last_point"] = fmt::format("{} x {}, dx = dy = {:.6g} m", grid_nx, grid_ny, element);
   prov["mesh_sizes"] = "none (half-space + interfacial layer; no finite-element mesh)";
+  std::vector<contact::ReductionFactors> first_pass;
+  if (plastic) {
+    prov["method"] =
+        "ratio of initial creep-curve slopes of two steady-rolling MIM runs on the same grid "
+        "(elasto-plastic rail + elastic half-space wheel vs half-space pair)";
+    prov["mesh_sizes"] = fmt::format(
+        "J2 rail block, trilinear hexahedra: {} cells across min(a, b) = the MIM grid elements, "
+        "growth {:g}, extent {:g} max(a, b); {} load steps up, {} down; hardening modulus {:g} "
+        "Pa",
+        spec.plastic.elements_per_semi_axis, spec.plastic.growth, spec.plastic.extent,
+        spec.plastic.load_steps,
+        spec.plastic.unload_steps > 0 ? spec.plastic.unload_steps : spec.plastic.load_steps,
+        spec.plastic.hardening_modulus);
+    prov["range"] =
+        "K11..K33: shaken down (elastic rail about its residual state, residual dent in the "
+        "gap); K*_first_pass: first pass (frozen elasto-plastic tangent of the rail under the "
+        "peak load)";
+    for (const PlasticRecord& r : records) first_pass.push_back(r.first_pass);
+    // Load-cycle quantities per point (thesis Table 3.9), with the axis values and both K.
+    std::ofstream csv(work / "elastoplastic.csv");
+    for (const std::string& name : spec.axis_names) csv << name << ",";
+    csv << kCycleColumns
+        << ",K11_first_pass,K22_first_pass,K23_first_pass,K33_first_pass,K11,K22,K23,K33\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      for (double x : spec.coordinates(i)) csv << fmt::format("{:.9g},", x);
+      for (double v : records[i].cycle) csv << fmt::format("{:.9g},", v);
+      const contact::ReductionFactors& f = records[i].first_pass;
+      csv << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", f.k11,
+                         f.k22, f.k23, f.k33, k[i].k11, k[i].k22, k[i].k23, k[i].k33);
+    }
+    if (!csv) throw std::runtime_error(fmt::format("{}: cannot write elastoplastic.csv", work.string()));
+  }
   prov["solver_tolerance"] = fmt::format("{:g}", spec.slope.mim.tangential.tolerance);
   prov["normal_tolerance"] = fmt::format("{:g}", spec.slope.mim.normal.tolerance);
   prov["probe_creepage"] = fmt::format("{:g}", spec.slope.probe_creepage);
   prov["probe_spin_times_a"] = fmt::format("{:g}", spec.slope.probe_spin_times_a);
-  prov["range"] = "single-valued (elastic layer; no first-pass/shakedown range)";
-  const contact::KijTable table = fe_contact::make_table(spec, k, prov);
+  if (!plastic) prov["range"] = "single-valued (elastic layer; no first-pass/shakedown range)";
+  const contact::KijTable table = fe_contact::make_table(spec, k, prov, first_pass);
   table.write_hdf5(cfg.output);
   fmt::print("fe-kij: wrote {} ({} configurations; this run {:.2f} s CPU, {:.1f} s wall)\n",
              cfg.output, n, cpu, wall);
@@ -258,8 +363,9 @@ void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
   auto restart = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand(
       "fe-kij",
-      "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load and "
-      "interfacial-layer axes, with creep and derivative curves; resumes an interrupted run");
+      "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load, "
+      "interfacial-layer and rail yield-stress axes, with creep and derivative curves; resumes "
+      "an interrupted run");
   cmd->add_option("config", *config, "CONFIG.yaml")->required();
   cmd->add_flag("--restart", *restart, "discard the finished points of a previous run");
   cmd->callback([&handler, config, restart] {

@@ -5,7 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
 
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"
@@ -19,6 +21,17 @@ int run(const std::string& args) {
   const std::string cmd = std::string(FERRODYN_EXE) + " fe-kij " + args + " > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Runs `ferrodyn fe-kij ARGS`, returns the exit code and the standard error text.
+std::pair<int, std::string> run_capture(const std::string& args) {
+  const fs::path err = fs::temp_directory_path() / "ferro_fe_kij_cli_test.err";
+  const std::string cmd =
+      std::string(FERRODYN_EXE) + " fe-kij " + args + " > /dev/null 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
 }
 
 fs::path write_config(const std::string& name, const std::string& axes) {
@@ -75,7 +88,22 @@ TEST(fe_kij_cli, table_matches_library_and_resumes) {
 
 TEST(fe_kij_cli, bad_input_exits_2) {
   EXPECT_EQ(run(write_config("bad_axis.yaml", "layer_thicknes: [0.0]").string()), 2);
-  EXPECT_EQ(run(write_config("plastic.yaml", "yield_stress: [489.0e6]").string()), 2);
+  // The rail's yield stress: a bad value, a layer axis beside it; each message names the key.
+  for (const auto& [axes, key] :
+       {std::pair{"yield_stress: [-489.0e6]", "yield_stress"},
+        std::pair{"yield_stress: [489.0e6, 400.0e6]", "yield_stress"},
+        std::pair{"yield_stress: [489.0e6], layer_thickness: [0.0]", "layer_thickness"}}) {
+    const auto [rc, err] = run_capture(write_config("plastic.yaml", axes).string());
+    EXPECT_EQ(rc, 2) << axes;
+    EXPECT_NE(err.find(key), std::string::npos) << err;
+  }
+  {
+    const fs::path cfg = write_config("plastic_steps.yaml", "yield_stress: [489.0e6]");
+    std::ofstream(cfg, std::ios::app) << "plastic: {load_steps: 0}\n";
+    const auto [rc, err] = run_capture(cfg.string());
+    EXPECT_EQ(rc, 2);
+    EXPECT_NE(err.find("load_steps"), std::string::npos) << err;
+  }
   EXPECT_EQ(run(write_config("order.yaml", "layer_thickness: [1.0e-4, 0.0]").string()), 2);
   EXPECT_EQ(run("/nonexistent/fe_kij.yaml"), 2);
 }

@@ -3,7 +3,12 @@
 // the rail steel (small strain, linear isotropic hardening, backward-Euler return mapping;
 // GetFEM's small-strain elastoplasticity brick, Newton iterations) loaded on its top face by
 // the Hertz pressure p = p0 sqrt(1 - x^2/a^2 - y^2/b^2) in load steps and unloaded again:
-// plastic strain, the surface displacement under load and the residual displacement.
+// plastic strain, the surface displacement under load and the residual displacement. On request
+// (a MIM grid whose elements are the mesh's surface cells), the tangential surface compliance of
+// the loaded, yielded rail (continuum elasto-plastic tangent with the plastic state of the peak
+// load frozen: D_ep = D - 6 G^2 / (3 G + H) n (x) n at the points flowing in the last load
+// step, n the unit stress deviator) minus that of the same mesh elastic, and the residual dent
+// at the grid-element centres.
 //
 // References: Toumi (2016) section 3.3 (elasto-plastic rail, R900A sigma_y = 489 MPa, 350HT
 // 750.7 MPa, Table 3.9 loads 7.5 / 11.25 / 15 t); Johnson, "Contact Mechanics" (1985) eq. (3.45)
@@ -15,12 +20,19 @@
 // of a first pass is replaced by one load-unload cycle); the rail head is a large block (the
 // half-space of the Hertz theory) with a clamped bottom; hardening is linear (the thesis's
 // nonlinear tensile curves of its annex C are not tabulated in its text); the tangential
-// compliance of the yielded rail (the K_ij of the elasto-plastic case) is not computed.
+// compliance of the yielded rail is the continuum tangent at the peak of the stationary load
+// with every flowing point taken as loading (no elastic unloading of points the tangential
+// increment relieves: the softest first-pass response); the tangent's hardening term takes H as
+// GetFEM's isotropic modulus Hi (exact for perfect plasticity, H = 0, the runs of Table 3.9);
+// trilinear hexahedra with full integration (prone to volumetric locking under isochoric
+// plastic flow: a stiffer plastic response).
 
 #include <string>
 
 #include "ferro/contact/material.hpp"
+#include "ferro/contact/mim/grid.hpp"
 #include "ferro/fe_contact/creep_slopes.hpp"
+#include "ferro/fe_contact/matrix_operator.hpp"
 
 namespace ferro::fe_contact {
 
@@ -41,6 +53,16 @@ struct HertzLoadCase {
   double growth = 1.6;             ///< size ratio of successive cells outside the patch [-]
   double extent = 12.0;            ///< block half-size in units of max(a, b) [-]
   int load_steps = 4;              ///< equal load increments up to p0 [-]
+  /// Equal decrements back to zero; 0: as many as load_steps. One is exact when the unloading
+  /// is elastic (ElastoplasticResult::reverse_flowing_points == 0) [-].
+  int unload_steps = 0;
+  /// Grid of the rail compliance: its elements are the mesh's surface cells (centred, even nx
+  /// and ny so that the patch centre is a node); nx == 0: no compliance, the mesh has cells of
+  /// min(a, b) / elements_per_semi_axis over 1.25 a x 1.25 b.
+  contact::mim::Grid compliance_grid;
+  /// Grid on whose element centres the residual dent is sampled (any grid inside the mesh's
+  /// surface; the FE field is interpolated); nx == 0: the compliance grid.
+  contact::mim::Grid dent_grid;
   void validate(const std::string& where = "HertzLoadCase") const;
   /// Normal force of the Hertz pressure, 2 pi a b p0 / 3 [N].
   [[nodiscard]] double normal_force() const;
@@ -55,7 +77,23 @@ struct ElastoplasticResult {
   long dofs = 0;
   int newton_iterations = 0;
   double cpu_seconds = 0.0;
+  /// With a compliance grid: tangential compliance of the rail under p0 (frozen elasto-plastic
+  /// tangent) minus that of the same mesh elastic, single body in the contact frame (x rolling,
+  /// y lateral, z outward; zz left zero) [m/Pa].
+  SurfaceCompliance tangent_correction;
+  /// With a compliance or dent grid: residual u_z into the rail at the dent grid's element
+  /// centres [m].
+  contact::mim::Field residual_dent;
+  int flowing_points = 0;  ///< integration points flowing in the last load step [-]
+  /// Integration points whose plastic strain changed during unloading (0: the unloading was
+  /// elastic, so reloading to p0 retraces it elastically: the cycle has shaken down) [-].
+  int reverse_flowing_points = 0;
 };
+
+/// Grid for HertzLoadCase::compliance_grid: square elements of min(a, b) / elements_per_semi_axis
+/// covering 1.25 a x 1.25 b (even counts, centred on the patch).
+[[nodiscard]] contact::mim::Grid elastoplastic_grid(double semi_axis_x, double semi_axis_y,
+                                                    int elements_per_semi_axis);
 
 /// Load-unload cycle of the rail head under the Hertz pressure. Throws std::invalid_argument
 /// for bad input and std::runtime_error when Newton's method does not converge.
