@@ -91,7 +91,10 @@ void expect_identical(const SweepData& a, const SweepData& b, const std::string&
 
 class SweepCli : public ::testing::Test {
  protected:
-  std::string dir = std::string(FERRO_BINARY_DIR) + "/sweep_cli_test";
+  // One directory per test: ctest runs the tests of this fixture as parallel processes, and a
+  // shared directory would be cleared by one test's SetUp while another writes into it.
+  std::string dir = std::string(FERRO_BINARY_DIR) + "/sweep_cli_test_" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::string scene = std::string(FERRO_SOURCE_DIR) + "/scenarios/scenes/wheelset_hunting.yaml";
   // Speeds across the linear critical speed 38.93 m/s: decayed, slowly decaying, growing.
   std::string args = " sweep " + scene +
