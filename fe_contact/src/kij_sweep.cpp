@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -177,28 +178,27 @@ contact::KijTable make_table(const KijSweepSpec& spec,
     throw std::invalid_argument(fmt::format("make_table: {} results for {} points", k.size(),
                                             spec.points()));
   }
-  std::vector<double> k11, k22, k23, k33;
-  for (const contact::ReductionFactors& f : k) {
-    k11.push_back(f.k11);
-    k22.push_back(f.k22);
-    k23.push_back(f.k23);
-    k33.push_back(f.k33);
-  }
-  contact::KijTable t(spec.axis_names, spec.axes, k11, k22, k23, k33);
+  // The four coefficients of every point, one column each.
+  const auto columns = [](const std::vector<contact::ReductionFactors>& v) {
+    std::array<std::vector<double>, 4> c;
+    for (const contact::ReductionFactors& f : v) {
+      c[0].push_back(f.k11);
+      c[1].push_back(f.k22);
+      c[2].push_back(f.k23);
+      c[3].push_back(f.k33);
+    }
+    return c;
+  };
+  const auto kc = columns(k);
+  contact::KijTable t(spec.axis_names, spec.axes, kc[0], kc[1], kc[2], kc[3]);
   t.set_provenance(std::move(provenance));
   if (!first_pass.empty()) {
     if (first_pass.size() != k.size()) {
       throw std::invalid_argument(fmt::format("make_table: {} first-pass results for {} points",
                                               first_pass.size(), k.size()));
     }
-    std::vector<double> f11, f22, f23, f33;
-    for (const contact::ReductionFactors& f : first_pass) {
-      f11.push_back(f.k11);
-      f22.push_back(f.k22);
-      f23.push_back(f.k23);
-      f33.push_back(f.k33);
-    }
-    t.set_first_pass(f11, f22, f23, f33);
+    const auto fc = columns(first_pass);
+    t.set_first_pass(fc[0], fc[1], fc[2], fc[3]);
   }
   return t;
 }

@@ -3,6 +3,8 @@
 // steady-rolling creep forces up to round-off.
 #include <gtest/gtest.h>
 
+#include "operator_products.hpp"
+
 #include <cmath>
 #include <random>
 
@@ -25,43 +27,13 @@ constexpr double kProductTolerance = 1.0e-11;
 // the converged forces then agree to round-off amplified by the Newton/GMRES steps.
 constexpr double kForceTolerance = 1.0e-9;
 
-double max_abs(const Field& f) {
-  double m = 0.0;
-  for (double v : f) m = std::max(m, std::abs(v));
-  return m;
-}
 
 TEST(DenseInfluenceOperator, products_equal_fft_half_space) {
   const Grid grid = Grid::centred(13, 9, 0.4e-3, 0.3e-3);
   const CombinedMaterial m = combine(kSteel, kSteel);
   InfluenceOperator fft(grid, m);
   DenseInfluenceOperator dense(grid, ColumnInfluence::half_space(grid, m), m);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.0e8, 1.0e8);
-  Field tx(grid.size()), ty(grid.size());
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    tx[i] = u(rng);
-    ty[i] = u(rng);
-  }
-  Field a(grid.size()), b(grid.size()), c(grid.size()), d(grid.size());
-  fft.normal(tx.data(), a.data());
-  dense.normal(tx.data(), c.data());
-  for (std::size_t i = 0; i < grid.size(); ++i)
-    EXPECT_NEAR(c[i], a[i], kProductTolerance * max_abs(a));
-  fft.tangential(tx.data(), ty.data(), a.data(), b.data());
-  dense.tangential(tx.data(), ty.data(), c.data(), d.data());
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    EXPECT_NEAR(c[i], a[i], kProductTolerance * max_abs(a));
-    EXPECT_NEAR(d[i], b[i], kProductTolerance * max_abs(b));
-  }
-  fft.rolling_difference(tx.data(), ty.data(), a.data(), b.data());
-  dense.rolling_difference(tx.data(), ty.data(), c.data(), d.data());
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    EXPECT_NEAR(c[i], a[i], kProductTolerance * max_abs(a));
-    EXPECT_NEAR(d[i], b[i], kProductTolerance * max_abs(b));
-  }
-  EXPECT_NEAR(dense.rolling_self(), fft.rolling_self(), 1.0e-14 * fft.rolling_self());
-  EXPECT_NEAR(dense.normal_self(), fft.normal_self(), 1.0e-14 * fft.normal_self());
+  ferro::test::expect_products_equal(fft, dense, 7, kProductTolerance, 1.0e-14);
 }
 
 TEST(DenseInfluenceOperator, rolling_creep_forces_equal_fft_half_space) {

@@ -4,6 +4,8 @@
 // interfacial-layer operator's K_ij (the layer is validated against its closed form).
 #include <gtest/gtest.h>
 
+#include "operator_products.hpp"
+
 #include <cmath>
 #include <random>
 
@@ -29,43 +31,13 @@ constexpr double kProductTolerance = 1.0e-11;
 // different preconditioners, so the slopes agree to about that.
 constexpr double kKTolerance = 1.0e-4;
 
-double max_abs(const Field& f) {
-  double m = 0.0;
-  for (double v : f) m = std::max(m, std::abs(v));
-  return m;
-}
 
 TEST(MatrixComplianceOperator, products_equal_fft_half_space) {
   const Grid grid = Grid::centred(12, 8, 0.4e-3, 0.3e-3);
   const CombinedMaterial m = combine(kSteel, kSteel);
   InfluenceOperator fft(grid, m);
   MatrixComplianceOperator full(SurfaceCompliance::half_space(grid, m), m);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> u(-1.0e8, 1.0e8);
-  Field tx(grid.size()), ty(grid.size());
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    tx[i] = u(rng);
-    ty[i] = u(rng);
-  }
-  Field a(grid.size()), b(grid.size()), c(grid.size()), d(grid.size());
-  fft.normal(tx.data(), a.data());
-  full.normal(tx.data(), c.data());
-  for (std::size_t i = 0; i < grid.size(); ++i)
-    EXPECT_NEAR(c[i], a[i], kProductTolerance * max_abs(a));
-  fft.tangential(tx.data(), ty.data(), a.data(), b.data());
-  full.tangential(tx.data(), ty.data(), c.data(), d.data());
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    EXPECT_NEAR(c[i], a[i], kProductTolerance * max_abs(a));
-    EXPECT_NEAR(d[i], b[i], kProductTolerance * max_abs(b));
-  }
-  fft.rolling_difference(tx.data(), ty.data(), a.data(), b.data());
-  full.rolling_difference(tx.data(), ty.data(), c.data(), d.data());
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    EXPECT_NEAR(c[i], a[i], kProductTolerance * max_abs(a));
-    EXPECT_NEAR(d[i], b[i], kProductTolerance * max_abs(b));
-  }
-  EXPECT_NEAR(full.rolling_self(), fft.rolling_self(), 1.0e-12 * fft.rolling_self());
-  EXPECT_NEAR(full.normal_self(), fft.normal_self(), 1.0e-12 * fft.normal_self());
+  ferro::test::expect_products_equal(fft, full, 11, kProductTolerance, 1.0e-12);
 }
 
 TEST(MatrixComplianceOperator, layer_on_the_diagonal_gives_the_layer_operator_k) {

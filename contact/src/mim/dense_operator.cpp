@@ -61,6 +61,80 @@ void ColumnInfluence::validate(const std::string& where) const {
   }
 }
 
+KernelOperator::~KernelOperator() = default;
+
+void KernelOperator::finish(Kernels kernels, double self_zz, double self_xx, double self_yy,
+                            double roll_self, const CombinedMaterial& reference,
+                            const char* name) {
+  k_ = kernels;
+  name_ = name;
+  self_zz_ = self_zz;
+  self_xx_ = self_xx;
+  self_yy_ = self_yy;
+  roll_self_ = roll_self;
+  if (!(self_zz_ > 0.0) || !(self_xx_ > 0.0) || !(self_yy_ > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "{}.coefficients: the self-compliances zz, xx, yy must be > 0", name_));
+  }
+  // Preconditioner: half-space with G scaled so that its A^xx self-compliance matches.
+  const Grid& g = grid();
+  const double ref_self = influence_coefficients(0.0, 0.0, g.dx, g.dy, reference).xx;
+  CombinedMaterial scaled = reference;
+  const double ratio = ref_self / self_xx_;
+  scaled.shear_modulus *= ratio;
+  scaled.contact_modulus *= ratio;
+  preconditioner_ = std::make_unique<InfluenceOperator>(g, scaled);
+  work_.resize(g.size());
+}
+
+const CombinedMaterial& KernelOperator::material() const { return preconditioner_->material(); }
+
+void KernelOperator::normal(const double* pressure, double* displacement_z) {
+  std::fill(displacement_z, displacement_z + grid().size(), 0.0);
+  accumulate(*k_.zz, 0, pressure, displacement_z);
+}
+
+void KernelOperator::tangential(const double* traction_x, const double* traction_y,
+                                double* displacement_x, double* displacement_y) {
+  std::fill(displacement_x, displacement_x + grid().size(), 0.0);
+  std::fill(displacement_y, displacement_y + grid().size(), 0.0);
+  accumulate(*k_.xx, 0, traction_x, displacement_x);
+  accumulate(*k_.xy, 0, traction_y, displacement_x);
+  accumulate(*k_.yx, 0, traction_x, displacement_y);
+  accumulate(*k_.yy, 0, traction_y, displacement_y);
+}
+
+void KernelOperator::rolling_difference(const double* traction_x, const double* traction_y,
+                                        double* out_x, double* out_y) {
+  // (B - A) tau / h with B(X) = A(X + h): displacement one element towards +x minus in place.
+  const std::size_t n = grid().size();
+  std::fill(out_x, out_x + n, 0.0);
+  std::fill(out_y, out_y + n, 0.0);
+  accumulate(*k_.xx, 1, traction_x, out_x);
+  accumulate(*k_.xy, 1, traction_y, out_x);
+  accumulate(*k_.yx, 1, traction_x, out_y);
+  accumulate(*k_.yy, 1, traction_y, out_y);
+  std::fill(work_.begin(), work_.end(), 0.0);
+  accumulate(*k_.xx, 0, traction_x, work_.data());
+  accumulate(*k_.xy, 0, traction_y, work_.data());
+  const double inv_h = 1.0 / grid().dx;
+  for (std::size_t i = 0; i < n; ++i) out_x[i] = (out_x[i] - work_[i]) * inv_h;
+  std::fill(work_.begin(), work_.end(), 0.0);
+  accumulate(*k_.yx, 0, traction_x, work_.data());
+  accumulate(*k_.yy, 0, traction_y, work_.data());
+  for (std::size_t i = 0; i < n; ++i) out_y[i] = (out_y[i] - work_[i]) * inv_h;
+}
+
+void KernelOperator::tangential_inverse(const double* in_x, const double* in_y, double* out_x,
+                                        double* out_y) {
+  preconditioner_->tangential_inverse(in_x, in_y, out_x, out_y);
+}
+
+ComplianceOperator& KernelOperator::coarse() {
+  throw std::logic_error(fmt::format(
+      "{}: no coarse grid (set TangentialSolverOptions.nested = false)", name_));
+}
+
 DenseInfluenceOperator::DenseInfluenceOperator(const Grid& grid, ColumnInfluence coefficients,
                                                const CombinedMaterial& reference)
     : grid_(grid), c_(std::move(coefficients)) {
@@ -73,36 +147,20 @@ DenseInfluenceOperator::DenseInfluenceOperator(const Grid& grid, ColumnInfluence
                     c_.nx, c_.ny, grid_.nx, grid_.ny));
   }
   // Mean diagonals over the rows (equal on every row for a half-space).
+  double zz = 0.0, xx = 0.0, yy = 0.0, roll = 0.0;
   for (int iy = 0; iy < grid_.ny; ++iy) {
-    self_zz_ += c_.zz[c_.index(0, iy, iy)];
-    self_xx_ += c_.xx[c_.index(0, iy, iy)];
-    self_yy_ += c_.yy[c_.index(0, iy, iy)];
-    roll_self_ += (c_.xx[c_.index(0, iy, iy)] - c_.xx[c_.index(1, iy, iy)]) / grid_.dx;
+    zz += c_.zz[c_.index(0, iy, iy)];
+    xx += c_.xx[c_.index(0, iy, iy)];
+    yy += c_.yy[c_.index(0, iy, iy)];
+    roll += (c_.xx[c_.index(0, iy, iy)] - c_.xx[c_.index(1, iy, iy)]) / grid_.dx;
   }
   const double inv_ny = 1.0 / grid_.ny;
-  self_zz_ *= inv_ny;
-  self_xx_ *= inv_ny;
-  self_yy_ *= inv_ny;
-  roll_self_ *= inv_ny;
-  if (!(self_zz_ > 0.0) || !(self_xx_ > 0.0) || !(self_yy_ > 0.0)) {
-    throw std::invalid_argument(
-        "DenseInfluenceOperator.coefficients: the self-compliances zz, xx, yy must be > 0");
-  }
-  // Preconditioner: half-space with G scaled so that its A^xx self-compliance matches.
-  const double ref_self = influence_coefficients(0.0, 0.0, grid_.dx, grid_.dy, reference).xx;
-  CombinedMaterial scaled = reference;
-  const double ratio = ref_self / self_xx_;
-  scaled.shear_modulus *= ratio;
-  scaled.contact_modulus *= ratio;
-  preconditioner_ = std::make_unique<InfluenceOperator>(grid_, scaled);
-  work_.resize(grid_.size());
+  finish({&c_.zz, &c_.xx, &c_.xy, &c_.yx, &c_.yy}, zz * inv_ny, xx * inv_ny, yy * inv_ny,
+         roll * inv_ny, reference, "DenseInfluenceOperator");
 }
 
 DenseInfluenceOperator::~DenseInfluenceOperator() = default;
 
-const CombinedMaterial& DenseInfluenceOperator::material() const {
-  return preconditioner_->material();
-}
 
 void DenseInfluenceOperator::accumulate(const std::vector<double>& k, int shift, const double* in,
                                         double* out) const {
@@ -120,50 +178,9 @@ void DenseInfluenceOperator::accumulate(const std::vector<double>& k, int shift,
     }
 }
 
-void DenseInfluenceOperator::normal(const double* pressure, double* displacement_z) {
-  std::fill(displacement_z, displacement_z + grid_.size(), 0.0);
-  accumulate(c_.zz, 0, pressure, displacement_z);
-}
 
-void DenseInfluenceOperator::tangential(const double* traction_x, const double* traction_y,
-                                        double* displacement_x, double* displacement_y) {
-  std::fill(displacement_x, displacement_x + grid_.size(), 0.0);
-  std::fill(displacement_y, displacement_y + grid_.size(), 0.0);
-  accumulate(c_.xx, 0, traction_x, displacement_x);
-  accumulate(c_.xy, 0, traction_y, displacement_x);
-  accumulate(c_.yx, 0, traction_x, displacement_y);
-  accumulate(c_.yy, 0, traction_y, displacement_y);
-}
 
-void DenseInfluenceOperator::rolling_difference(const double* traction_x, const double* traction_y,
-                                                double* out_x, double* out_y) {
-  // (B - A) tau / h with B(X) = A(X + h): displacement one element towards +x minus in place.
-  const std::size_t n = grid_.size();
-  std::fill(out_x, out_x + n, 0.0);
-  std::fill(out_y, out_y + n, 0.0);
-  accumulate(c_.xx, 1, traction_x, out_x);
-  accumulate(c_.xy, 1, traction_y, out_x);
-  accumulate(c_.yx, 1, traction_x, out_y);
-  accumulate(c_.yy, 1, traction_y, out_y);
-  std::fill(work_.begin(), work_.end(), 0.0);
-  accumulate(c_.xx, 0, traction_x, work_.data());
-  accumulate(c_.xy, 0, traction_y, work_.data());
-  const double inv_h = 1.0 / grid_.dx;
-  for (std::size_t i = 0; i < n; ++i) out_x[i] = (out_x[i] - work_[i]) * inv_h;
-  std::fill(work_.begin(), work_.end(), 0.0);
-  accumulate(c_.yx, 0, traction_x, work_.data());
-  accumulate(c_.yy, 0, traction_y, work_.data());
-  for (std::size_t i = 0; i < n; ++i) out_y[i] = (out_y[i] - work_[i]) * inv_h;
-}
 
-void DenseInfluenceOperator::tangential_inverse(const double* in_x, const double* in_y,
-                                                double* out_x, double* out_y) {
-  preconditioner_->tangential_inverse(in_x, in_y, out_x, out_y);
-}
 
-ComplianceOperator& DenseInfluenceOperator::coarse() {
-  throw std::logic_error(
-      "DenseInfluenceOperator: no coarse grid (set TangentialSolverOptions.nested = false)");
-}
 
 }  // namespace ferro::contact::mim

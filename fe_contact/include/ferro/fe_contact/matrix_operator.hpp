@@ -17,6 +17,7 @@
 
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/mim/compliance_operator.hpp"
+#include "ferro/contact/mim/dense_operator.hpp"
 #include "ferro/contact/mim/grid.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
 
@@ -50,7 +51,7 @@ struct SurfaceCompliance {
   void validate(const std::string& where = "SurfaceCompliance") const;
 };
 
-class MatrixComplianceOperator final : public contact::mim::ComplianceOperator {
+class MatrixComplianceOperator final : public contact::mim::KernelOperator {
  public:
   /// `reference`: the half-space pair whose FFT inverse, scaled to the mean tangential
   /// self-compliance, preconditions the tangential solver.
@@ -59,30 +60,13 @@ class MatrixComplianceOperator final : public contact::mim::ComplianceOperator {
   ~MatrixComplianceOperator() override;
 
   [[nodiscard]] const contact::mim::Grid& grid() const override { return c_.grid; }
-  [[nodiscard]] const contact::CombinedMaterial& material() const override;
   [[nodiscard]] const SurfaceCompliance& coefficients() const { return c_; }
-
-  void normal(const double* pressure, double* displacement_z) override;
-  void tangential(const double* traction_x, const double* traction_y, double* displacement_x,
-                  double* displacement_y) override;
-  void rolling_difference(const double* traction_x, const double* traction_y, double* out_x,
-                          double* out_y) override;
-  void tangential_inverse(const double* in_x, const double* in_y, double* out_x,
-                          double* out_y) override;
-  [[nodiscard]] bool has_coarse() const override { return false; }
-  [[nodiscard]] contact::mim::ComplianceOperator& coarse() override;
-  [[nodiscard]] double normal_self() const override { return self_zz_; }
-  [[nodiscard]] double tangential_self_x() const override { return self_xx_; }
-  [[nodiscard]] double tangential_self_y() const override { return self_yy_; }
-  [[nodiscard]] double rolling_self() const override { return roll_self_; }
 
  private:
   // out(ix, iy) += sum_s k(observation(ix + shift, iy), s) in(s) over the grid's ix.
-  void accumulate(const std::vector<double>& k, int shift, const double* in, double* out) const;
+  void accumulate(const std::vector<double>& k, int shift, const double* in,
+                  double* out) const override;
   SurfaceCompliance c_;
-  std::unique_ptr<contact::mim::InfluenceOperator> preconditioner_;
-  double self_zz_ = 0.0, self_xx_ = 0.0, self_yy_ = 0.0, roll_self_ = 0.0;
-  std::vector<double> work_;
 };
 
 }  // namespace ferro::fe_contact

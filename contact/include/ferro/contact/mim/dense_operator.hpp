@@ -48,18 +48,15 @@ struct ColumnInfluence {
   void validate(const std::string& where = "ColumnInfluence") const;
 };
 
-class DenseInfluenceOperator final : public ComplianceOperator {
+/// An operator given by explicit influence kernels zz, xx, xy, yx, yy [m/Pa]: the products, the
+/// rolling difference (B - A) tau / h, the self terms and the preconditioner (FFT circulant
+/// inverse of a half-space whose shear modulus matches the mean tangential self-compliance),
+/// shared by every stored-coefficient operator. A derived class supplies the kernels, the
+/// product of one kernel and the mean self terms (then calls finish()).
+class KernelOperator : public ComplianceOperator {
  public:
-  /// `reference` is the half-space pair whose FFT circulant inverse preconditions the tangential
-  /// solver after scaling its shear modulus to the operator's mean tangential self-compliance.
-  DenseInfluenceOperator(const Grid& grid, ColumnInfluence coefficients,
-                         const CombinedMaterial& reference);
-  ~DenseInfluenceOperator() override;
-
-  [[nodiscard]] const Grid& grid() const override { return grid_; }
+  ~KernelOperator() override;
   [[nodiscard]] const CombinedMaterial& material() const override;
-  [[nodiscard]] const ColumnInfluence& coefficients() const { return c_; }
-
   void normal(const double* pressure, double* displacement_z) override;
   void tangential(const double* traction_x, const double* traction_y, double* displacement_x,
                   double* displacement_y) override;
@@ -74,14 +71,47 @@ class DenseInfluenceOperator final : public ComplianceOperator {
   [[nodiscard]] double tangential_self_y() const override { return self_yy_; }
   [[nodiscard]] double rolling_self() const override { return roll_self_; }
 
+ protected:
+  struct Kernels {
+    const std::vector<double>* zz = nullptr;
+    const std::vector<double>* xx = nullptr;
+    const std::vector<double>* xy = nullptr;
+    const std::vector<double>* yx = nullptr;
+    const std::vector<double>* yy = nullptr;
+  };
+  /// out(ix, iy) += sum over sources of k(observation (ix + shift, iy), source) in(source).
+  virtual void accumulate(const std::vector<double>& k, int shift, const double* in,
+                          double* out) const = 0;
+  /// Stores the kernels and the mean self terms (checked > 0, the message naming `name`) and
+  /// builds the preconditioner from `reference`.
+  void finish(Kernels kernels, double self_zz, double self_xx, double self_yy, double roll_self,
+              const CombinedMaterial& reference, const char* name);
+
  private:
-  // out(ixo, iyo) = sum k(ixo - ixs + shift, iyo, iys) in(ixs, iys)
-  void accumulate(const std::vector<double>& k, int shift, const double* in, double* out) const;
-  Grid grid_;
-  ColumnInfluence c_;
+  Kernels k_;
+  const char* name_ = "KernelOperator";
   std::unique_ptr<InfluenceOperator> preconditioner_;
   double self_zz_ = 0.0, self_xx_ = 0.0, self_yy_ = 0.0, roll_self_ = 0.0;
   std::vector<double> work_;
+};
+
+class DenseInfluenceOperator final : public KernelOperator {
+ public:
+  /// `reference` is the half-space pair whose FFT circulant inverse preconditions the tangential
+  /// solver after scaling its shear modulus to the operator's mean tangential self-compliance.
+  DenseInfluenceOperator(const Grid& grid, ColumnInfluence coefficients,
+                         const CombinedMaterial& reference);
+  ~DenseInfluenceOperator() override;
+
+  [[nodiscard]] const Grid& grid() const override { return grid_; }
+  [[nodiscard]] const ColumnInfluence& coefficients() const { return c_; }
+
+ private:
+  // out(ixo, iyo) += sum k(ixo - ixs + shift, iyo, iys) in(ixs, iys)
+  void accumulate(const std::vector<double>& k, int shift, const double* in,
+                  double* out) const override;
+  Grid grid_;
+  ColumnInfluence c_;
 };
 
 }  // namespace ferro::contact::mim
