@@ -136,15 +136,21 @@ double section_estimate(const SideContext& c, double yw) {
   return g2 > 0.0 ? g0 - 0.5 * g1 * g1 / g2 : g0;
 }
 
-// Parabolic refinement of a section-gap minimum bracketed around yw with half-width h: fit a
-// parabola through yw - h, yw, yw + h, move to its vertex, shrink h tenfold; four rounds bring
-// h to 0.05 um for the 0.5 mm scan step.
-double refine_minimum(const SideContext& c, double yw, double h) {
+// Parabolic refinement of a section-gap extremum bracketed around yw with half-width h: a
+// minimum (sense = +1, a candidate point) or a maximum (sense = -1, the barrier between two
+// candidates). Fit a parabola through yw - h, yw, yw + h, move to its vertex, shrink h tenfold;
+// four rounds bring h to 0.05 um for the 0.5 mm scan step. A section off the rail counts as the
+// worst value.
+double refine_extremum(const SideContext& c, double yw, double h, double sense) {
   const ProfileCurve& wheel = c.pair->wheel();
-  double gm = section_min(c, yw).gap;
+  auto value = [&](double y) {  // sense * gap: minimised
+    const Section sec = section_min(c, y);
+    return sec.valid ? sense * sec.gap : kFar;
+  };
+  double gm = value(yw);
   for (int it = 0; it < 4; ++it) {
     const double ya = std::max(yw - h, wheel.y_min()), yb = std::min(yw + h, wheel.y_max());
-    const double ga = section_min(c, ya).gap, gb = section_min(c, yb).gap;
+    const double ga = value(ya), gb = value(yb);
     double ynew = yw;
     const double denom = (ga - 2.0 * gm + gb);
     if (denom > 0.0 && ya < yw && yb > yw) {
@@ -153,39 +159,8 @@ double refine_minimum(const SideContext& c, double yw, double h) {
       ynew = ga < gb ? ya : yb;
     }
     if (ynew != yw) {
-      const double gn = section_min(c, ynew).gap;
+      const double gn = value(ynew);
       if (gn < gm) {
-        yw = ynew;
-        gm = gn;
-      }
-    }
-    h *= 0.1;
-  }
-  return yw;
-}
-
-// Parabolic refinement of a section-gap maximum (a barrier between two minima) bracketed
-// around yw with half-width h, as refine_minimum() for a minimum. Returns the refined section.
-double refine_maximum(const SideContext& c, double yw, double h) {
-  const ProfileCurve& wheel = c.pair->wheel();
-  auto gap = [&](double y) {
-    const Section sec = section_min(c, y);
-    return sec.valid ? sec.gap : -kFar;
-  };
-  double gm = gap(yw);
-  for (int it = 0; it < 4; ++it) {
-    const double ya = std::max(yw - h, wheel.y_min()), yb = std::min(yw + h, wheel.y_max());
-    const double ga = gap(ya), gb = gap(yb);
-    double ynew = yw;
-    const double denom = (ga - 2.0 * gm + gb);
-    if (denom < 0.0 && ya < yw && yb > yw) {
-      ynew = std::clamp(yw + 0.5 * h * (ga - gb) / denom, yw - h, yw + h);
-    } else if (ga > gm || gb > gm) {
-      ynew = ga > gb ? ya : yb;
-    }
-    if (ynew != yw) {
-      const double gn = gap(ynew);
-      if (gn > gm) {
         yw = ynew;
         gm = gn;
       }
@@ -363,14 +338,14 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
       continue;
     }
     const double y0 = wheel.y_min() + h * static_cast<double>(m.k);
-    const double yw = refine_minimum(c, y0, h);
+    const double yw = refine_extremum(c, y0, h, 1.0);
     ContactPoint p = make_point(c, side, yw);
     const bool from_pending = pending > m.barrier;
     if (std::isfinite(m.barrier) || from_pending) {
       // The barrier refined to the section-gap maximum near its scan section (the scan's
       // estimate samples it every section_step only).
       const std::size_t kb = from_pending ? k_pending : m.k_barrier;
-      const double yb = refine_maximum(c, wheel.y_min() + h * static_cast<double>(kb), h);
+      const double yb = refine_extremum(c, wheel.y_min() + h * static_cast<double>(kb), h, -1.0);
       const Section sb = section_min(c, yb);
       if (sb.valid) {
         double zr, dzr, ddzr;
