@@ -52,6 +52,8 @@ BENCHMARK_CAPTURE(BM_WheelsetRun, cvode_adams, std::string("cvode_adams"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_WheelsetRun, arkode_erk, std::string("arkode_erk"))
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_WheelsetRun, arkode_dirk, std::string("arkode_dirk"))
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_WheelsetRun, odeint_dopri5, std::string("odeint_dopri5"))
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_WheelsetRun, odeint_rosenbrock4, std::string("odeint_rosenbrock4"))

@@ -141,29 +141,35 @@ TEST_P(WheelsetEveryIntegrator, decays_below_and_grows_above_critical_speed) {
 INSTANTIATE_TEST_SUITE_P(Adapters, WheelsetEveryIntegrator,
                          ::testing::ValuesIn(available_integrators()));
 
-TEST(SuspendedWheelset, cvode_and_odeint_trajectories_agree) {
+TEST(SuspendedWheelset, cvode_odeint_and_arkode_dirk_trajectories_agree) {
   const auto c = closed_form_cases()[1];
   const double vc = analytic_critical_speed(c.params, creep_coefficients(c.creep));
-  std::vector<double> bdf, dopri, rosen;
+  std::vector<double> bdf, dopri, rosen, dirk;
   first_last_amplitude("cvode_bdf", c, 1.02 * vc, 3.0, 0.1, &bdf);
   first_last_amplitude("odeint_dopri5", c, 1.02 * vc, 3.0, 0.1, &dopri);
   first_last_amplitude("odeint_rosenbrock4", c, 1.02 * vc, 3.0, 0.1, &rosen);
+  first_last_amplitude("arkode_dirk", c, 1.02 * vc, 3.0, 0.1, &dirk);
   ASSERT_EQ(bdf.size(), dopri.size());
   ASSERT_EQ(bdf.size(), rosen.size());
-  double peak = 0.0, diff_dopri = 0.0, diff_rosen = 0.0;
+  ASSERT_EQ(bdf.size(), dirk.size());
+  double peak = 0.0, diff_dopri = 0.0, diff_rosen = 0.0, diff_dirk = 0.0;
   for (std::size_t i = 0; i < bdf.size(); ++i) {
     peak = std::max(peak, std::abs(bdf[i]));
     diff_dopri = std::max(diff_dopri, std::abs(bdf[i] - dopri[i]));
     diff_rosen = std::max(diff_rosen, std::abs(bdf[i] - rosen[i]));
+    diff_dirk = std::max(diff_dirk, std::abs(bdf[i] - dirk[i]));
   }
   // The set tolerance is rtol = 1e-8 per step; over ~30 hunting periods the global errors of
   // two independent methods may each reach a few hundred times that. 1e-5 of the peak is
   // 1000 x rtol: tight enough that a wrong adapter (stale state, wrong time) fails.
   constexpr double kAgreementRelToPeak = 1e-5;
-  std::printf("[ figures  ] max |y_cvode - y_other| / peak: dopri5 %.2e, rosenbrock4 %.2e\n",
-              diff_dopri / peak, diff_rosen / peak);
+  std::printf(
+      "[ figures  ] max |y_cvode - y_other| / peak: dopri5 %.2e, rosenbrock4 %.2e, arkode_dirk "
+      "%.2e\n",
+      diff_dopri / peak, diff_rosen / peak, diff_dirk / peak);
   EXPECT_LT(diff_dopri / peak, kAgreementRelToPeak);
   EXPECT_LT(diff_rosen / peak, kAgreementRelToPeak);
+  EXPECT_LT(diff_dirk / peak, kAgreementRelToPeak);
 }
 
 TEST(SuspendedWheelset, invalid_parameters_name_the_field) {

@@ -13,7 +13,8 @@ namespace ferro::vehicle {
 
 const std::vector<std::string>& available_integrators() {
   static const std::vector<std::string> kNames = {"cvode_bdf", "cvode_adams", "arkode_erk",
-                                                  "odeint_dopri5", "odeint_rosenbrock4"};
+                                                  "arkode_dirk", "odeint_dopri5",
+                                                  "odeint_rosenbrock4"};
   return kNames;
 }
 
@@ -81,6 +82,7 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings) 
     return detail::make_cvode(settings);
   }
   if (settings.method == "arkode_erk") return detail::make_arkode_erk(settings);
+  if (settings.method == "arkode_dirk") return detail::make_arkode_dirk(settings);
   return detail::make_odeint(settings);
 }
 
