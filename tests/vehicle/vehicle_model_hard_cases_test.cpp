@@ -1,7 +1,9 @@
-// Hard cases of the multibody vehicle stay bounded and run without stalling: a wheelset
-// dropped onto the rails (both wheels lifted, Fn = 0), a severe twist defect (a wheel lifts),
-// and friction 0.05 and 0.7 through a lateral alignment defect. Crawling at 0.5 m/s is in
-// slow/ (about a minute of CPU).
+// Hard cases of the multibody vehicle on conical wheels stay bounded and run without stalling:
+// crawling at 0.5 m/s on straight track, a wheelset dropped onto the rails (both wheels lifted,
+// Fn = 0), a severe twist defect (a wheel lifts), and friction 0.05 and 0.7 through a lateral
+// alignment defect. The same vehicle on S1002 / UIC60 from scene files (160 mm cant at rest and
+// crawling, flange contact in a 150 m curve, 400 km/h over a 10 mm alignment defect, tolerance
+// convergence): tests/scenarios/vehicle_hard_cases_test.cpp and its slow/ twin.
 #include <gtest/gtest.h>
 
 #include <cmath>
