@@ -106,6 +106,33 @@ void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& 
   }
 }
 
+// The solver's current time and interpolated state, for failure reports: `get_time` and
+// `get_dky` are the package's GetCurrentTime and GetDky functions.
+template <class GetTime, class GetDky>
+auto state_reader(Handles& h, GetTime get_time, GetDky get_dky) {
+  return [&h, get_time, get_dky](double* t, std::vector<double>& y) {
+    if (get_time(h.mem, t) < 0) return;
+    const sunindextype n = N_VGetLength(h.y);
+    N_Vector tmp = N_VNew_Serial(n, h.ctx);
+    if (get_dky(h.mem, *t, 0, tmp) >= 0) {
+      y.assign(N_VGetArrayPointer(tmp), N_VGetArrayPointer(tmp) + n);
+    }
+    N_VDestroy(tmp);
+  };
+}
+
+// Adds the step and right-hand-side counts to a finished run; `num_steps` is the package's
+// GetNumSteps function.
+template <class NumSteps>
+IntegrationResult with_counts(IntegrationResult result, Handles& h, const UserData& ud,
+                              NumSteps num_steps) {
+  long steps = 0;
+  num_steps(h.mem, &steps);
+  result.steps = steps;
+  result.rhs_evaluations = ud.rhs_evaluations;
+  return result;
+}
+
 // The output loop, shared by CVODE and ARKODE. `step_to` advances to tout and returns the flag;
 // `current` returns the solver's internal time and state for failure reports.
 template <class StepTo, class Current, class FlagName>
@@ -180,23 +207,13 @@ class CvodeIntegrator final : public Integrator {
       h.NLS = SUNNonlinSol_FixedPoint(h.y, 0, h.ctx);
       check(CVodeSetNonlinearSolver(h.mem, h.NLS), "CVodeSetNonlinearSolver");
     }
-    auto result = run_loop(
-        h, ud, times, observer,
-        [&](double tout, double* t) { return CVode(h.mem, tout, h.y, t, CV_NORMAL); },
-        [&](double* t, std::vector<double>& y) {
-          if (CVodeGetCurrentTime(h.mem, t) < 0) return;
-          N_Vector tmp = N_VNew_Serial(n, h.ctx);
-          if (CVodeGetDky(h.mem, *t, 0, tmp) >= 0) {
-            y.assign(N_VGetArrayPointer(tmp), N_VGetArrayPointer(tmp) + n);
-          }
-          N_VDestroy(tmp);
-        },
-        [](int flag) { return owned_flag_name(CVodeGetReturnFlagName(flag)); });
-    long steps = 0;
-    CVodeGetNumSteps(h.mem, &steps);
-    result.steps = steps;
-    result.rhs_evaluations = ud.rhs_evaluations;
-    return result;
+    return with_counts(
+        run_loop(
+            h, ud, times, observer,
+            [&](double tout, double* t) { return CVode(h.mem, tout, h.y, t, CV_NORMAL); },
+            state_reader(h, CVodeGetCurrentTime, CVodeGetDky),
+            [](int flag) { return owned_flag_name(CVodeGetReturnFlagName(flag)); }),
+        h, ud, CVodeGetNumSteps);
   }
 
  private:
@@ -228,23 +245,13 @@ class ArkodeErkIntegrator final : public Integrator {
     if (s_.initial_step > 0.0)
       check(ERKStepSetInitStep(h.mem, s_.initial_step), "ERKStepSetInitStep");
     check(ERKStepSetMaxNumSteps(h.mem, s_.max_steps), "ERKStepSetMaxNumSteps");
-    auto result = run_loop(
-        h, ud, times, observer,
-        [&](double tout, double* t) { return ERKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
-        [&](double* t, std::vector<double>& y) {
-          if (ERKStepGetCurrentTime(h.mem, t) < 0) return;
-          N_Vector tmp = N_VNew_Serial(n, h.ctx);
-          if (ERKStepGetDky(h.mem, *t, 0, tmp) >= 0) {
-            y.assign(N_VGetArrayPointer(tmp), N_VGetArrayPointer(tmp) + n);
-          }
-          N_VDestroy(tmp);
-        },
-        [](int flag) { return owned_flag_name(ERKStepGetReturnFlagName(flag)); });
-    long steps = 0;
-    ERKStepGetNumSteps(h.mem, &steps);
-    result.steps = steps;
-    result.rhs_evaluations = ud.rhs_evaluations;
-    return result;
+    return with_counts(
+        run_loop(
+            h, ud, times, observer,
+            [&](double tout, double* t) { return ERKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
+            state_reader(h, ERKStepGetCurrentTime, ERKStepGetDky),
+            [](int flag) { return owned_flag_name(ERKStepGetReturnFlagName(flag)); }),
+        h, ud, ERKStepGetNumSteps);
   }
 
  private:
@@ -292,23 +299,13 @@ class ArkodeDirkIntegrator final : public Integrator {
     // previous step.
     check(ARKStepSetMaxNonlinIters(h.mem, kMaxNewtonIterations), "ARKStepSetMaxNonlinIters");
     check(ARKStepSetPredictorMethod(h.mem, 1), "ARKStepSetPredictorMethod");
-    auto result = run_loop(
-        h, ud, times, observer,
-        [&](double tout, double* t) { return ARKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
-        [&](double* t, std::vector<double>& y) {
-          if (ARKStepGetCurrentTime(h.mem, t) < 0) return;
-          N_Vector tmp = N_VNew_Serial(n, h.ctx);
-          if (ARKStepGetDky(h.mem, *t, 0, tmp) >= 0) {
-            y.assign(N_VGetArrayPointer(tmp), N_VGetArrayPointer(tmp) + n);
-          }
-          N_VDestroy(tmp);
-        },
-        [](int flag) { return owned_flag_name(ARKStepGetReturnFlagName(flag)); });
-    long steps = 0;
-    ARKStepGetNumSteps(h.mem, &steps);
-    result.steps = steps;
-    result.rhs_evaluations = ud.rhs_evaluations;
-    return result;
+    return with_counts(
+        run_loop(
+            h, ud, times, observer,
+            [&](double tout, double* t) { return ARKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
+            state_reader(h, ARKStepGetCurrentTime, ARKStepGetDky),
+            [](int flag) { return owned_flag_name(ARKStepGetReturnFlagName(flag)); }),
+        h, ud, ARKStepGetNumSteps);
   }
 
  private:
