@@ -119,24 +119,24 @@ TEST(IntegratorSettings, unknown_method_names_the_allowed_ones) {
 
 TEST(IntegratorSettings, banded_newton_matches_dense) {
   for (const char* method : {"cvode_bdf", "arkode_dirk"}) {
-  DampedOscillator sys;
-  const auto times = output_grid(0.0, 3.0, 0.05);
-  const std::vector<double> x0{1.0, 0.0};
-  std::vector<double> dense, band;
-  for (const char* ls : {"dense", "band"}) {
-    IntegratorSettings s;
-    s.method = method;
-    s.linear_solver = ls;
-    s.rtol = 1e-10;
-    s.atol = 1e-13;
-    auto& out = std::string(ls) == "dense" ? dense : band;
-    make_integrator(s)->integrate(sys, x0, times, [&](double, std::span<const double> x) {
-      out.push_back(x[0]);
-      return true;
-    });
-  }
-  ASSERT_EQ(dense.size(), band.size());
-  for (std::size_t i = 0; i < dense.size(); ++i) EXPECT_NEAR(dense[i], band[i], 1e-9) << method;
+    DampedOscillator sys;
+    const auto times = output_grid(0.0, 3.0, 0.05);
+    const std::vector<double> x0{1.0, 0.0};
+    std::vector<double> dense, band;
+    for (const char* ls : {"dense", "band"}) {
+      IntegratorSettings s;
+      s.method = method;
+      s.linear_solver = ls;
+      s.rtol = 1e-10;
+      s.atol = 1e-13;
+      auto& out = std::string(ls) == "dense" ? dense : band;
+      make_integrator(s)->integrate(sys, x0, times, [&](double, std::span<const double> x) {
+        out.push_back(x[0]);
+        return true;
+      });
+    }
+    ASSERT_EQ(dense.size(), band.size());
+    for (std::size_t i = 0; i < dense.size(); ++i) EXPECT_NEAR(dense[i], band[i], 1e-9) << method;
   }
 }
 

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
 #include <cstdio>
+#include <memory>
 #include <numbers>
 
 #include "ferro/vehicle/integrator.hpp"
