@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "ferro/contact/elliptic.hpp"
 #include "ferro/contact/hertz.hpp"
 #include "ferro/contact/mim_table.hpp"
 #include "ferro/contact/normal_model.hpp"
@@ -42,6 +43,27 @@ void BM_hertz_model(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(model->solve(p));
 }
 BENCHMARK(BM_hertz_model);
+
+// K(k) and E(k) together: the arithmetic-geometric mean the Hertz solution uses, and the
+// libstdc++ special functions it replaced (baseline in the same run).
+void BM_elliptic_agm(benchmark::State& state) {
+  double k = 0.6;
+  for (auto _ : state) {
+    k = k == 0.6 ? 0.61 : 0.6;
+    benchmark::DoNotOptimize(fc::complete_elliptic_integrals(k));
+  }
+}
+BENCHMARK(BM_elliptic_agm);
+
+void BM_elliptic_libstdcxx(benchmark::State& state) {
+  double k = 0.6;
+  for (auto _ : state) {
+    k = k == 0.6 ? 0.61 : 0.6;
+    benchmark::DoNotOptimize(std::comp_ellint_1(k));
+    benchmark::DoNotOptimize(std::comp_ellint_2(k));
+  }
+}
+BENCHMARK(BM_elliptic_libstdcxx);
 
 void BM_semi_hertz(benchmark::State& state) {
   fc::NormalProblem p = thesis_problem();

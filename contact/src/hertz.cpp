@@ -6,10 +6,12 @@
 //   a^3 = 3 F E(e) / (2 pi E* k^2 (A + B)),  delta = 3 F K(e) / (2 pi E* a),
 //   p_max = 3 F / (2 pi a b).
 // Toumi (2016) eqs. (5)-(13) give the same solution through the tabulated m, n, r.
-// K and E are the C++17 special functions std::comp_ellint_1/2 (modulus convention).
+// K and E by the arithmetic-geometric mean (elliptic.hpp).
 // Known deviations: curvature ratios beyond kMaxCurvatureRatio (axis ratios below
 // kMinAxisRatio) are rejected: the modulus then rounds to 1 in double precision.
 #include "ferro/contact/hertz.hpp"
+
+#include "ferro/contact/elliptic.hpp"
 
 #include <fmt/format.h>
 
@@ -24,15 +26,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct EllipticKE {
-  double first = 0.0;   // K(e)
-  double second = 0.0;  // E(e)
-};
-
-EllipticKE complete_elliptic_integrals(double modulus) {
-  return {std::comp_ellint_1(modulus), std::comp_ellint_2(modulus)};
-}
-
 // Curvature ratio rho(k) and d(rho)/dk for the axis ratio k in (0, 1).
 struct RatioAndSlope {
   double rho = 1.0;
@@ -44,7 +37,7 @@ struct RatioAndSlope {
 RatioAndSlope ratio_of_axis(double k) {
   const double e2 = 1.0 - k * k;
   const double e = std::sqrt(e2);
-  const EllipticKE ke = complete_elliptic_integrals(e);
+  const CompleteEllipticIntegrals ke = complete_elliptic_integrals(e);
   const double kk = ke.first, ee = ke.second;
   const double num = ee / (k * k) - kk;
   const double den = kk - ee;
@@ -124,7 +117,7 @@ HertzCoefficients hertz_coefficients(double theta) {
   const double k = hertz_axis_ratio(std::max(rho, 1.0));
   double kfirst = 0.5 * kPi, ksecond = 0.5 * kPi;
   if (k < 1.0) {
-    const EllipticKE ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
+    const CompleteEllipticIntegrals ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
     kfirst = ke.first;
     ksecond = ke.second;
   }
@@ -173,7 +166,7 @@ HertzSolution hertz_solve(double curvature_x_in, double curvature_y_in, double n
   const double k = hertz_axis_ratio(large / small);
   double kfirst = 0.5 * kPi, ksecond = 0.5 * kPi;
   if (k < 1.0) {
-    const EllipticKE ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
+    const CompleteEllipticIntegrals ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
     kfirst = ke.first;
     ksecond = ke.second;
   }
@@ -217,7 +210,7 @@ class ApproachRelation {
     const double k = hertz_axis_ratio(std::exp(u));
     double kk = 0.5 * kPi, ee = 0.5 * kPi;
     if (k < 1.0) {
-      const EllipticKE ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
+      const CompleteEllipticIntegrals ke = complete_elliptic_integrals(std::sqrt(1.0 - k * k));
       kk = ke.first;
       ee = ke.second;
     }

@@ -2,6 +2,8 @@
 // known deviations.
 #include "ferro/contact/saturation_laws.hpp"
 
+#include "ferro/contact/elliptic.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -28,7 +30,8 @@ double saturation_ratio(SaturationLaw law, double t) {
 double full_slip_spin_moment(double a, double b, double mu_fn) {
   const double major = std::max(a, b), minor = std::min(a, b);
   const double k = std::sqrt(std::max(0.0, 1.0 - (minor * minor) / (major * major)));
-  const double perimeter = 4.0 * major * std::comp_ellint_2(std::min(k, 1.0 - 1e-16));
+  const double perimeter =
+      4.0 * major * complete_elliptic_integrals(std::min(k, 1.0 - 1e-16)).second;
   return mu_fn * 3.0 / 32.0 * perimeter;
 }
 

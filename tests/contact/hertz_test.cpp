@@ -8,30 +8,56 @@
 #include <numbers>
 #include <string>
 
+#include "ferro/contact/elliptic.hpp"
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/normal_model.hpp"
 
 namespace fc = ferro::contact;
 constexpr double kPi = std::numbers::pi;
 
-// K(k), E(k) (std::comp_ellint_1/2, used by the Hertz solution) against closed forms that
-// owe nothing to a series or an AGM: the lemniscatic case k = 1/sqrt(2), where
-// K = Gamma(1/4)^2 / (4 sqrt(pi)) and E = (K^2 + pi/2) / (2 K), and Legendre's relation
-// E K' + E' K - K K' = pi/2 (primes: complementary modulus sqrt(1 - k^2)) from k = 0.01 to
-// 0.999999. Tolerance: a few ulps of the double-precision special functions.
-TEST(elliptic_integrals, std_comp_ellint_against_closed_forms) {
+// K(k), E(k) by the arithmetic-geometric mean (complete_elliptic_integrals, used by the Hertz
+// solution) against closed forms that owe nothing to an AGM: the lemniscatic case
+// k = 1/sqrt(2), where K = Gamma(1/4)^2 / (4 sqrt(pi)) and E = (K^2 + pi/2) / (2 K), K(0) =
+// E(0) = pi/2, and Legendre's relation E K' + E' K - K K' = pi/2 (primes: complementary
+// modulus sqrt(1 - k^2)) from k = 1e-8 to 1 - 1e-12; against 20-digit values from mpmath
+// (30-digit arithmetic: ellipk, ellipe at m = k^2) to 1e-15; and against libstdc++'s Carlson
+// forms (std::comp_ellint_1/2), an independent implementation whose own error near k -> 1 is
+// up to 7e-13 (against the same mpmath values), hence that comparison's 1e-12.
+TEST(elliptic_integrals, agm_against_closed_forms_mpmath_and_carlson) {
   constexpr double kTol = 1e-13;
+  constexpr double kCarlsonRelTol = 1e-12;
+  constexpr double kMpmathRelTol = 1e-15;
+  struct Reference {
+    double k, big_k, big_e;
+  };
+  for (const Reference& r : {Reference{0.9, 2.2805491384227703005, 1.1716970527816141138},
+                             Reference{0.99, 3.3566005233611919425, 1.0284758090288040219},
+                             Reference{0.999999, 7.9474797735479670327, 1.0000074474777243921}}) {
+    const auto ke = fc::complete_elliptic_integrals(r.k);
+    EXPECT_NEAR(ke.first / r.big_k, 1.0, kMpmathRelTol) << "k=" << r.k;
+    EXPECT_NEAR(ke.second / r.big_e, 1.0, kMpmathRelTol) << "k=" << r.k;
+  }
   const double k_lemn = 1.0 / std::sqrt(2.0);
   const double big_k = std::pow(std::tgamma(0.25), 2) / (4.0 * std::sqrt(kPi));
-  EXPECT_NEAR(std::comp_ellint_1(k_lemn) / big_k, 1.0, kTol);
-  EXPECT_NEAR(std::comp_ellint_2(k_lemn) / ((big_k * big_k + 0.5 * kPi) / (2.0 * big_k)), 1.0,
-              kTol);
-  for (double k : {0.01, 0.1, 0.5, 0.9, 0.99, 0.999999}) {
+  const auto lemn = fc::complete_elliptic_integrals(k_lemn);
+  EXPECT_NEAR(lemn.first / big_k, 1.0, kTol);
+  EXPECT_NEAR(lemn.second / ((big_k * big_k + 0.5 * kPi) / (2.0 * big_k)), 1.0, kTol);
+  const auto zero = fc::complete_elliptic_integrals(0.0);
+  EXPECT_DOUBLE_EQ(zero.first, 0.5 * kPi);
+  EXPECT_DOUBLE_EQ(zero.second, 0.5 * kPi);
+  for (double k : {1e-8, 0.01, 0.1, 0.5, 0.9, 0.99, 0.999999, 1.0 - 1e-12}) {
     const double kc = std::sqrt((1.0 - k) * (1.0 + k));
-    const double kk = std::comp_ellint_1(k), ee = std::comp_ellint_2(k);
-    const double kk1 = std::comp_ellint_1(kc), ee1 = std::comp_ellint_2(kc);
-    EXPECT_NEAR((ee * kk1 + ee1 * kk - kk * kk1) / (0.5 * kPi), 1.0, 1e3 * kTol) << "k=" << k;
+    const auto ke = fc::complete_elliptic_integrals(k);
+    const auto ke1 = fc::complete_elliptic_integrals(kc);
+    EXPECT_NEAR((ke.second * ke1.first + ke1.second * ke.first - ke.first * ke1.first) /
+                    (0.5 * kPi),
+                1.0, 1e3 * kTol)
+        << "k=" << k;
+    EXPECT_NEAR(ke.first / std::comp_ellint_1(k), 1.0, kCarlsonRelTol) << "k=" << k;
+    EXPECT_NEAR(ke.second / std::comp_ellint_2(k), 1.0, kCarlsonRelTol) << "k=" << k;
   }
+  EXPECT_THROW((void)fc::complete_elliptic_integrals(1.0), std::invalid_argument);
+  EXPECT_THROW((void)fc::complete_elliptic_integrals(-0.1), std::invalid_argument);
 }
 
 // A curvature ratio beyond what the elliptic solution resolves never surfaces as an elliptic
@@ -198,3 +224,4 @@ TEST(normal_registry, names_and_errors) {
                std::invalid_argument);
   EXPECT_THROW((void)fc::make_normal_model("semi_hertz", {{"strips", "x"}}), std::invalid_argument);
 }
+

@@ -5,6 +5,8 @@
 
 #include "ferro/contact/mim/hertz_gap.hpp"
 
+#include "ferro/contact/elliptic.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -33,8 +35,9 @@ HertzGap hertz_gap_for_ellipse(double a, double b, double normal_force, double c
     k = std::numbers::pi / 2.0;
   } else {
     const double e = std::sqrt(e2);
-    k = std::comp_ellint_1(e);
-    const double ee = std::comp_ellint_2(e);
+    const CompleteEllipticIntegrals ke = complete_elliptic_integrals(e);
+    k = ke.first;
+    const double ee = ke.second;
     c_major = pre * (k - ee) / e2;
     c_minor = pre * ((major * major) / (minor * minor) * ee - k) / e2;
   }

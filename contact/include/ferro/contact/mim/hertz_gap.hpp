@@ -7,7 +7,7 @@
 //   A = p0 b / (E* a^2) (K(e) - E(e)) / e^2,   B = p0 b / (E* a^2) ((a/b)^2 E(e) - K(e)) / e^2,
 //   delta = p0 b K(e) / E*,
 // with the gap z = A x^2 + B y^2 (x along a) and K, E the complete elliptic integrals.
-// Known deviations: none (exact elliptic integrals, std::comp_ellint_1/2).
+// Known deviations: none (exact elliptic integrals, by the arithmetic-geometric mean, elliptic.hpp).
 
 #include "ferro/contact/mim/grid.hpp"
 
