@@ -11,6 +11,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_band.h>
 #include <sunmatrix/sunmatrix_dense.h>
+
+#include <Eigen/Dense>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <algorithm>
@@ -91,8 +93,48 @@ void check(int flag, const char* what) {
     throw std::runtime_error(fmt::format("SUNDIALS setup failed in {} (flag {})", what, flag));
 }
 
+// Dense LU of the Newton matrix by Eigen's partial-pivoting LU (blocked and vectorised; on the
+// 60-70 states of a vehicle it factors and solves several times faster than SUNDIALS' own
+// dense and band LU), behind SUNDIALS' generic direct linear-solver interface.
+struct EigenDenseLu {
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+};
+
+SUNLinearSolver eigen_dense_lu(SUNContext ctx) {
+  SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
+  if (s == nullptr) throw std::runtime_error("SUNLinSolNewEmpty failed");
+  s->content = new EigenDenseLu();
+  s->ops->gettype = [](SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; };
+  s->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
+  s->ops->initialize = [](SUNLinearSolver) { return 0; };
+  s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) {
+    const auto n = static_cast<Eigen::Index>(SUNDenseMatrix_Rows(a));
+    const Eigen::Map<const Eigen::MatrixXd> m(SUNDenseMatrix_Data(a), n, n);  // column-major
+    auto& c = *static_cast<EigenDenseLu*>(ls->content);
+    c.lu.compute(m);
+    // A zero pivot: tell the integrator to retry with a smaller step.
+    const double min_pivot = c.lu.matrixLU().diagonal().cwiseAbs().minCoeff();
+    return min_pivot > 0.0 && std::isfinite(min_pivot) ? 0 : 1;
+  };
+  s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
+    const auto n = static_cast<Eigen::Index>(N_VGetLength(b));
+    const Eigen::Map<const Eigen::VectorXd> rhs(N_VGetArrayPointer(b), n);
+    Eigen::Map<Eigen::VectorXd> out(N_VGetArrayPointer(x), n);
+    out = static_cast<EigenDenseLu*>(ls->content)->lu.solve(rhs);
+    return out.allFinite() ? 0 : 1;
+  };
+  s->ops->free = [](SUNLinearSolver ls) {
+    if (ls == nullptr) return 0;
+    delete static_cast<EigenDenseLu*>(ls->content);
+    ls->content = nullptr;
+    SUNLinSolFreeEmpty(ls);
+    return 0;
+  };
+  return s;
+}
+
 // The Newton iteration's direct linear solver: banded with the system's declared half-bandwidths
-// (the whole matrix when it declares none), or dense.
+// (the whole matrix when it declares none), or dense (Eigen's LU).
 void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& kind) {
   const auto n = static_cast<sunindextype>(system.size());
   auto [upper, lower] = system.jacobian_bandwidth();
@@ -102,7 +144,7 @@ void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& 
     h.LS = SUNLinSol_Band(h.y, h.A, h.ctx);
   } else {
     h.A = SUNDenseMatrix(n, n, h.ctx);
-    h.LS = SUNLinSol_Dense(h.y, h.A, h.ctx);
+    h.LS = eigen_dense_lu(h.ctx);
   }
 }
 
