@@ -33,17 +33,16 @@ std::vector<Mode> linear_modes(const OdeSystem& system, double t, std::span<cons
 }
 
 namespace {
-std::vector<Mode> modes_at(const SystemAtSpeed& factory, double speed,
-                           std::span<const double> x_eq) {
-  const auto system = factory(speed);
-  auto modes = linear_modes(*system, 0.0, x_eq);
+std::vector<Mode> modes_at(const LinearisationAtSpeed& family, double speed) {
+  const Linearisation lin = family(speed);
+  auto modes = linear_modes(*lin.system, 0.0, lin.x_eq);
   if (modes.empty())
     throw std::runtime_error(fmt::format("no non-neutral mode at V = {} m/s", speed));
   return modes;
 }
 
-Mode least_damped_at(const SystemAtSpeed& factory, double speed, std::span<const double> x_eq) {
-  const auto modes = modes_at(factory, speed, x_eq);
+Mode least_damped_at(const LinearisationAtSpeed& family, double speed) {
+  const auto modes = modes_at(family, speed);
   for (const Mode& m : modes) {  // sorted by increasing damping ratio
     if (std::abs(m.damping_ratio) >= kNeutralDamping) return m;
   }
@@ -51,9 +50,8 @@ Mode least_damped_at(const SystemAtSpeed& factory, double speed, std::span<const
 }
 
 /// The mode whose eigenvalue (upper half plane) is closest to `reference`.
-Mode mode_near(const SystemAtSpeed& factory, double speed, std::span<const double> x_eq,
-               std::complex<double> reference) {
-  const auto modes = modes_at(factory, speed, x_eq);
+Mode mode_near(const LinearisationAtSpeed& family, double speed, std::complex<double> reference) {
+  const auto modes = modes_at(family, speed);
   const auto upper = [](std::complex<double> l) { return std::complex<double>(l.real(), std::abs(l.imag())); };
   const auto it = std::min_element(modes.begin(), modes.end(), [&](const Mode& a, const Mode& b) {
     return std::abs(upper(a.eigenvalue) - upper(reference)) <
@@ -61,30 +59,46 @@ Mode mode_near(const SystemAtSpeed& factory, double speed, std::span<const doubl
   });
   return *it;
 }
+
+LinearisationAtSpeed about(const SystemAtSpeed& factory, std::span<const double> x_eq) {
+  return [&factory, x = std::vector<double>(x_eq.begin(), x_eq.end())](double v) {
+    return Linearisation{factory(v), x};
+  };
+}
 }  // namespace
+
+std::vector<SweepPoint> damping_sweep(const LinearisationAtSpeed& family,
+                                      const std::vector<double>& speeds) {
+  std::vector<SweepPoint> out;
+  out.reserve(speeds.size());
+  for (double v : speeds) out.push_back(SweepPoint{v, least_damped_at(family, v)});
+  return out;
+}
 
 std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory,
                                       const std::vector<double>& speeds,
                                       std::span<const double> x_eq) {
-  std::vector<SweepPoint> out;
-  out.reserve(speeds.size());
-  for (double v : speeds) out.push_back(SweepPoint{v, least_damped_at(factory, v, x_eq)});
-  return out;
+  return damping_sweep(about(factory, x_eq), speeds);
 }
 
 std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min, double v_max,
                                      std::span<const double> x_eq, int scan_points,
                                      double rel_tol) {
+  return critical_speed(about(factory, x_eq), v_min, v_max, scan_points, rel_tol);
+}
+
+std::optional<double> critical_speed(const LinearisationAtSpeed& family, double v_min,
+                                     double v_max, int scan_points, double rel_tol) {
   if (!(v_min > 0.0) || !(v_max > v_min) || scan_points < 2) {
     throw std::invalid_argument(
         fmt::format("critical_speed: need 0 < v_min < v_max and scan_points >= 2, got {}, {}, {}",
                     v_min, v_max, scan_points));
   }
-  if (least_damped_at(factory, v_min, x_eq).damping_ratio < 0.0) return v_min;
+  if (least_damped_at(family, v_min).damping_ratio < 0.0) return v_min;
   double v_prev = v_min;
   for (int i = 1; i < scan_points; ++i) {
     const double v = v_min + (v_max - v_min) * i / (scan_points - 1);
-    const Mode m = least_damped_at(factory, v, x_eq);
+    const Mode m = least_damped_at(family, v);
     if (m.damping_ratio < 0.0) {
       // Follow the mode that went unstable (by continuity of its eigenvalue) down to where
       // its damping is 0.
@@ -93,8 +107,8 @@ std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
       double lo = v_prev, hi = v;
       // The mode may have crossed zero before the scan saw it pass -kNeutralDamping: step back
       // to a speed where it is still damped.
-      for (Mode at_lo = mode_near(factory, lo, x_eq, reference); at_lo.damping_ratio <= 0.0;
-           at_lo = mode_near(factory, lo, x_eq, reference)) {
+      for (Mode at_lo = mode_near(family, lo, reference); at_lo.damping_ratio <= 0.0;
+           at_lo = mode_near(family, lo, reference)) {
         reference = at_lo.eigenvalue;
         hi = lo;
         if (lo <= v_min) return v_min;
@@ -102,7 +116,7 @@ std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
       }
       while (hi - lo > rel_tol * hi) {
         const double mid = 0.5 * (lo + hi);
-        const Mode at_mid = mode_near(factory, mid, x_eq, reference);
+        const Mode at_mid = mode_near(family, mid, reference);
         reference = at_mid.eigenvalue;
         (at_mid.damping_ratio > 0.0 ? lo : hi) = mid;
       }
