@@ -49,15 +49,42 @@ Mode least_damped_at(const LinearisationAtSpeed& family, double speed) {
   return modes.front();  // every mode neutral
 }
 
-/// The mode whose eigenvalue (upper half plane) is closest to `reference`.
-Mode mode_near(const LinearisationAtSpeed& family, double speed, std::complex<double> reference) {
-  const auto modes = modes_at(family, speed);
-  const auto upper = [](std::complex<double> l) { return std::complex<double>(l.real(), std::abs(l.imag())); };
-  const auto it = std::min_element(modes.begin(), modes.end(), [&](const Mode& a, const Mode& b) {
-    return std::abs(upper(a.eigenvalue) - upper(reference)) <
-           std::abs(upper(b.eigenvalue) - upper(reference));
-  });
-  return *it;
+std::complex<double> upper(std::complex<double> l) { return {l.real(), std::abs(l.imag())}; }
+
+/// Eigenvalues (upper half plane) of the modes that are neutral at every speed: within
+/// kNeutralDamping of zero damping at `speed` and at `v_ref`, with the same eigenvalue (within
+/// kNeutralDamping |lambda|) at both. A structural mode without damping stays put; a hunting
+/// mode passing zero damping moves with the speed.
+std::vector<std::complex<double>> neutral_modes(const LinearisationAtSpeed& family, double speed,
+                                                double v_ref) {
+  const auto at = modes_at(family, speed), ref = modes_at(family, v_ref);
+  std::vector<std::complex<double>> out;
+  for (const Mode& m : at) {
+    if (std::abs(m.damping_ratio) >= kNeutralDamping) continue;
+    const double tol = kNeutralDamping * std::abs(m.eigenvalue);
+    for (const Mode& r : ref) {
+      if (std::abs(upper(r.eigenvalue) - upper(m.eigenvalue)) < tol) {
+        out.push_back(upper(m.eigenvalue));
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+/// The largest real part among the modes that are not in `neutral` [1/s]: continuous in the
+/// speed (no mode has to be followed, which fails when two hunting modes, e.g. the two
+/// bogies', lie close together), it changes sign where the first mode crosses.
+double largest_real_part(const LinearisationAtSpeed& family, double speed,
+                         const std::vector<std::complex<double>>& neutral) {
+  double largest = -INFINITY;
+  for (const Mode& m : modes_at(family, speed)) {
+    bool is_neutral = false;
+    for (const auto& n : neutral)
+      is_neutral |= std::abs(upper(m.eigenvalue) - n) < kNeutralDamping * std::abs(n);
+    if (!is_neutral) largest = std::max(largest, m.eigenvalue.real());
+  }
+  return largest;
 }
 
 LinearisationAtSpeed about(const SystemAtSpeed& factory, std::span<const double> x_eq) {
@@ -100,25 +127,20 @@ std::optional<double> critical_speed(const LinearisationAtSpeed& family, double 
     const double v = v_min + (v_max - v_min) * i / (scan_points - 1);
     const Mode m = least_damped_at(family, v);
     if (m.damping_ratio < 0.0) {
-      // Follow the mode that went unstable (by continuity of its eigenvalue) down to where
-      // its damping is 0.
+      // Bisection on the largest real part among the modes that are not neutral at every
+      // speed. The mode the scan saw may have crossed before it passed -kNeutralDamping: step
+      // back to a speed where every such mode is damped.
       const double dv = (v_max - v_min) / (scan_points - 1);
-      std::complex<double> reference = m.eigenvalue;
       double lo = v_prev, hi = v;
-      // The mode may have crossed zero before the scan saw it pass -kNeutralDamping: step back
-      // to a speed where it is still damped.
-      for (Mode at_lo = mode_near(family, lo, reference); at_lo.damping_ratio <= 0.0;
-           at_lo = mode_near(family, lo, reference)) {
-        reference = at_lo.eigenvalue;
+      const auto neutral = neutral_modes(family, v, v_min);
+      while (largest_real_part(family, lo, neutral) >= 0.0) {
         hi = lo;
         if (lo <= v_min) return v_min;
         lo = std::max(v_min, lo - dv);
       }
       while (hi - lo > rel_tol * hi) {
         const double mid = 0.5 * (lo + hi);
-        const Mode at_mid = mode_near(family, mid, reference);
-        reference = at_mid.eigenvalue;
-        (at_mid.damping_ratio > 0.0 ? lo : hi) = mid;
+        (largest_real_part(family, mid, neutral) < 0.0 ? lo : hi) = mid;
       }
       return 0.5 * (lo + hi);
     }

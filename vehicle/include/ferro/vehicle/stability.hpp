@@ -31,6 +31,7 @@ struct Mode {
 /// and never flag an instability; a mode becoming unstable must pass -kNeutralDamping.
 inline constexpr double kNeutralDamping = 1e-3;
 
+
 /// Builds the system at a given speed [m/s].
 using SystemAtSpeed = std::function<std::unique_ptr<OdeSystem>(double speed)>;
 
@@ -57,8 +58,10 @@ using LinearisationAtSpeed = std::function<Linearisation(double speed)>;
 
 /// Lowest speed in [v_min, v_max] where a mode's damping ratio crosses zero (stable below):
 /// scan on `scan_points` speeds for the first speed with a mode below -kNeutralDamping, then
-/// bisection on the damping of that mode (followed by its frequency) to a relative width
-/// `rel_tol`. Empty when no crossing is found in the range.
+/// bisection on the sign of the largest real part among the modes that are not neutral at
+/// every speed (|damping ratio| < kNeutralDamping with the same eigenvalue at the unstable scan
+/// speed and at v_min), from the scan speed before (or further back while that is not damped),
+/// to a relative width `rel_tol`. Empty when no crossing is found.
 [[nodiscard]] std::optional<double> critical_speed(const LinearisationAtSpeed& family,
                                                    double v_min, double v_max,
                                                    int scan_points = 64, double rel_tol = 1e-10);
