@@ -147,9 +147,9 @@ an::SettleOptions settle_options(const Scene& scene, const SettleArgs& s) {
 
 
 // ---------------------------------------------------------------- ramp
-// Envelope growth from the first full window to the peak above which the peak speed is shown:
-// twice the start leaves no doubt that the oscillation grew rather than settled.
-constexpr double kGrowthShown = 2.0;
+// Envelope growth from the first full window to the peak above which the peak is shown: any
+// growth at all (1 means the envelope is largest in its first window).
+constexpr double kGrowthShown = 1.0;
 
 struct RampArgs {
   std::string scene, output;
@@ -200,16 +200,17 @@ int do_ramp(const RampArgs& a) {
                r.envelope.empty() || r.envelope.back() >= o.threshold ? "never stays" : "stays",
                o.threshold);
   }
-  // The envelope's maximum marks where its growth rate changes sign only when there was
-  // growth: a disturbance that decays, or settles on a cycle of about its own size, has no such
-  // point.
-  if (!std::isnan(r.peak_speed) && r.envelope_growth >= kGrowthShown) {
-    fmt::print("  growth    the envelope grows x{:.3g} up to V = {:.3f} m/s = {:.2f} km/h, where its "
-               "growth rate changes sign (the Hopf speed while the oscillation is linear)\n",
-               r.envelope_growth, r.peak_speed, r.peak_speed * 3.6);
+  // The envelope's maximum is where its growth turns into decay; that is the Hopf speed only
+  // while the oscillation is small enough to be linear (not on a flange-limited cycle).
+  if (!std::isnan(r.peak_speed) && r.envelope_growth > kGrowthShown) {
+    const auto peak = std::max_element(r.envelope.begin(), r.envelope.end());
+    fmt::print("  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
+               "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
+               "still linear there)\n",
+               r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
   } else if (!std::isnan(r.peak_speed)) {
-    fmt::print("  growth    none: the envelope never exceeds {}x its first full-window value\n",
-               kGrowthShown);
+    fmt::print("  growth    none: the envelope is largest in its first window (the disturbance "
+               "decays or settles)\n");
   }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
   an::write_ramp(scene, r, o, lateral.name.front(), out);

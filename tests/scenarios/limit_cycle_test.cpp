@@ -123,9 +123,9 @@ TEST(AmplitudeEquation, SupercriticalUnconvergedRunApproachesSqrtMu) {
     std::printf("[ figures  ] supercritical mu = %g after 40 s: sigma %.6f +- %.1e, beta %.5f, "
                 "cycle %.6f (sqrt(mu) %.6f)\n",
                 mu, r.fit.sigma, r.fit.sigma_error, r.fit.beta, r.amplitude[0], std::sqrt(mu));
-    // Envelope from sampled peaks (2 ms of a 1 Hz cycle: 1e-6 relative after the parabolic
-    // refinement) and central differences of ln A over two periods (relative error
-    // (2 pi / 2)^2 ... of the curvature of ln A: (d ln A/dt)^2 T^2 / 6 ~ 1e-3 here).
+    // Envelope from sampled peaks (2 ms of a 1 Hz cycle: ~1e-6 relative after the parabolic
+    // refinement) and central differences of ln A over two periods, whose truncation error
+    // (d^3 ln A/dt^3) T^2 / 6 is below 1e-4 /s here; 2e-3 /s is 10-20 % of mu.
     constexpr double kRateTol = 2e-3;  // [1/s]
     EXPECT_NEAR(r.fit.sigma, mu, kRateTol) << mu;
     EXPECT_NEAR(r.fit.beta, 1.0, 0.05) << mu;
@@ -252,6 +252,35 @@ TEST(PeriodicBranch, SubcriticalFoldAtMuMinusQuarter) {
     EXPECT_NEAR(p.run.amplitude[0], expected, tol * expected) << p.speed;
   }
   EXPECT_GE(steady, 6);
+  // A finite cycle at the fold: the A^2 line through the lowest cycles reaches zero far below.
+  EXPECT_FALSE(b.supercritical) << b.amplitude_squared_zero;
+}
+
+TEST(PeriodicBranch, SupercriticalFoldIsTheHopfPointWithShortRuns) {
+  // 60 s per speed: near V = 1 (mu -> 0) the runs end unconverged (relaxation rate 2 mu), and
+  // the amplitude equation must still put the fold at the Hopf point V = 1 and A^2 = V - 1 must
+  // extrapolate to it.
+  BranchOptions o;
+  o.settle = settle_options();
+  o.settle.max_time = 60.0;
+  o.speed_start = 1.3;
+  o.speed_stop = 0.8;
+  o.speed_step = 0.1;
+  o.bracket = 2e-3;
+  const std::vector<double> x0 = {0.6, 0.0};
+  const auto b = follow_periodic_branch(factory(false), x0, o);
+  ASSERT_TRUE(b.fold_found);
+  std::printf("[ figures  ] supercritical fold: bracket [%.6f, %.6f], A^2 zero at %.6f (exact 1), "
+              "%zu runs\n",
+              b.bracket_low, b.bracket_high, b.amplitude_squared_zero, b.points.size());
+  // The sign of sigma = V - 1 is known from the fit once |sigma| exceeds its two standard
+  // errors; with 1e-10 integration tolerances that is far inside the bracket width.
+  EXPECT_LE(b.bracket_low, 1.0);
+  EXPECT_GE(b.bracket_high, 1.0);
+  EXPECT_TRUE(b.supercritical);
+  // Two cycles within a few bracket widths of V = 1, on the line A^2 = V - 1 up to the
+  // predicted cycles' error (5 % in A above).
+  EXPECT_NEAR(b.amplitude_squared_zero, 1.0, 2.0 * o.bracket);
 }
 
 TEST(PeriodicBranch, NoOscillationAtStart) {

@@ -60,7 +60,6 @@ void up_crossings(std::span<const double> t, std::span<const double> x, double m
   }
 }
 
-
 // Two standard errors: a conclusion holds with ~95 % confidence.
 constexpr double kSignificance = 2.0;
 

@@ -77,16 +77,17 @@ struct BranchResult {
   std::optional<double> lowest_sustained;
   double bracket_low = NAN, bracket_high = NAN;  ///< the fold lies in [low, high] [m/s]
   bool fold_found = false;  ///< false: sustained at speed_stop, or not at speed_start
-  /// Speed where the squared reference amplitude of the lowest cycles (up to
-  /// kOnsetPoints steady or approaching points), extrapolated linearly in speed, reaches zero
-  /// [m/s]; NaN with fewer than two such points or no positive slope. A supercritical Hopf
-  /// branch has A^2 proportional to V - V_Hopf near its onset.
+  /// Speed where the squared reference amplitude of the kOnsetPoints lowest cycles (steady or
+  /// approaching), extrapolated linearly in speed, reaches zero [m/s]; NaN with fewer than two
+  /// such points or no positive slope. A supercritical Hopf branch has A^2 proportional to
+  /// V - V_Hopf near its onset; the two cycles nearest the fold are the ones in that range (a
+  /// third may already be limited by another nonlinearity, e.g. the flange).
   double amplitude_squared_zero = NAN;
   /// The extrapolated zero lies within one bracket width of the fold bracket: the amplitude
   /// goes to zero at the fold (supercritical onset, the fold is the Hopf point) instead of
   /// jumping from a finite cycle to rest (subcritical, fold below the Hopf speed).
   bool supercritical = false;
-  static constexpr int kOnsetPoints = 3;
+  static constexpr int kOnsetPoints = 2;
 };
 
 /// Follows the periodic branch downward from x_disturbed at speed_start. Throws
