@@ -101,7 +101,7 @@ def bifurcation(f, save):
         # The branch: settled cycles, cycles predicted by the amplitude equation and decayed runs
         # (amplitude 0); other unsettled runs are markers.
         a = np.where(out == 0, 0.0, np.where((out == 1) | (out == 5), amp[:, j], np.nan))
-        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"{n} (steady / decayed)")
+        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"{n} (steady / approaching / decayed)")
     for code, marker in ((2, "^"), (3, "2"), (4, "v"), (5, "s")):
         sel = out == code
         if sel.any():

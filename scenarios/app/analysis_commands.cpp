@@ -293,6 +293,9 @@ void print_branch(const an::KijRow& row, const std::vector<std::string>& names) 
                  b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
                  b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
                                  : "subcritical (a finite cycle at the fold)");
+    } else {
+      fmt::print("  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
+                 "does not fall towards the fold (subcritical)\n");
     }
   } else if (b.lowest_sustained) {
     fmt::print("  sustained down to the lowest speed followed ({:.4f} m/s): the fold lies below\n",
