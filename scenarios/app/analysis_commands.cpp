@@ -145,7 +145,6 @@ an::SettleOptions settle_options(const Scene& scene, const SettleArgs& s) {
   return o;
 }
 
-
 // ---------------------------------------------------------------- ramp
 // Envelope growth from the first full window to the peak above which the peak is shown: any
 // growth at all (1 means the envelope is largest in its first window).
@@ -204,13 +203,15 @@ int do_ramp(const RampArgs& a) {
   // while the oscillation is small enough to be linear (not on a flange-limited cycle).
   if (!std::isnan(r.peak_speed) && r.envelope_growth > kGrowthShown) {
     const auto peak = std::max_element(r.envelope.begin(), r.envelope.end());
-    fmt::print("  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
-               "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
-               "still linear there)\n",
-               r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
+    fmt::print(
+        "  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
+        "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
+        "still linear there)\n",
+        r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
   } else if (!std::isnan(r.peak_speed)) {
-    fmt::print("  growth    none: the envelope is largest in its first window (the disturbance "
-               "decays or settles)\n");
+    fmt::print(
+        "  growth    none: the envelope is largest in its first window (the disturbance "
+        "decays or settles)\n");
   }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
   an::write_ramp(scene, r, o, lateral.name.front(), out);
@@ -268,7 +269,8 @@ an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reductio
   an::KijRow row;
   row.k = k;
   row.branch = an::follow_periodic_branch(family, x0, o);
-  if (with_hopf) row.hopf_speed = scenarios::hopf_speed(scene, 0.5 * a.speed_min, 1.5 * a.speed_max, 64);
+  if (with_hopf)
+    row.hopf_speed = scenarios::hopf_speed(scene, 0.5 * a.speed_min, 1.5 * a.speed_max, 64);
   return row;
 }
 
@@ -288,14 +290,16 @@ void print_branch(const an::KijRow& row, const std::vector<std::string>& names) 
                "fold in [{:.4f}, {:.4f}] m/s\n",
                *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high);
     if (!std::isnan(b.amplitude_squared_zero)) {
-      fmt::print("  onset     amplitude^2 of the lowest cycles extrapolates to zero at {:.4f} m/s = "
-                 "{:.2f} km/h: {}\n",
-                 b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
-                 b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
-                                 : "subcritical (a finite cycle at the fold)");
+      fmt::print(
+          "  onset     amplitude^2 of the lowest cycles extrapolates to zero at {:.4f} m/s = "
+          "{:.2f} km/h: {}\n",
+          b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
+          b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
+                          : "subcritical (a finite cycle at the fold)");
     } else {
-      fmt::print("  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
-                 "does not fall towards the fold (subcritical)\n");
+      fmt::print(
+          "  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
+          "does not fall towards the fold (subcritical)\n");
     }
   } else if (b.lowest_sustained) {
     fmt::print("  sustained down to the lowest speed followed ({:.4f} m/s): the fold lies below\n",

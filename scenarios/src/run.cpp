@@ -281,8 +281,7 @@ std::optional<double> hopf_speed(const vehicle::LinearisationAtSpeed& family, do
   return vehicle::critical_speed(family, v_min, v_max, scan_points, kHopfRelTol);
 }
 
-std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max,
-                                 int scan_points) {
+std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max, int scan_points) {
   return hopf_speed(linearisation_family(scene), v_min, v_max, scan_points);
 }
 

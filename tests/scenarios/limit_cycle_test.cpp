@@ -120,9 +120,10 @@ TEST(AmplitudeEquation, SupercriticalUnconvergedRunApproachesSqrtMu) {
     const std::vector<double> x0 = {0.3, 0.0};
     const auto r = run_until_settled(sys, x0, o);
     ASSERT_EQ(r.outcome, Oscillation::kApproaching) << mu << " " << r.message;
-    std::printf("[ figures  ] supercritical mu = %g after 40 s: sigma %.6f +- %.1e, beta %.5f, "
-                "cycle %.6f (sqrt(mu) %.6f)\n",
-                mu, r.fit.sigma, r.fit.sigma_error, r.fit.beta, r.amplitude[0], std::sqrt(mu));
+    std::printf(
+        "[ figures  ] supercritical mu = %g after 40 s: sigma %.6f +- %.1e, beta %.5f, "
+        "cycle %.6f (sqrt(mu) %.6f)\n",
+        mu, r.fit.sigma, r.fit.sigma_error, r.fit.beta, r.amplitude[0], std::sqrt(mu));
     // Envelope from sampled peaks (2 ms of a 1 Hz cycle: ~1e-6 relative after the parabolic
     // refinement) and central differences of ln A over two periods, whose truncation error
     // (d^3 ln A/dt^3) T^2 / 6 is below 1e-4 /s here; 2e-3 /s is 10-20 % of mu.
@@ -270,9 +271,10 @@ TEST(PeriodicBranch, SupercriticalFoldIsTheHopfPointWithShortRuns) {
   const std::vector<double> x0 = {0.6, 0.0};
   const auto b = follow_periodic_branch(factory(false), x0, o);
   ASSERT_TRUE(b.fold_found);
-  std::printf("[ figures  ] supercritical fold: bracket [%.6f, %.6f], A^2 zero at %.6f (exact 1), "
-              "%zu runs\n",
-              b.bracket_low, b.bracket_high, b.amplitude_squared_zero, b.points.size());
+  std::printf(
+      "[ figures  ] supercritical fold: bracket [%.6f, %.6f], A^2 zero at %.6f (exact 1), "
+      "%zu runs\n",
+      b.bracket_low, b.bracket_high, b.amplitude_squared_zero, b.points.size());
   // The sign of sigma = V - 1 is known from the fit once |sigma| exceeds its two standard
   // errors; with 1e-10 integration tolerances that is far inside the bracket width.
   EXPECT_LE(b.bracket_low, 1.0);

@@ -49,7 +49,9 @@ Mode least_damped_at(const LinearisationAtSpeed& family, double speed) {
   return modes.front();  // every mode neutral
 }
 
-std::complex<double> upper(std::complex<double> l) { return {l.real(), std::abs(l.imag())}; }
+std::complex<double> upper(std::complex<double> l) {
+  return {l.real(), std::abs(l.imag())};
+}
 
 /// Eigenvalues (upper half plane) of the modes that are neutral at every speed: within
 /// kNeutralDamping of zero damping at `speed` and at `v_ref`, with the same eigenvalue (within
@@ -114,8 +116,8 @@ std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
   return critical_speed(about(factory, x_eq), v_min, v_max, scan_points, rel_tol);
 }
 
-std::optional<double> critical_speed(const LinearisationAtSpeed& family, double v_min,
-                                     double v_max, int scan_points, double rel_tol) {
+std::optional<double> critical_speed(const LinearisationAtSpeed& family, double v_min, double v_max,
+                                     int scan_points, double rel_tol) {
   if (!(v_min > 0.0) || !(v_max > v_min) || scan_points < 2) {
     throw std::invalid_argument(
         fmt::format("critical_speed: need 0 < v_min < v_max and scan_points >= 2, got {}, {}, {}",

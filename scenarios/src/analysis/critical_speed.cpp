@@ -77,10 +77,10 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
     r.peak_speed = r.completed ? r.speed[static_cast<std::size_t>(peak)] : NAN;
     std::size_t first_full = 0;
     while (first_full + 1 < n && r.time[first_full] - r.time[0] < o.envelope_window) ++first_full;
-    r.envelope_growth = r.envelope[first_full] > 0.0
-                            ? std::max(1.0, r.envelope[static_cast<std::size_t>(peak)] /
-                                                r.envelope[first_full])
-                            : NAN;
+    r.envelope_growth =
+        r.envelope[first_full] > 0.0
+            ? std::max(1.0, r.envelope[static_cast<std::size_t>(peak)] / r.envelope[first_full])
+            : NAN;
   }
   // The decay point: the last time the envelope was above the threshold. Only meaningful once a
   // full window has passed.

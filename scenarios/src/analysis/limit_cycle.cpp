@@ -18,7 +18,8 @@ std::string to_string(Oscillation o) {
     case Oscillation::kDiverged: return "diverged";
     case Oscillation::kGrowing: return "growing";
     case Oscillation::kDecaying: return "decaying";
-    case Oscillation::kApproaching: return "approaching";
+    case Oscillation::kApproaching:
+      return "approaching";
   }
   return "?";
 }
@@ -202,8 +203,8 @@ AmplitudeEquation fit_amplitude_equation(std::span<const double> t, std::span<co
   fit.conclusive = true;
   const double level = kSignificance * std::sqrt(cov(0, 0));
   const double tilt = kSignificance * std::sqrt(cov(1, 1));
-  for (const auto& [dl, dt] : {std::pair{level, 0.0}, std::pair{-level, 0.0},
-                               std::pair{0.0, tilt}, std::pair{0.0, -tilt}}) {
+  for (const auto& [dl, dt] : {std::pair{level, 0.0}, std::pair{-level, 0.0}, std::pair{0.0, tilt},
+                               std::pair{0.0, -tilt}}) {
     const std::array<double, 3> shifted = {coef[0] + dl, coef[1] + dt, coef[2]};
     if ((destination_of(shifted, s_mean, s_now) > 0.0) != (d > 0.0)) fit.conclusive = false;
   }
@@ -362,8 +363,9 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
       r.outcome = Oscillation::kApproaching;
       const double scale = cycle / r.amplitude[options.reference];
       for (double& a : r.amplitude) a *= scale;
-      r.message += fmt::format("; amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)",
-                               cycle, r.fit.sigma, r.fit.sigma_error);
+      r.message +=
+          fmt::format("; amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)", cycle,
+                      r.fit.sigma, r.fit.sigma_error);
     } else {
       r.outcome = r.fit.sustained() ? Oscillation::kGrowing : Oscillation::kDecaying;
       r.message += fmt::format("; amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)",

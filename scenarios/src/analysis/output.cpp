@@ -59,9 +59,10 @@ void write_branch(const Scene& scene, const BranchResult& b,
       amp.push_back(j < p.run.amplitude.size() ? p.run.amplitude[j] : NAN);
   }
   f.write_vector("/branch/speed", v, "m/s", "speeds in the order computed");
-  f.write_vector("/branch/outcome", outcome, "-",
-                 "0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching (cycle from the "
-                 "amplitude equation)");
+  f.write_vector(
+      "/branch/outcome", outcome, "-",
+      "0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching (cycle from the "
+      "amplitude equation)");
   f.write_vector("/branch/bisection", bis, "-", "1 for points of the fold bisection");
   f.write_vector("/branch/period", period, "s", "limit-cycle period");
   f.write_matrix("/branch/amplitude", amp, b.points.size(), m, "m",

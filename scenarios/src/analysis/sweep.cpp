@@ -229,8 +229,9 @@ void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_na
   std::string names;
   for (const auto& n : wheelset_names) names += (names.empty() ? "" : ",") + n;
   file.set_attribute("/sweep", "wheelsets", names);
-  file.set_attribute("/sweep", "outcome_codes",
-                     std::string("0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching"));
+  file.set_attribute(
+      "/sweep", "outcome_codes",
+      std::string("0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching"));
   file.set_attribute("/", "status", std::string("completed"));
 }
 

@@ -51,10 +51,10 @@ TEST(ThesisAmplitudeEquation, growth_rate_is_the_hunting_eigenvalue) {
         re = m.eigenvalue.real();
       }
     }
-    std::printf("[ figures  ] V = %.4f m/s (Hopf %+.2f): %s, sigma %.5f +- %.1e /s, Re(lambda) "
-                "%.5f /s, beta %.4g /(s mm^2)\n",
-                v, dv, to_string(r.outcome).c_str(), r.fit.sigma, r.fit.sigma_error, re,
-                r.fit.beta * 1e-6);
+    std::printf(
+        "[ figures  ] V = %.4f m/s (Hopf %+.2f): %s, sigma %.5f +- %.1e /s, Re(lambda) "
+        "%.5f /s, beta %.4g /(s mm^2)\n",
+        v, dv, to_string(r.outcome).c_str(), r.fit.sigma, r.fit.sigma_error, re, r.fit.beta * 1e-6);
     // The fit extrapolates d ln A/dt from amplitudes of 0.3-1 mm to A = 0 along the cubic law;
     // the quintic remainder at 1 mm and the envelope's sampling leave a few per cent of the
     // rate (measured 2 % on the branch), plus 3e-4 /s near the crossing.

@@ -31,7 +31,6 @@ struct Mode {
 /// and never flag an instability; a mode becoming unstable must pass -kNeutralDamping.
 inline constexpr double kNeutralDamping = 1e-3;
 
-
 /// Builds the system at a given speed [m/s].
 using SystemAtSpeed = std::function<std::unique_ptr<OdeSystem>(double speed)>;
 
@@ -62,9 +61,9 @@ using LinearisationAtSpeed = std::function<Linearisation(double speed)>;
 /// every speed (|damping ratio| < kNeutralDamping with the same eigenvalue at the unstable scan
 /// speed and at v_min), from the scan speed before (or further back while that is not damped),
 /// to a relative width `rel_tol`. Empty when no crossing is found.
-[[nodiscard]] std::optional<double> critical_speed(const LinearisationAtSpeed& family,
-                                                   double v_min, double v_max,
-                                                   int scan_points = 64, double rel_tol = 1e-10);
+[[nodiscard]] std::optional<double> critical_speed(const LinearisationAtSpeed& family, double v_min,
+                                                   double v_max, int scan_points = 64,
+                                                   double rel_tol = 1e-10);
 /// The same about one state x_eq at every speed.
 [[nodiscard]] std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
                                                    double v_max, std::span<const double> x_eq,

@@ -67,7 +67,7 @@ struct AmplitudeEquation {
   /// The destination's kind (rest or not) is the same for the fitted law shifted by two
   /// standard errors of its level and tilted by two of its slope, each way.
   bool conclusive = false;
-  int periods = 0;           ///< log-derivative samples fitted
+  int periods = 0;  ///< log-derivative samples fitted
   /// At least kMinPeriods samples and finite estimates.
   [[nodiscard]] bool valid() const;
   /// A stable cycle (0 < destination < inf) and a conclusive fit: its amplitude, else NaN.
@@ -84,11 +84,11 @@ struct AmplitudeEquation {
 
 /// Outcome of a constant-speed run.
 enum class Oscillation {
-  kDecayed,    ///< amplitude fell below zero_amplitude: no limit cycle reached
-  kSteady,     ///< settled on a limit cycle (converged amplitude)
-  kDiverged,   ///< left max_amplitude (or the solver failed on the way): unbounded growth
-  kGrowing,    ///< time limit reached, amplitude still growing
-  kDecaying,   ///< time limit reached, amplitude still decreasing (to zero, by the fit)
+  kDecayed,      ///< amplitude fell below zero_amplitude: no limit cycle reached
+  kSteady,       ///< settled on a limit cycle (converged amplitude)
+  kDiverged,     ///< left max_amplitude (or the solver failed on the way): unbounded growth
+  kGrowing,      ///< time limit reached, amplitude still growing
+  kDecaying,     ///< time limit reached, amplitude still decreasing (to zero, by the fit)
   kApproaching,  ///< time limit reached, amplitude still changing towards the stable cycle the
                  ///< fitted amplitude equation predicts (its amplitude is reported)
 };
