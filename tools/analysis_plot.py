@@ -12,7 +12,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 KINDS = ("derailment_assessment", "ramp", "bifurcation", "kij_study", "sweep")
-OUTCOMES = ["decayed", "steady", "diverged", "growing", "decaying"]
+OUTCOMES = ["decayed", "steady", "diverged", "growing", "decaying", "approaching"]
 
 
 def _attr(obj, name, default=""):
@@ -98,10 +98,11 @@ def bifurcation(f, save):
     order = np.argsort(v)
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for j, n in enumerate(names):
-        # The branch: settled cycles and decayed runs (amplitude 0); unsettled runs are markers.
-        a = np.where(out == 0, 0.0, np.where(out == 1, amp[:, j], np.nan))
-        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"{n} (steady / decayed)")
-    for code, marker in ((2, "^"), (3, "2"), (4, "v")):
+        # The branch: settled cycles, cycles predicted by the amplitude equation and decayed runs
+        # (amplitude 0); other unsettled runs are markers.
+        a = np.where(out == 0, 0.0, np.where((out == 1) | (out == 5), amp[:, j], np.nan))
+        ax.plot(v[order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"{n} (steady / approaching / decayed)")
+    for code, marker in ((2, "^"), (3, "2"), (4, "v"), (5, "s")):
         sel = out == code
         if sel.any():
             ax.plot(v[sel] * 3.6, amp[sel, 0] * 1e3, marker, color="k", ms=5, ls="none", label=OUTCOMES[code])

@@ -146,14 +146,11 @@ an::SettleOptions settle_options(const Scene& scene, const SettleArgs& s) {
   return o;
 }
 
-std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max) {
-  const auto family = an::speed_family(scene);
-  const auto probe = family(0.5 * (v_min + v_max));
-  const auto x_eq = scenarios::equilibrium_state(scene, *probe);
-  return vehicle::critical_speed(family, v_min, v_max, x_eq, 64, 1e-8);
-}
-
 // ---------------------------------------------------------------- ramp
+// Envelope growth from the first full window to the peak above which the peak is shown: any
+// growth at all (1 means the envelope is largest in its first window).
+constexpr double kGrowthShown = 1.0;
+
 struct RampArgs {
   std::string scene, output;
   double speed_initial = 110.0, deceleration = 1.0, speed_final = NAN, hold = 0.1,
@@ -203,9 +200,19 @@ int do_ramp(const RampArgs& a) {
                r.envelope.empty() || r.envelope.back() >= o.threshold ? "never stays" : "stays",
                o.threshold);
   }
-  if (!std::isnan(r.peak_speed)) {
-    fmt::print("  growth    the envelope peaks at V = {:.3f} m/s = {:.2f} km/h (growth stops)\n",
-               r.peak_speed, r.peak_speed * 3.6);
+  // The envelope's maximum is where its growth turns into decay; that is the Hopf speed only
+  // while the oscillation is small enough to be linear (not on a flange-limited cycle).
+  if (!std::isnan(r.peak_speed) && r.envelope_growth > kGrowthShown) {
+    const auto peak = std::max_element(r.envelope.begin(), r.envelope.end());
+    fmt::print(
+        "  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
+        "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
+        "still linear there)\n",
+        r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
+  } else if (!std::isnan(r.peak_speed)) {
+    fmt::print(
+        "  growth    none: the envelope is largest in its first window (the disturbance "
+        "decays or settles)\n");
   }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
   an::write_ramp(scene, r, o, lateral.name.front(), out);
@@ -250,15 +257,21 @@ an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reductio
   const auto x0 = an::disturbed_state(scene, *probe, a.settle.disturbance);
   if (progress) {
     o.on_point = [&](const an::BranchPoint& p) {
-      fmt::print(stderr, "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm after {:.1f} s\n",
+      const auto& fit = p.run.fit;
+      const std::string growth =
+          fit.valid() ? fmt::format(" (sigma = {:.3g} +- {:.2g} /s, beta = {:.3g} /(s mm^2))",
+                                    fit.sigma, fit.sigma_error, fit.beta * 1e-6)
+                      : std::string();
+      fmt::print(stderr, "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm after {:.1f} s{}\n",
                  k.k11, k.k22, p.speed, p.bisection ? " (bisection)" : "",
-                 an::to_string(p.run.outcome), p.run.amplitude.front() * 1e3, p.run.time);
+                 an::to_string(p.run.outcome), p.run.amplitude.front() * 1e3, p.run.time, growth);
     };
   }
   an::KijRow row;
   row.k = k;
   row.branch = an::follow_periodic_branch(family, x0, o);
-  if (with_hopf) row.hopf_speed = hopf_speed(scene, 0.5 * a.speed_min, 1.5 * a.speed_max);
+  if (with_hopf)
+    row.hopf_speed = scenarios::hopf_speed(scene, 0.5 * a.speed_min, 1.5 * a.speed_max, 64);
   return row;
 }
 
@@ -277,6 +290,18 @@ void print_branch(const an::KijRow& row, const std::vector<std::string>& names) 
     fmt::print("  nonlinear critical speed (lowest sustained oscillation): {:.4f} m/s = {:.2f} km/h, "
                "fold in [{:.4f}, {:.4f}] m/s\n",
                *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high);
+    if (!std::isnan(b.amplitude_squared_zero)) {
+      fmt::print(
+          "  onset     amplitude^2 of the lowest cycles extrapolates to zero at {:.4f} m/s = "
+          "{:.2f} km/h: {}\n",
+          b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
+          b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
+                          : "subcritical (a finite cycle at the fold)");
+    } else {
+      fmt::print(
+          "  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
+          "does not fall towards the fold (subcritical)\n");
+    }
   } else if (b.lowest_sustained) {
     fmt::print("  sustained down to the lowest speed followed ({:.4f} m/s): the fold lies below\n",
                *b.lowest_sustained);

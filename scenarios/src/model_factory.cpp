@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <map>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 
@@ -77,6 +79,43 @@ std::vector<double> equilibrium_state(const Scene& scene, const vehicle::OdeSyst
     return v->static_equilibrium(0.0);
   }
   return std::vector<double>(system.size(), 0.0);
+}
+
+vehicle::LinearisationAtSpeed linearisation_family(const Scene& scene) {
+  struct Shared {
+    Scene scene;
+    ModelResources resources;
+    std::mutex mutex;
+    std::map<double, std::vector<double>> equilibria;  // by speed [m/s]
+  };
+  auto shared = std::make_shared<Shared>();
+  shared->scene = scene;
+  shared->scene.simulation.acceleration = 0.0;
+  shared->resources = build_resources(shared->scene);
+  return [shared](double v) {
+    vehicle::Linearisation lin;
+    lin.system = build_system(shared->scene, v, shared->resources);
+    const auto* model = dynamic_cast<const vehicle::VehicleModel*>(lin.system.get());
+    std::vector<double> start;
+    {
+      std::lock_guard lock(shared->mutex);
+      auto& eq = shared->equilibria;
+      if (const auto it = eq.find(v); it != eq.end()) {
+        lin.x_eq = it->second;
+        return lin;
+      }
+      // The nearest speed solved: the first one at or above v, or the one below.
+      auto near = eq.lower_bound(v);
+      if (near == eq.end() || (near != eq.begin() && v - std::prev(near)->first < near->first - v))
+        near = near == eq.begin() ? near : std::prev(near);
+      if (near != eq.end()) start = near->second;
+    }
+    lin.x_eq = model == nullptr || start.empty() ? equilibrium_state(shared->scene, *lin.system)
+                                                 : model->static_equilibrium(0.0, start);
+    std::lock_guard lock(shared->mutex);
+    shared->equilibria.emplace(v, lin.x_eq);
+    return lin;
+  };
 }
 
 std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& system) {

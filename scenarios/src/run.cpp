@@ -276,26 +276,32 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   return summary;
 }
 
+std::optional<double> hopf_speed(const vehicle::LinearisationAtSpeed& family, double v_min,
+                                 double v_max, int scan_points) {
+  return vehicle::critical_speed(family, v_min, v_max, scan_points, kHopfRelTol);
+}
+
+std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max, int scan_points) {
+  return hopf_speed(linearisation_family(scene), v_min, v_max, scan_points);
+}
+
 EigenReport run_eigen(const Scene& scene) {
   EigenReport report;
-  const ModelResources resources = build_resources(scene);
-  const auto factory = [&scene, &resources](double v) {
-    return build_system(scene, v, resources);
-  };
-  const auto probe = build_system(scene, scene.simulation.speed, resources);
-  // About the static equilibrium at the scene's speed (on straight track it does not depend on
-  // the speed).
-  const std::vector<double> x_eq = equilibrium_state(scene, *probe);
+  // Each speed about its own equilibrium (for a vehicle the static equilibrium depends on the
+  // speed through the creep forces' dependence on it, see linearisation_family()).
+  const auto family = linearisation_family(scene);
   std::vector<double> speeds(static_cast<std::size_t>(scene.eigen.points));
   for (int i = 0; i < scene.eigen.points; ++i) {
     speeds[static_cast<std::size_t>(i)] =
         scene.eigen.speed_min +
         (scene.eigen.speed_max - scene.eigen.speed_min) * i / (scene.eigen.points - 1);
   }
-  report.sweep = vehicle::damping_sweep(factory, speeds, x_eq);
-  report.critical_speed = vehicle::critical_speed(factory, scene.eigen.speed_min,
-                                                  scene.eigen.speed_max, x_eq, scene.eigen.points);
-  report.modes_at_scene_speed = vehicle::linear_modes(*probe, 0.0, x_eq);
+  report.sweep = vehicle::damping_sweep(family, speeds);
+  report.critical_speed =
+      hopf_speed(family, scene.eigen.speed_min, scene.eigen.speed_max, scene.eigen.points);
+  const auto at_scene_speed = family(scene.simulation.speed);
+  report.modes_at_scene_speed =
+      vehicle::linear_modes(*at_scene_speed.system, 0.0, at_scene_speed.x_eq);
   if (scene.model.type == "suspended_wheelset") {
     try {
       report.closed_form_critical_speed = vehicle::analytic_critical_speed(

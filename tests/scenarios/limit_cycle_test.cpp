@@ -108,6 +108,72 @@ TEST(LimitCycle, SupercriticalAmplitudeIsSqrtMu) {
   EXPECT_EQ(run_until_settled(stable, x0, o).outcome, Oscillation::kDecayed);
 }
 
+// The supercritical normal form is exactly the amplitude equation d ln r/dt = mu - r^2
+// (sigma = mu, beta = 1); its r^2 follows the logistic law r^2(t) = mu / (1 + (mu/r0^2 - 1)
+// e^(-2 mu t)), so with mu = 0.01 a start at r0 = 0.3 is still at r = 0.13, decaying, after
+// 40 s: the run has not converged, but it is heading for the cycle r = 0.1.
+TEST(AmplitudeEquation, SupercriticalUnconvergedRunApproachesSqrtMu) {
+  auto o = settle_options();
+  o.max_time = 40.0;
+  for (double mu : {0.01, 0.02}) {
+    HopfNormalForm sys(mu, false);
+    const std::vector<double> x0 = {0.3, 0.0};
+    const auto r = run_until_settled(sys, x0, o);
+    ASSERT_EQ(r.outcome, Oscillation::kApproaching) << mu << " " << r.message;
+    std::printf(
+        "[ figures  ] supercritical mu = %g after 40 s: sigma %.6f +- %.1e, beta %.5f, "
+        "cycle %.6f (sqrt(mu) %.6f)\n",
+        mu, r.fit.sigma, r.fit.sigma_error, r.fit.beta, r.amplitude[0], std::sqrt(mu));
+    // Envelope from sampled peaks (2 ms of a 1 Hz cycle: ~1e-6 relative after the parabolic
+    // refinement) and central differences of ln A over two periods, whose truncation error
+    // (d^3 ln A/dt^3) T^2 / 6 is below 1e-4 /s here; 2e-3 /s is 10-20 % of mu.
+    constexpr double kRateTol = 2e-3;  // [1/s]
+    EXPECT_NEAR(r.fit.sigma, mu, kRateTol) << mu;
+    EXPECT_NEAR(r.fit.beta, 1.0, 0.05) << mu;
+    EXPECT_NEAR(r.amplitude[0], std::sqrt(mu), 0.05 * std::sqrt(mu)) << mu;
+  }
+  // Below the Hopf point the same slow decay goes to rest: sigma = mu < 0.
+  HopfNormalForm stable(-0.01, false);
+  const std::vector<double> x0 = {0.3, 0.0};
+  const auto r = run_until_settled(stable, x0, o);
+  EXPECT_EQ(r.outcome, Oscillation::kDecaying) << r.message;
+  EXPECT_NEAR(r.fit.sigma, -0.01, 2e-3);
+  EXPECT_FALSE(sustained(r.outcome));
+}
+
+// Subcritical normal form near its fold mu = -1/4: above it (mu = -0.245) a start at r = 1 is
+// still creeping down towards the stable cycle r^2 = (1 + sqrt(1 + 4 mu))/2 = 0.6118 after
+// 30 s; below it (mu = -0.255) the run lingers near r^2 = 1/2 (the ghost of the fold) and
+// then collapses: no cycle. The fit is the tangent of d ln r/dt = mu + r^2 - r^4 at the
+// visited amplitudes, which predicts the nearby cycle (or its absence) correctly.
+TEST(AmplitudeEquation, SubcriticalNearFoldClassifiedByTheFit) {
+  auto o = settle_options();
+  o.max_time = 30.0;
+  HopfNormalForm above(-0.245, true);
+  const std::vector<double> x0 = {1.0, 0.0};
+  const auto r = run_until_settled(above, x0, o);
+  ASSERT_EQ(r.outcome, Oscillation::kApproaching) << r.message;
+  std::printf("[ figures  ] subcritical mu = -0.245 after 30 s: cycle %.5f (exact %.5f)\n",
+              r.amplitude[0], subcritical_amplitude(-0.245));
+  // The tangent at r^2 ~ 0.62-0.65 of a law curved by -r^4: its root lies within
+  // (r^2 - r*^2)^2 / |1 - 2 r*^2| ~ 1e-2 of r*^2, i.e. ~1 % in r.
+  EXPECT_NEAR(r.amplitude[0], subcritical_amplitude(-0.245), 0.01 * subcritical_amplitude(-0.245));
+  HopfNormalForm below(-0.255, true);
+  const auto b = run_until_settled(below, x0, o);
+  EXPECT_FALSE(sustained(b.outcome)) << to_string(b.outcome) << " " << b.message;
+  // Small amplitudes below the Hopf point: sigma is the eigenvalue's real part mu, the cubic
+  // coefficient destabilising (beta = -1 less the quintic's pull, r^2 <= 0.04 here: 0.04).
+  auto small = settle_options();
+  small.max_time = 20.0;
+  small.zero_amplitude = 1e-6;
+  HopfNormalForm decaying(-0.05, true);
+  const std::vector<double> x_small = {0.2, 0.0};
+  const auto d = run_until_settled(decaying, x_small, small);
+  ASSERT_EQ(d.outcome, Oscillation::kDecaying) << d.message;
+  EXPECT_NEAR(d.fit.sigma, -0.05, 2e-3);
+  EXPECT_NEAR(d.fit.beta, -1.0, 0.08);
+}
+
 // The supercritical normal form inside a wall at r = 1.5: the right-hand side fails beyond it.
 class WalledHopf final : public vehicle::OdeSystem {
  public:
@@ -187,6 +253,36 @@ TEST(PeriodicBranch, SubcriticalFoldAtMuMinusQuarter) {
     EXPECT_NEAR(p.run.amplitude[0], expected, tol * expected) << p.speed;
   }
   EXPECT_GE(steady, 6);
+  // A finite cycle at the fold: the A^2 line through the lowest cycles reaches zero far below.
+  EXPECT_FALSE(b.supercritical) << b.amplitude_squared_zero;
+}
+
+TEST(PeriodicBranch, SupercriticalFoldIsTheHopfPointWithShortRuns) {
+  // 60 s per speed: near V = 1 (mu -> 0) the runs end unconverged (relaxation rate 2 mu), and
+  // the amplitude equation must still put the fold at the Hopf point V = 1 and A^2 = V - 1 must
+  // extrapolate to it.
+  BranchOptions o;
+  o.settle = settle_options();
+  o.settle.max_time = 60.0;
+  o.speed_start = 1.3;
+  o.speed_stop = 0.8;
+  o.speed_step = 0.1;
+  o.bracket = 2e-3;
+  const std::vector<double> x0 = {0.6, 0.0};
+  const auto b = follow_periodic_branch(factory(false), x0, o);
+  ASSERT_TRUE(b.fold_found);
+  std::printf(
+      "[ figures  ] supercritical fold: bracket [%.6f, %.6f], A^2 zero at %.6f (exact 1), "
+      "%zu runs\n",
+      b.bracket_low, b.bracket_high, b.amplitude_squared_zero, b.points.size());
+  // The sign of sigma = V - 1 is known from the fit once |sigma| exceeds its two standard
+  // errors; with 1e-10 integration tolerances that is far inside the bracket width.
+  EXPECT_LE(b.bracket_low, 1.0);
+  EXPECT_GE(b.bracket_high, 1.0);
+  EXPECT_TRUE(b.supercritical);
+  // Two cycles within a few bracket widths of V = 1, on the line A^2 = V - 1 up to the
+  // predicted cycles' error (5 % in A above).
+  EXPECT_NEAR(b.amplitude_squared_zero, 1.0, 2.0 * o.bracket);
 }
 
 TEST(PeriodicBranch, NoOscillationAtStart) {

@@ -75,6 +75,12 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
     const auto peak = std::max_element(r.envelope.begin(), r.envelope.end()) - r.envelope.begin();
     // A trailing maximum first reaches its largest value when the signal does: no lag.
     r.peak_speed = r.completed ? r.speed[static_cast<std::size_t>(peak)] : NAN;
+    std::size_t first_full = 0;
+    while (first_full + 1 < n && r.time[first_full] - r.time[0] < o.envelope_window) ++first_full;
+    r.envelope_growth =
+        r.envelope[first_full] > 0.0
+            ? std::max(1.0, r.envelope[static_cast<std::size_t>(peak)] / r.envelope[first_full])
+            : NAN;
   }
   // The decay point: the last time the envelope was above the threshold. Only meaningful once a
   // full window has passed.
@@ -101,10 +107,12 @@ BranchResult follow_periodic_branch(const vehicle::SystemAtSpeed& factory,
     if (o.on_point) o.on_point(out.points.back());
     return out.points.back().run;
   };
-  // The state a lower speed starts from: a settled cycle's final state; after a growing or
-  // diverged run, the state that run started from (a blown-up state is no cycle).
+  // The state a lower speed starts from: a settled (or approached) cycle's final state; after a
+  // growing or diverged run, the state that run started from (a blown-up state is no cycle).
   const auto next_start = [](const SettleResult& r, const std::vector<double>& started) {
-    return r.outcome == Oscillation::kSteady ? r.final_state : started;
+    return r.outcome == Oscillation::kSteady || r.outcome == Oscillation::kApproaching
+               ? r.final_state
+               : started;
   };
   std::vector<double> start(x_disturbed.begin(), x_disturbed.end());
   auto r = run(o.speed_start, start, false);
@@ -144,6 +152,35 @@ BranchResult follow_periodic_branch(const vehicle::SystemAtSpeed& factory,
   out.lowest_sustained = upper;
   out.bracket_low = lower;
   out.bracket_high = upper;
+  // Onset: A^2 against V through the lowest cycles, by least squares.
+  std::vector<std::pair<double, double>> cycles;  // (V, A^2)
+  for (const auto& p : out.points) {
+    if (p.run.outcome != Oscillation::kSteady && p.run.outcome != Oscillation::kApproaching)
+      continue;
+    const double a = p.run.amplitude[o.settle.reference];
+    cycles.emplace_back(p.speed, a * a);
+  }
+  std::sort(cycles.begin(), cycles.end());
+  if (cycles.size() > static_cast<std::size_t>(BranchResult::kOnsetPoints))
+    cycles.resize(BranchResult::kOnsetPoints);
+  if (cycles.size() >= 2) {
+    double mv = 0.0, ma = 0.0;
+    for (const auto& [v, a2] : cycles) {
+      mv += v / static_cast<double>(cycles.size());
+      ma += a2 / static_cast<double>(cycles.size());
+    }
+    double svv = 0.0, sva = 0.0;
+    for (const auto& [v, a2] : cycles) {
+      svv += (v - mv) * (v - mv);
+      sva += (v - mv) * (a2 - ma);
+    }
+    if (svv > 0.0 && sva > 0.0) {
+      out.amplitude_squared_zero = mv - ma * svv / sva;
+      const double width = upper - lower;
+      out.supercritical = out.amplitude_squared_zero >= lower - width &&
+                          out.amplitude_squared_zero <= upper + width;
+    }
+  }
   return out;
 }
 

@@ -3,7 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,12 +18,15 @@ std::string to_string(Oscillation o) {
     case Oscillation::kDiverged: return "diverged";
     case Oscillation::kGrowing: return "growing";
     case Oscillation::kDecaying: return "decaying";
+    case Oscillation::kApproaching:
+      return "approaching";
   }
   return "?";
 }
 
 bool sustained(Oscillation o) {
-  return o == Oscillation::kSteady || o == Oscillation::kDiverged || o == Oscillation::kGrowing;
+  return o == Oscillation::kSteady || o == Oscillation::kDiverged || o == Oscillation::kGrowing ||
+         o == Oscillation::kApproaching;
 }
 
 namespace {
@@ -32,7 +37,179 @@ std::pair<double, double> min_max(std::span<const double> x, std::size_t from, s
   return {*lo, *hi};
 }
 
+/// Extremum of the parabola through (i-1, i, i+1) of x, equally spaced samples.
+double parabolic_peak(std::span<const double> x, std::size_t i) {
+  if (i == 0 || i + 1 >= x.size()) return x[i];
+  const double a = 0.5 * (x[i - 1] + x[i + 1]) - x[i], b = 0.5 * (x[i + 1] - x[i - 1]);
+  return a == 0.0 ? x[i] : x[i] - b * b / (4.0 * a);
+}
+
+/// Up-crossings of the mid-line, each armed by a visit below mid - band (hysteresis against
+/// ripples): the sample index after each crossing and its interpolated time.
+void up_crossings(std::span<const double> t, std::span<const double> x, double mid, double band,
+                  std::vector<std::size_t>& index, std::vector<double>& time) {
+  index.clear();
+  time.clear();
+  bool armed = false;
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    if (x[i - 1] < mid - band) armed = true;
+    if (armed && x[i - 1] < mid && x[i] >= mid) {
+      index.push_back(i);
+      time.push_back(t[i - 1] + (mid - x[i - 1]) / (x[i] - x[i - 1]) * (t[i] - t[i - 1]));
+      armed = false;
+    }
+  }
+}
+
+// Two standard errors: a conclusion holds with ~95 % confidence.
+constexpr double kSignificance = 2.0;
+
+/// Where d s/dt = 2 s g(s), g(s) = c[0] + c[1] u + c[2] u^2 with u = s - s_mean, takes s from
+/// s_now: the nearest zero of g in the direction of g's sign; 0 (rest) or +inf.
+double destination_of(const std::array<double, 3>& c, double s_mean, double s_now) {
+  const auto g = [&](double s) {
+    const double u = s - s_mean;
+    return c[0] + c[1] * u + c[2] * u * u;
+  };
+  const double g_now = g(s_now);
+  if (g_now == 0.0) return s_now;
+  // Zeros of g as roots in u.
+  std::vector<double> zeros;
+  if (c[2] != 0.0) {
+    const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+    if (disc >= 0.0) {
+      const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
+      if (q != 0.0) zeros.push_back(q / c[2] + s_mean);
+      if (q != 0.0) zeros.push_back(c[0] / q + s_mean);
+    }
+  } else if (c[1] != 0.0) {
+    zeros.push_back(-c[0] / c[1] + s_mean);
+  }
+  if (g_now < 0.0) {
+    double best = 0.0;
+    for (double z : zeros)
+      if (z > 0.0 && z < s_now) best = std::max(best, z);
+    return best;
+  }
+  double best = INFINITY;
+  for (double z : zeros)
+    if (z > s_now) best = std::min(best, z);
+  return best;
+}
+
 }  // namespace
+
+bool AmplitudeEquation::valid() const {
+  return periods >= kMinPeriods && std::isfinite(sigma) && std::isfinite(beta) &&
+         std::isfinite(sigma_error) && !std::isnan(destination);
+}
+
+double AmplitudeEquation::cycle_amplitude() const {
+  return valid() && conclusive && destination > 0.0 && std::isfinite(destination) ? destination
+                                                                                  : NAN;
+}
+
+bool AmplitudeEquation::sustained() const {
+  return valid() && conclusive && destination > 0.0;
+}
+
+AmplitudeEquation fit_amplitude_equation(std::span<const double> t, std::span<const double> x) {
+  if (t.size() != x.size()) throw std::invalid_argument("fit_amplitude_equation: sizes differ");
+  AmplitudeEquation fit;
+  if (x.size() < 8) return fit;
+  // Mid-line from the whole series; hysteresis band from its last fifth, where a decaying
+  // oscillation is smallest.
+  const auto [lo, hi] = min_max(x, 0, x.size());
+  const auto [lo5, hi5] = min_max(x, x.size() - x.size() / 5, x.size());
+  std::vector<std::size_t> up;
+  std::vector<double> up_time;
+  up_crossings(t, x, 0.5 * (lo + hi), 0.1 * (hi5 - lo5), up, up_time);
+  // Envelope: half the peak-to-peak of each period (peaks refined by parabolas through the
+  // samples), at the period's mid-time.
+  std::vector<double> amp, tm;
+  for (std::size_t k = 0; k + 1 < up.size(); ++k) {
+    const auto b = x.begin() + static_cast<long>(up[k]);
+    const auto e = x.begin() + static_cast<long>(up[k + 1]);
+    const auto imax = static_cast<std::size_t>(std::max_element(b, e) - x.begin());
+    const auto imin = static_cast<std::size_t>(std::min_element(b, e) - x.begin());
+    const double a = 0.5 * (parabolic_peak(x, imax) - parabolic_peak(x, imin));
+    if (!(a > 0.0)) return fit;
+    amp.push_back(a);
+    tm.push_back(0.5 * (up_time[k] + up_time[k + 1]));
+  }
+  if (amp.size() < 3) return fit;
+  // Log-derivative by central differences at each inner period, against s = A^2.
+  std::vector<double> g, s;
+  for (std::size_t k = 1; k + 1 < amp.size(); ++k) {
+    g.push_back((std::log(amp[k + 1]) - std::log(amp[k - 1])) / (tm[k + 1] - tm[k - 1]));
+    s.push_back(amp[k] * amp[k]);
+  }
+  const auto n = static_cast<Eigen::Index>(g.size());
+  fit.periods = static_cast<int>(n);
+  fit.amplitude = amp.back();
+  if (fit.periods < AmplitudeEquation::kMinPeriods) return fit;
+  double s_mean = 0.0;
+  for (double v : s) s_mean += v / static_cast<double>(n);
+  // Least squares in u = s - s_mean (conditioning), degree 2, or 1 when the curvature is not
+  // significant (or there are too few samples for it).
+  const auto solve = [&](int degree, Eigen::VectorXd& c, Eigen::MatrixXd& cov) {
+    Eigen::MatrixXd X(n, degree + 1);
+    Eigen::VectorXd y(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const double u = s[static_cast<std::size_t>(k)] - s_mean;
+      for (int j = 0; j <= degree; ++j) X(k, j) = std::pow(u, j);
+      y[k] = g[static_cast<std::size_t>(k)];
+    }
+    const Eigen::MatrixXd XtX = X.transpose() * X;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(XtX);
+    if (ldlt.info() != Eigen::Success || !(XtX.determinant() > 0.0)) return false;
+    c = ldlt.solve(X.transpose() * y);
+    const double dof = static_cast<double>(n - degree - 1);
+    if (!(dof > 0.0)) return false;
+    const double s2 = (y - X * c).squaredNorm() / dof;
+    cov = s2 * ldlt.solve(Eigen::MatrixXd::Identity(degree + 1, degree + 1));
+    return c.allFinite() && cov.allFinite();
+  };
+  Eigen::VectorXd c;
+  Eigen::MatrixXd cov;
+  int degree = 1;
+  if (n >= AmplitudeEquation::kMinPeriods + 1 && solve(2, c, cov) &&
+      std::abs(c[2]) > kSignificance * std::sqrt(cov(2, 2))) {
+    degree = 2;
+  } else if (!solve(1, c, cov)) {
+    return fit;
+  }
+  std::array<double, 3> coef = {c[0], c[1], degree == 2 ? c[2] : 0.0};
+  // Landau form about s = 0.
+  Eigen::VectorXd at_zero(degree + 1), slope_at_zero(degree + 1);
+  at_zero << 1.0, -s_mean;
+  slope_at_zero << 0.0, 1.0;
+  if (degree == 2) {
+    at_zero.conservativeResize(3);
+    slope_at_zero.conservativeResize(3);
+    at_zero[2] = s_mean * s_mean;
+    slope_at_zero[2] = -2.0 * s_mean;
+  }
+  fit.sigma = at_zero.dot(c);
+  fit.sigma_error = std::sqrt(at_zero.dot(cov * at_zero));
+  fit.beta = -slope_at_zero.dot(c);
+  fit.beta_error = std::sqrt(slope_at_zero.dot(cov * slope_at_zero));
+  fit.gamma = -coef[2];
+  // Destination from the last amplitude, and whether it stays rest / not rest when the law is
+  // shifted and tilted by two standard errors.
+  const double s_now = fit.amplitude * fit.amplitude;
+  const double d = destination_of(coef, s_mean, s_now);
+  fit.destination = std::sqrt(d);
+  fit.conclusive = true;
+  const double level = kSignificance * std::sqrt(cov(0, 0));
+  const double tilt = kSignificance * std::sqrt(cov(1, 1));
+  for (const auto& [dl, dt] : {std::pair{level, 0.0}, std::pair{-level, 0.0}, std::pair{0.0, tilt},
+                               std::pair{0.0, -tilt}}) {
+    const std::array<double, 3> shifted = {coef[0] + dl, coef[1] + dt, coef[2]};
+    if ((destination_of(shifted, s_mean, s_now) > 0.0) != (d > 0.0)) fit.conclusive = false;
+  }
+  return fit;
+}
 
 SteadyAmplitude steady_amplitude(std::span<const double> t, std::span<const double> x,
                                  const AmplitudeOptions& options) {
@@ -48,19 +225,9 @@ SteadyAmplitude steady_amplitude(std::span<const double> t, std::span<const doub
   const double band = 0.1 * (hi - lo);
   out.amplitude = 0.5 * (hi - lo);
   out.mean = mid;
-  // Up-crossings of the mid-line, each armed by a visit below mid - band (hysteresis against
-  // ripples), located by linear interpolation.
   std::vector<std::size_t> up;
   std::vector<double> up_time;
-  bool armed = false;
-  for (std::size_t i = 1; i < x.size(); ++i) {
-    if (x[i - 1] < mid - band) armed = true;
-    if (armed && x[i - 1] < mid && x[i] >= mid) {
-      up.push_back(i);
-      up_time.push_back(t[i - 1] + (mid - x[i - 1]) / (x[i] - x[i - 1]) * (t[i] - t[i - 1]));
-      armed = false;
-    }
-  }
+  up_crossings(t, x, mid, band, up, up_time);
   out.crossings = static_cast<int>(up.size());
   const auto n = static_cast<std::size_t>(options.periods);
   if (up.size() < n + 1 || !(hi > lo)) return out;
@@ -97,6 +264,7 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
   double previous_segment_amplitude = NAN, last_segment_amplitude = NAN;
   std::vector<double> last_times;
   std::vector<std::vector<double>> last_series;
+  std::vector<double> window_times, window_reference;  // last two segments, for the fit
   for (double t0 = 0.0; t0 < options.max_time - 1e-12; t0 += options.segment) {
     const double t1 = std::min(t0 + options.segment, options.max_time);
     const auto grid = vehicle::output_grid(t0, t1, options.output_interval);
@@ -154,6 +322,8 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
       r.period = NAN;
       return r;
     }
+    window_times = times;
+    window_reference = series[options.reference];
     last_times.assign(times.begin() + static_cast<long>(fresh), times.end());
     last_series.assign(m, {});
     for (std::size_t j = 0; j < m; ++j)
@@ -183,10 +353,30 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
       return r;
     }
   }
+  // Time limit: the amplitude equation fitted to the last two segments decides where the run
+  // is heading; when it cannot tell the sign of the growth, the trend does.
+  r.fit = fit_amplitude_equation(window_times, window_reference);
+  r.message = fmt::format("not settled after {} s", options.max_time);
+  if (r.fit.valid() && r.fit.conclusive) {
+    const double cycle = r.fit.cycle_amplitude();
+    if (!std::isnan(cycle)) {
+      r.outcome = Oscillation::kApproaching;
+      const double scale = cycle / r.amplitude[options.reference];
+      for (double& a : r.amplitude) a *= scale;
+      r.message +=
+          fmt::format("; amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)", cycle,
+                      r.fit.sigma, r.fit.sigma_error);
+    } else {
+      r.outcome = r.fit.sustained() ? Oscillation::kGrowing : Oscillation::kDecaying;
+      r.message += fmt::format("; amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)",
+                               r.fit.sustained() ? "unbounded growth" : "decay to rest",
+                               r.fit.sigma, r.fit.sigma_error);
+    }
+    return r;
+  }
   const bool growing = !std::isnan(previous_segment_amplitude) &&
                        last_segment_amplitude > previous_segment_amplitude;
   r.outcome = growing ? Oscillation::kGrowing : Oscillation::kDecaying;
-  r.message = fmt::format("not settled after {} s", options.max_time);
   return r;
 }
 

@@ -31,6 +31,7 @@ void write_ramp(const Scene& scene, const RampResult& r, const RampOptions& o,
   f.set_attribute("/ramp", "signal_name", signal_name);
   f.set_attribute("/ramp", "decay_speed", r.decay_speed.value_or(NAN));
   f.set_attribute("/ramp", "peak_speed", r.peak_speed);
+  f.set_attribute("/ramp", "envelope_growth", r.envelope_growth);
   f.set_attribute("/ramp", "threshold", o.threshold);
   f.set_attribute("/ramp", "deceleration", o.deceleration);
   f.set_attribute("/ramp", "speed_initial", o.speed_initial);
@@ -44,9 +45,12 @@ void write_branch(const Scene& scene, const BranchResult& b,
                   const std::vector<std::string>& wheelset_names, std::optional<double> hopf_speed,
                   const std::string& path) {
   H5File f = create_with_scene(scene, "bifurcation", path);
-  std::vector<double> v, outcome, bis, period, amp;
+  std::vector<double> v, outcome, bis, period, amp, sigma, sigma_error, beta;
   const std::size_t m = wheelset_names.size();
   for (const auto& p : b.points) {
+    sigma.push_back(p.run.fit.sigma);
+    sigma_error.push_back(p.run.fit.sigma_error);
+    beta.push_back(p.run.fit.beta);
     v.push_back(p.speed);
     outcome.push_back(static_cast<double>(p.run.outcome));
     bis.push_back(p.bisection ? 1.0 : 0.0);
@@ -55,12 +59,19 @@ void write_branch(const Scene& scene, const BranchResult& b,
       amp.push_back(j < p.run.amplitude.size() ? p.run.amplitude[j] : NAN);
   }
   f.write_vector("/branch/speed", v, "m/s", "speeds in the order computed");
-  f.write_vector("/branch/outcome", outcome, "-",
-                 "0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying");
+  f.write_vector(
+      "/branch/outcome", outcome, "-",
+      "0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching (cycle from the "
+      "amplitude equation)");
   f.write_vector("/branch/bisection", bis, "-", "1 for points of the fold bisection");
   f.write_vector("/branch/period", period, "s", "limit-cycle period");
   f.write_matrix("/branch/amplitude", amp, b.points.size(), m, "m",
                  "steady lateral amplitude, points x wheelsets");
+  f.write_vector("/branch/sigma", sigma, "1/s",
+                 "growth rate of the amplitude equation d ln A/dt = sigma - beta A^2 fitted to "
+                 "the reference envelope of a run ended by the time limit (NaN otherwise)");
+  f.write_vector("/branch/sigma_error", sigma_error, "1/s", "standard error of sigma");
+  f.write_vector("/branch/beta", beta, "1/(s m^2)", "Landau coefficient of the same fit");
   std::string names;
   for (const auto& n : wheelset_names) names += (names.empty() ? "" : ",") + n;
   f.set_attribute("/branch", "wheelsets", names);
@@ -68,6 +79,8 @@ void write_branch(const Scene& scene, const BranchResult& b,
   f.set_attribute("/branch", "bracket_low", b.bracket_low);
   f.set_attribute("/branch", "bracket_high", b.bracket_high);
   f.set_attribute("/branch", "fold_found", static_cast<long>(b.fold_found));
+  f.set_attribute("/branch", "amplitude_squared_zero", b.amplitude_squared_zero);
+  f.set_attribute("/branch", "supercritical", static_cast<long>(b.supercritical));
   f.set_attribute("/branch", "hopf_speed", hopf_speed.value_or(NAN));
   f.set_attribute("/branch", "k11", scene.contact.creep.k11);
   f.set_attribute("/branch", "k22", scene.contact.creep.k22);

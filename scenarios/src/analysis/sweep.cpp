@@ -32,7 +32,7 @@ double thread_cpu_seconds() {
 
 Oscillation outcome_from(const std::string& s, const std::string& where) {
   for (auto o : {Oscillation::kDecayed, Oscillation::kSteady, Oscillation::kDiverged,
-                 Oscillation::kGrowing, Oscillation::kDecaying})
+                 Oscillation::kGrowing, Oscillation::kDecaying, Oscillation::kApproaching})
     if (to_string(o) == s) return o;
   throw std::invalid_argument(fmt::format("{}: unknown outcome '{}'", where, s));
 }
@@ -229,8 +229,9 @@ void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_na
   std::string names;
   for (const auto& n : wheelset_names) names += (names.empty() ? "" : ",") + n;
   file.set_attribute("/sweep", "wheelsets", names);
-  file.set_attribute("/sweep", "outcome_codes",
-                     std::string("0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying"));
+  file.set_attribute(
+      "/sweep", "outcome_codes",
+      std::string("0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching"));
   file.set_attribute("/", "status", std::string("completed"));
 }
 

@@ -8,6 +8,7 @@
 #include "ferro/contact/geometry/contact_geometry_source.hpp"
 #include "ferro/track/track.hpp"
 #include "ferro/vehicle/ode_system.hpp"
+#include "ferro/vehicle/stability.hpp"
 
 namespace ferro::scenarios {
 
@@ -37,6 +38,13 @@ struct ModelResources {
 /// model, zero for suspended_wheelset.
 [[nodiscard]] std::vector<double> equilibrium_state(const Scene& scene,
                                                     const vehicle::OdeSystem& system);
+
+/// The scene's system at each constant speed (acceleration 0) with its equilibrium at that
+/// speed: equilibrium_state() for the first speed asked, then the static equilibrium
+/// warm-started from the nearest speed already solved (the equilibria are cached, so a scan and
+/// its bisection each solve a short Newton). Safe to call from several threads. This is what
+/// every linear stability analysis of a scene (eigenvalues against speed, the Hopf speed) uses.
+[[nodiscard]] vehicle::LinearisationAtSpeed linearisation_family(const Scene& scene);
 
 /// Initial state: equilibrium_state() plus the scene's `simulation.initial` by state name.
 /// Throws YamlInputError at the `initial` key for a name the model does not have.

@@ -55,9 +55,19 @@ struct EigenReport {
   std::vector<vehicle::Mode> modes_at_scene_speed;
 };
 
-/// Linear eigenvalue analysis over scene.eigen's speed range about the equilibrium
-/// (equilibrium_state(): zero for suspended_wheelset, the static equilibrium for vehicles).
+/// Linear eigenvalue analysis over scene.eigen's speed range, each speed about its own
+/// equilibrium (linearisation_family(): zero for suspended_wheelset, the static equilibrium at
+/// that speed for vehicles); the Hopf speed by the scan on scene.eigen's points and bisection to
+/// kHopfRelTol.
 [[nodiscard]] EigenReport run_eigen(const Scene& scene);
+/// Relative width the Hopf speed is bisected to [-].
+inline constexpr double kHopfRelTol = 1e-10;
+/// The Hopf speed in [v_min, v_max] (vehicle::critical_speed on linearisation_family(scene):
+/// each speed about its own equilibrium): what run_eigen and the bifurcation analysis report.
+[[nodiscard]] std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max,
+                                               int scan_points);
+[[nodiscard]] std::optional<double> hopf_speed(const vehicle::LinearisationAtSpeed& family,
+                                               double v_min, double v_max, int scan_points);
 /// Writes the report under /eigen of a new HDF5 file, with the scene metadata.
 void write_eigen_report(const Scene& scene, const EigenReport& report, const std::string& path);
 

@@ -39,15 +39,32 @@ struct SweepPoint {
   Mode least_damped;   ///< least damped non-neutral mode at that speed
 };
 
+/// A system at one speed and the state it is linearised about (its equilibrium at that speed).
+struct Linearisation {
+  std::unique_ptr<OdeSystem> system;
+  std::vector<double> x_eq;
+};
+/// Builds the system at a given speed [m/s] with its equilibrium at that speed.
+using LinearisationAtSpeed = std::function<Linearisation(double speed)>;
+
 /// Least damped non-neutral mode at each speed.
+[[nodiscard]] std::vector<SweepPoint> damping_sweep(const LinearisationAtSpeed& family,
+                                                    const std::vector<double>& speeds);
+/// The same about one state x_eq at every speed.
 [[nodiscard]] std::vector<SweepPoint> damping_sweep(const SystemAtSpeed& factory,
                                                     const std::vector<double>& speeds,
                                                     std::span<const double> x_eq);
 
 /// Lowest speed in [v_min, v_max] where a mode's damping ratio crosses zero (stable below):
 /// scan on `scan_points` speeds for the first speed with a mode below -kNeutralDamping, then
-/// bisection on the damping of that mode (followed by its frequency) to a relative width
-/// `rel_tol`. Empty when no crossing is found in the range.
+/// bisection on the sign of the largest real part among the modes that are not neutral at
+/// every speed (|damping ratio| < kNeutralDamping with the same eigenvalue at the unstable scan
+/// speed and at v_min), from the scan speed before (or further back while that is not damped),
+/// to a relative width `rel_tol`. Empty when no crossing is found.
+[[nodiscard]] std::optional<double> critical_speed(const LinearisationAtSpeed& family, double v_min,
+                                                   double v_max, int scan_points = 64,
+                                                   double rel_tol = 1e-10);
+/// The same about one state x_eq at every speed.
 [[nodiscard]] std::optional<double> critical_speed(const SystemAtSpeed& factory, double v_min,
                                                    double v_max, std::span<const double> x_eq,
                                                    int scan_points = 64, double rel_tol = 1e-10);

@@ -43,6 +43,9 @@ struct RampResult {
   /// Speed at the envelope's maximum [m/s]: where the oscillation stops growing. For a linear
   /// model slow enough a ramp, the speed where the least damped mode's damping crosses zero.
   double peak_speed = NAN;
+  /// Envelope at its maximum over the envelope once the first full window has passed [-]
+  /// (1 when the maximum is in the first window: no growth).
+  double envelope_growth = NAN;
   bool completed = true;              ///< false when the solver failed (message says why)
   std::string message;
 };
@@ -74,6 +77,17 @@ struct BranchResult {
   std::optional<double> lowest_sustained;
   double bracket_low = NAN, bracket_high = NAN;  ///< the fold lies in [low, high] [m/s]
   bool fold_found = false;  ///< false: sustained at speed_stop, or not at speed_start
+  /// Speed where the squared reference amplitude of the kOnsetPoints lowest cycles (steady or
+  /// approaching), extrapolated linearly in speed, reaches zero [m/s]; NaN with fewer than two
+  /// such points or no positive slope. A supercritical Hopf branch has A^2 proportional to
+  /// V - V_Hopf near its onset; the two cycles nearest the fold are the ones in that range (a
+  /// third may already be limited by another nonlinearity, e.g. the flange).
+  double amplitude_squared_zero = NAN;
+  /// The extrapolated zero lies within one bracket width of the fold bracket: the amplitude
+  /// goes to zero at the fold (supercritical onset, the fold is the Hopf point) instead of
+  /// jumping from a finite cycle to rest (subcritical, fold below the Hopf speed).
+  bool supercritical = false;
+  static constexpr int kOnsetPoints = 2;
 };
 
 /// Follows the periodic branch downward from x_disturbed at speed_start. Throws

@@ -5,10 +5,19 @@
 // References: Toumi 2016, chapter 4 (bifurcation diagram from constant-speed runs; nonlinear
 //   critical speed as the lowest speed with a non-zero limit cycle); Seydel, "Practical
 //   Bifurcation and Stability Analysis" (periodic branches, folds).
+//   Landau 1944 / Stuart 1960 amplitude equation dA/dt = sigma A - beta A^3, the cubic normal
+//   form of a Hopf bifurcation (Kuznetsov, "Elements of Applied Bifurcation Theory", 3rd ed.,
+//   sec. 3.5): sigma is the real part of the critical eigenvalue, sqrt(sigma/beta) the cycle.
 // Known deviations: the amplitude is half the peak-to-peak of the last N periods (periods from
-//   up-crossings of the mid-line), not a Poincare-section fixed point; a run that neither settles
-//   nor leaves [zero, max] amplitude by the time limit is classified by its trend.
+//   up-crossings of the mid-line), not a Poincare-section fixed point. A run that neither
+//   settles nor leaves [zero, max] amplitude by the time limit is classified by the amplitude
+//   equation fitted to its envelope over the last two segments; that fit is the tangent of the
+//   true amplitude law at the amplitudes the run visited, so its sigma equals the eigenvalue's
+//   real part only for small amplitudes near a Hopf point (elsewhere it still predicts the
+//   nearest cycle and its stability; near a fold the quintic term carries the curvature). When
+//   the fit's conclusion (rest or not) changes within two standard errors, the trend decides.
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -39,16 +48,52 @@ struct SteadyAmplitude {
                                                std::span<const double> x,
                                                const AmplitudeOptions& options = {});
 
+/// The amplitude equation d ln A/dt = g(A^2) = sigma - beta A^2 - gamma A^4 fitted to an
+/// oscillation's envelope: A_k = half the peak-to-peak of each period between mid-line
+/// up-crossings, the log-derivative by central differences over neighbouring periods, least
+/// squares of the log-derivative on A^2. gamma (the quintic term of a degenerate Hopf point,
+/// which bends the law into a fold) is fitted only when significant, else 0 (Landau).
+struct AmplitudeEquation {
+  double sigma = NAN;        ///< linear growth rate g(0) [1/s] (Re of the critical eigenvalue)
+  double beta = NAN;         ///< Landau coefficient -g'(0) [1/(s unit^2)]; > 0: saturating
+  double gamma = 0.0;        ///< quintic coefficient [1/(s unit^4)]
+  double sigma_error = NAN;  ///< standard error of sigma [1/s]
+  double beta_error = NAN;   ///< standard error of beta [1/(s unit^2)]
+  double amplitude = NAN;    ///< envelope of the last period fitted [unit]
+  /// Where the fitted law takes the amplitude from `amplitude`: the first zero of g in the
+  /// direction of g's sign (a stable cycle), 0 when it decays to rest, +inf when it grows
+  /// without bound [unit]. NaN for an invalid fit.
+  double destination = NAN;
+  /// The destination's kind (rest or not) is the same for the fitted law shifted by two
+  /// standard errors of its level and tilted by two of its slope, each way.
+  bool conclusive = false;
+  int periods = 0;  ///< log-derivative samples fitted
+  /// At least kMinPeriods samples and finite estimates.
+  [[nodiscard]] bool valid() const;
+  /// A stable cycle (0 < destination < inf) and a conclusive fit: its amplitude, else NaN.
+  [[nodiscard]] double cycle_amplitude() const;
+  /// Conclusive and the destination is not rest (a cycle, or unbounded growth).
+  [[nodiscard]] bool sustained() const;
+  static constexpr int kMinPeriods = 4;
+};
+
+/// Fits the amplitude equation to x(t) (see AmplitudeEquation). Returns an invalid fit (periods
+/// < kMinPeriods) for a series with too few periods.
+[[nodiscard]] AmplitudeEquation fit_amplitude_equation(std::span<const double> t,
+                                                       std::span<const double> x);
+
 /// Outcome of a constant-speed run.
 enum class Oscillation {
-  kDecayed,    ///< amplitude fell below zero_amplitude: no limit cycle reached
-  kSteady,     ///< settled on a limit cycle (converged amplitude)
-  kDiverged,   ///< left max_amplitude (or the solver failed on the way): unbounded growth
-  kGrowing,    ///< time limit reached, amplitude still growing
-  kDecaying,   ///< time limit reached, amplitude still decreasing
+  kDecayed,      ///< amplitude fell below zero_amplitude: no limit cycle reached
+  kSteady,       ///< settled on a limit cycle (converged amplitude)
+  kDiverged,     ///< left max_amplitude (or the solver failed on the way): unbounded growth
+  kGrowing,      ///< time limit reached, amplitude still growing
+  kDecaying,     ///< time limit reached, amplitude still decreasing (to zero, by the fit)
+  kApproaching,  ///< time limit reached, amplitude still changing towards the stable cycle the
+                 ///< fitted amplitude equation predicts (its amplitude is reported)
 };
 [[nodiscard]] std::string to_string(Oscillation o);
-/// True for a sustained oscillation: steady, growing or diverged.
+/// True for a sustained oscillation: steady, approaching a cycle, growing or diverged.
 [[nodiscard]] bool sustained(Oscillation o);
 
 struct SettleOptions {
@@ -66,7 +111,9 @@ struct SettleOptions {
 
 struct SettleResult {
   Oscillation outcome = Oscillation::kDecayed;
-  std::vector<double> amplitude;  ///< per observed state (0 when decayed)
+  std::vector<double> amplitude;  ///< per observed state (0 when decayed; when approaching, the
+                                  ///< predicted cycle, each state scaled as the reference)
+  AmplitudeEquation fit;          ///< of the reference state, for runs ended by the time limit
   double period = 0.0;            ///< of the reference state [s] (NaN when not found)
   double time = 0.0;              ///< simulated [s]
   long rhs_evaluations = 0;
