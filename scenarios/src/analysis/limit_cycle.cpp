@@ -181,15 +181,11 @@ AmplitudeEquation fit_amplitude_equation(std::span<const double> t, std::span<co
   }
   std::array<double, 3> coef = {c[0], c[1], degree == 2 ? c[2] : 0.0};
   // Landau form about s = 0.
-  Eigen::VectorXd at_zero(degree + 1), slope_at_zero(degree + 1);
-  at_zero << 1.0, -s_mean;
-  slope_at_zero << 0.0, 1.0;
-  if (degree == 2) {
-    at_zero.conservativeResize(3);
-    slope_at_zero.conservativeResize(3);
-    at_zero[2] = s_mean * s_mean;
-    slope_at_zero[2] = -2.0 * s_mean;
-  }
+  // d/ds and value of 1, u, u^2 at s = 0 (u = s - s_mean), truncated to the fitted degree.
+  const Eigen::Vector3d at_zero_full(1.0, -s_mean, s_mean * s_mean);
+  const Eigen::Vector3d slope_at_zero_full(0.0, 1.0, -2.0 * s_mean);
+  const Eigen::VectorXd at_zero = at_zero_full.head(degree + 1);
+  const Eigen::VectorXd slope_at_zero = slope_at_zero_full.head(degree + 1);
   fit.sigma = at_zero.dot(c);
   fit.sigma_error = std::sqrt(at_zero.dot(cov * at_zero));
   fit.beta = -slope_at_zero.dot(c);
