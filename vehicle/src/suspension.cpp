@@ -134,7 +134,10 @@ void apply_element(const VehicleModel::Impl& model, const ElementData& e,
   if (e.a >= 0) {
     BodyKinematics& ka_mut = kin[static_cast<std::size_t>(e.a)];
     ka_mut.force -= f;
-    ka_mut.moment -= (ka_mut.attitude * s.point_a).cross(f);
+    // The reaction acts on the same line as the action, through body_b's attachment point
+    // (body_a's point plus d): a massless element passes no net couple, and angular momentum
+    // is conserved when the two points separate under a preload.
+    ka_mut.moment -= (ka_mut.attitude * s.point_a + d).cross(f);
   }
 }
 
