@@ -297,6 +297,7 @@ Scene load_scene(const std::string& path) {
     v.max_order = static_cast<int>(r.integer_or("max_order", v.max_order));
     v.stability_limit_detection =
         r.boolean_or("stability_limit_detection", v.stability_limit_detection);
+    v.jacobian_max_steps = r.integer_or("jacobian_max_steps", v.jacobian_max_steps);
     r.finish();
     validated(r, [&] { v.validate(r.path()); });
   }

@@ -58,6 +58,11 @@ void IntegratorSettings::validate(const std::string& where) const {
         "cvode_adams, got {}",
         where, max_order));
   }
+  if (jacobian_max_steps < 1) {
+    throw std::invalid_argument(fmt::format(
+        "{}.jacobian_max_steps: must be >= 1 (steps between two Jacobians), got {}", where,
+        jacobian_max_steps));
+  }
   if (erk_order < 2 || erk_order > 8) {
     throw std::invalid_argument(
         fmt::format("{}.erk_order: must lie in 2..8, got {}", where, erk_order));

@@ -245,6 +245,7 @@ class CvodeIntegrator final : public Integrator {
     if (bdf) {
       make_direct_solver(h, system, s_.linear_solver);
       check(CVodeSetLinearSolver(h.mem, h.LS, h.A), "CVodeSetLinearSolver");
+      check(CVodeSetJacEvalFrequency(h.mem, s_.jacobian_max_steps), "CVodeSetJacEvalFrequency");
     } else {
       h.NLS = SUNNonlinSol_FixedPoint(h.y, 0, h.ctx);
       check(CVodeSetNonlinearSolver(h.mem, h.NLS), "CVodeSetNonlinearSolver");
@@ -335,6 +336,8 @@ class ArkodeDirkIntegrator final : public Integrator {
     check(ARKStepSetMaxNumSteps(h.mem, s_.max_steps), "ARKStepSetMaxNumSteps");
     make_direct_solver(h, system, s_.linear_solver);
     check(ARKStepSetLinearSolver(h.mem, h.LS, h.A), "ARKStepSetLinearSolver");
+    check(ARKStepSetJacEvalFrequency(h.mem, s_.jacobian_max_steps),
+          "ARKStepSetJacEvalFrequency");
     // Up to kMaxNewtonIterations Newton iterations per stage before the step is retried with a
     // fresh Jacobian (ARKODE's default of 3 makes a retry, and a Jacobian, of most steps at
     // rtol <= 1e-6 here), and each stage predicted by the maximum-order interpolant of the

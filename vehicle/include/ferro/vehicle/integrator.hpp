@@ -36,6 +36,13 @@ struct IntegratorSettings {
   /// cvode_bdf: BDF stability limit detection (lowers the order when an oscillatory mode near
   /// the imaginary axis makes orders 3-5 unstable).
   bool stability_limit_detection = false;
+  /// cvode_bdf / arkode_dirk: most steps between two finite-difference Jacobians of the Newton
+  /// matrix. The solver still refreshes the Jacobian whenever a Newton iteration fails to
+  /// converge, so a stale one costs iterations, never accuracy (the error test is unchanged).
+  /// SUNDIALS' own default is 51 (CVODE) / 51 (ARKODE); on whole vehicles, where a dense
+  /// Jacobian costs one right-hand side per state, 1000 takes 25-35 % of the CPU time off a
+  /// run (docs/PERFORMANCE.md, "Jacobian age").
+  long jacobian_max_steps = 1000;
 
   /// Throws std::invalid_argument naming the field and the allowed values.
   void validate(const std::string& where = "solver") const;
