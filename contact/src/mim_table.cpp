@@ -432,10 +432,13 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
   v.f_y *= sign_fy;
   v.m_z *= sign_fy;
   // Coulomb bound: the interpolant may overshoot mu F_n near full slip; |f| <= 1.
+  // The scale sits 4 ulp below 1/f so that the rounding of the division and of hypot (each
+  // within 1 ulp) cannot leave |f| a hair above 1.
   const double f = std::hypot(v.f_x, v.f_y);
   if (f > 1.0) {
-    v.f_x /= f;
-    v.f_y /= f;
+    const double scale = (1.0 - 4.0 * std::numeric_limits<double>::epsilon()) / f;
+    v.f_x *= scale;
+    v.f_y *= scale;
   }
   return v;
 }
