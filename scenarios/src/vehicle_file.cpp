@@ -254,7 +254,8 @@ const std::vector<std::string>& wheel_rail_keys() {
       "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
       "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
-      "reduction_table", "reduction_table_point", "regularisation_speed", "wheel_conical_tread"};
+      "reduction_table", "reduction_table_point", "regularisation_speed", "wheel_conical_tread",
+      "hunt_crossley_alpha"};
   return keys;
 }
 
@@ -363,6 +364,11 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   w.regularisation_speed = r.number_or("regularisation_speed", w.regularisation_speed);
   if (!(w.regularisation_speed > 0.0))
     r.fail("regularisation_speed", fmt::format("must be > 0 m/s, got {}", w.regularisation_speed));
+  w.hunt_crossley_alpha = r.number_or("hunt_crossley_alpha", w.hunt_crossley_alpha);
+  if (!(w.hunt_crossley_alpha >= 0.0 && std::isfinite(w.hunt_crossley_alpha)))
+    r.fail("hunt_crossley_alpha",
+           fmt::format("must be finite and >= 0 s/m (0: undamped normal contact), got {}",
+                       w.hunt_crossley_alpha));
 }
 
 void check_wheel_rail(const MapReader& r, const vehicle::WheelRailSpec& w) {

@@ -146,6 +146,8 @@ VehicleModel::VehicleModel(VehicleModelInputs inputs) : impl_(std::make_unique<I
   require(std::isfinite(wr.friction) && wr.friction >= 0.0, "wheel_rail.friction: must be >= 0");
   require(finite_positive(wr.regularisation_speed),
           "wheel_rail.regularisation_speed: must be > 0 m/s");
+  require(std::isfinite(wr.hunt_crossley_alpha) && wr.hunt_crossley_alpha >= 0.0,
+          "wheel_rail.hunt_crossley_alpha: must be finite and >= 0 s/m");
   require(finite_positive(wr.shear_modulus), "wheel_rail.shear_modulus: must be > 0 Pa");
   require(std::isfinite(wr.poisson) && wr.poisson >= 0.0 && wr.poisson < 0.5,
           "wheel_rail.poisson: must be in [0, 0.5)");

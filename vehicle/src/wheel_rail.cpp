@@ -1,15 +1,27 @@
 // Wheel-rail coupling of one wheelset at every contact point the geometry source returns:
 // pose relative to the rails (with track irregularities), normal force from the penetration
 // (the contact layer's one Hertz entry point), exact creepages from the body and track-frame kinematics, tangential forces from the
-// registered model, forces and moments on the wheelset.
+// registered model, forces and moments on the wheelset. Optional Hunt-Crossley damping of the
+// normal force: N = N_Hertz (1 + alpha d(delta)/dt), clamped at N >= 0.
 //
 // References: Toumi (2016) eqs. (5)-(13) (Hertz), (24)-(27) (creepages as rigid slip over the
-// rolling speed), (38)-(40), (156) (creep forces, K_ij); Johnson (1985) eq. (4.39).
+// rolling speed), (38)-(40), (156) (creep forces, K_ij); Johnson (1985) eq. (4.39); Hunt &
+// Crossley, "Coefficient of restitution interpreted as damping in vibroimpact", J. Appl. Mech.
+// 42 (1975) 440-445 (F = K delta^n + lambda delta^n d(delta)/dt, here lambda = alpha K;
+// alpha = 3 (1 - e) / (2 v) for a restitution coefficient e at impact speed v); Marhefka &
+// Orin, IEEE Trans. SMC-A 29 (1999) 566-572 (the force clamped at zero on separation).
 // Known deviations: the wheel material point is placed at the rolling radius the source gives,
 // along the direction from the axle to the contact point (the axial offset kept), so that the
 // rolling radius of a tabulated or analytic profile enters the creepages exactly; the rail is
 // at rest in the ground (no rail vibration); gauge irregularity is not passed to the geometry
 // (WheelsetPose has no gauge input). The rolling speed is max(|V|, regularisation_speed).
+// The penetration rate of the damping is the normal velocity, relative to the rails, of the
+// wheel section's point at the contact, from the rates of the rail-relative pose (lateral,
+// height, roll; the irregularities passing under the wheelset at V): the exact rate of the
+// penetration the geometry gives for that pose (the gap is a minimum, so its rate is the
+// relative normal velocity of the closest points); the yaw rate's share (flange lead) is left
+// out. The tangential model gets the
+// damped normal force (its Coulomb bound follows it) with the semi-axes of the penetration.
 
 #include <algorithm>
 #include <cmath>
@@ -51,13 +63,34 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
       std::max(std::abs(k.motion.speed), model.in.config.wheel_rail.regularisation_speed);
   const Eigen::Vector3d rails_origin(0.0, irr.lateral, irr.vertical);
 
+  // Normal damping: rates of the rail-relative pose (the irregularities pass under the wheelset
+  // at V) and the axle centre in the rails' axes, where the geometry places it.
+  const double alpha = model.in.config.wheel_rail.hunt_crossley_alpha;
+  const double level_ratio = std::clamp(irr.cross_level / spacing, -1.0, 1.0);
+  const double rail_roll_rate =
+      -k.motion.speed * irr.d_cross_level /
+      (spacing * std::sqrt(std::max(1e-12, 1.0 - level_ratio * level_ratio)));
+  const Eigen::Vector3d pose_velocity(0.0, k.u_dot.y() - k.motion.speed * irr.d_lateral,
+                                      k.u_dot.z() - k.motion.speed * irr.d_vertical);
+  const Eigen::Vector3d pose_roll_rate(k.rates.x() - rail_roll_rate, 0.0, 0.0);
+  const Eigen::Vector3d centre_in_rails(0.0, rel.lateral, rel.height + body.r0);
+
   for (const contact::WheelRailContact& c : points) {
-    const contact::ContactPatch patch =
-        contact::hertz_patch_from_penetration(c, model.contact_modulus);
+    contact::ContactPatch patch = contact::hertz_patch_from_penetration(c, model.contact_modulus);
     if (!(patch.normal_force > 0.0)) continue;  // wheel lift: no tangential model call
 
     const Eigen::Vector3d p = rails_origin + roll_rail(from_contact_frame(c.x, c.y, c.z));
     const Eigen::Vector3d n = roll_rail(rail_normal(c.side, c.contact_angle));
+    if (alpha > 0.0) {
+      // Velocity of the wheel section's point at the contact relative to the rails, rails' axes.
+      const Eigen::Vector3d arm_in_rails = from_contact_frame(c.x, c.y, c.z) - centre_in_rails;
+      const Eigen::Vector3d velocity = pose_velocity + pose_roll_rate.cross(arm_in_rails);
+      const double penetration_rate = -velocity.dot(rail_normal(c.side, c.contact_angle));
+      const double factor = std::max(0.0, 1.0 + alpha * penetration_rate);
+      if (!(factor > 0.0)) continue;  // separating faster than 1/alpha: no force
+      patch.normal_force *= factor;
+      patch.peak_pressure *= factor;
+    }
     // Wheel material point: axial offset along the axle, radial at the rolling radius.
     const Eigen::Vector3d d = p - centre;
     const Eigen::Vector3d axial = d.dot(axle) * axle;

@@ -120,6 +120,11 @@ struct WheelRailSpec {
   std::map<std::string, double> reduction_table_point;
   /// Creepages use max(|V|, regularisation_speed) in the denominator [m/s].
   double regularisation_speed = 0.1;
+  /// Hunt-Crossley damping of the normal contact force: N = N_Hertz (1 + alpha d(delta)/dt),
+  /// clamped at N >= 0, with d(delta)/dt the penetration rate [s/m]. 0: undamped normal
+  /// contact (Hertz alone). Linearised about a static load N0, each point adds a viscous
+  /// coefficient alpha N0 [N s/m] (see wheel_rail.cpp).
+  double hunt_crossley_alpha = 0.0;
 };
 
 struct VehicleConfig {

@@ -40,8 +40,9 @@
 //   - the pose relative to the rails (track irregularities at s_i included: lateral alignment
 //     y_irr, vertical level z_irr, cross-level c giving a rail roll -c / rail_spacing, and the
 //     alignment slope giving a rail yaw) is converted once (frames.hpp) to contact::WheelsetPose;
-//   - normal force from the penetration by Hertz (semi-axes from the same solution); a point
-//     with zero penetration or force is skipped (no tangential model call);
+//   - normal force from the penetration by Hertz (semi-axes from the same solution), optionally
+//     times (1 + alpha d(penetration)/dt) (Hunt-Crossley, clamped at >= 0); a point with zero
+//     penetration or force is skipped (no tangential model call);
 //   - creepages from the exact velocity of the wheel material point and the absolute angular
 //     velocity of the wheelset (frame rotation, body rates, spin), relative to the rail at
 //     rest in the ground, divided by max(|V|, regularisation_speed);
@@ -81,8 +82,9 @@
 // attitude itself is the exact rotation. Gauge irregularity is ignored by the contact geometry
 // (WheelsetPose has no gauge input; a gauge deviation shifts neither rail). The irregularities
 // displace and roll the rails within the design frame (track.hpp) and do not move the body
-// frames. Tangential forces use the contact patch of the normal solution without contact
-// damping; normal contact is undamped. K_ij tables are not looked up yet (constants only).
+// frames. Normal contact is undamped unless wheel_rail.hunt_crossley_alpha > 0 (Hunt-Crossley
+// damping, wheel_rail.cpp); tangential forces use the Hertz patch of the penetration with that
+// normal force. K_ij tables are not looked up yet (constants only).
 
 #include <memory>
 #include <string>
