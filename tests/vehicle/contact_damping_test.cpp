@@ -82,6 +82,11 @@ TEST(HuntCrossley, bounce_eigenvalue_matches_the_linearised_damping_ratio) {
     const Oscillator o = linearised_bounce(alpha);
     EXPECT_NEAR(modes.front().damping_ratio / o.zeta, 1.0, kRelTol) << "alpha " << alpha;
     EXPECT_NEAR(std::abs(modes.front().eigenvalue) / o.omega_n, 1.0, kRelTol);
+    std::printf("Hunt-Crossley bounce, alpha %4.1f s/m: zeta closed form %.6f, eigenvalue %.6f "
+                "(rel. error %.1e); omega_n %.2f rad/s (rel. error %.1e)\n",
+                alpha, o.zeta, modes.front().damping_ratio,
+                modes.front().damping_ratio / o.zeta - 1.0, o.omega_n,
+                std::abs(modes.front().eigenvalue) / o.omega_n - 1.0);
   }
 }
 
@@ -127,8 +132,9 @@ TEST(HuntCrossley, bounce_decays_at_the_linearised_damping_ratio) {
   const double zeta = decrement / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi +
                                             decrement * decrement);
   EXPECT_NEAR(zeta / o.zeta, 1.0, kRelTol) << "closed form " << o.zeta << ", run " << zeta;
-  std::printf("Hunt-Crossley bounce, alpha %.1f s/m: zeta closed form %.5f, time run %.5f\n",
-              kAlpha, o.zeta, zeta);
+  std::printf("Hunt-Crossley bounce, alpha %.1f s/m: zeta closed form %.5f, time run %.5f "
+              "(rel. error %.1e)\n",
+              kAlpha, o.zeta, zeta, zeta / o.zeta - 1.0);
   // Undamped: no decay at all (the Hertz spring conserves energy).
   const VehicleModel m0(bouncing_wheelset(0.0));
   z.clear();
@@ -239,8 +245,9 @@ TEST(HuntCrossley, penetration_rate_is_the_rate_of_the_hertz_penetration) {
     ASSERT_GT(std::abs(expected_term), 1e-3) << side << ": the probe must move the contact";
     const double damped_term = force(damped, t0, 0.0, side) / n0 - 1.0;
     EXPECT_NEAR(damped_term / expected_term, 1.0, kRelTolDampingTerm) << side;
-    std::printf("%s wheel: alpha delta_dot %.6e (central differences) against %.6e (model)\n",
-                side, expected_term, damped_term);
+    std::printf("%s wheel: alpha delta_dot %.6e (central differences) against %.6e (model), "
+                "rel. error %.1e\n",
+                side, expected_term, damped_term, damped_term / expected_term - 1.0);
   }
 }
 
