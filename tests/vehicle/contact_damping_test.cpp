@@ -27,7 +27,7 @@ namespace ferro::vehicle {
 namespace {
 
 constexpr double kG = 9.81;
-constexpr double kMass = 1813.0;  // Manchester wheelset [kg]
+constexpr double kMass = 1813.0;                                   // Manchester wheelset [kg]
 constexpr double kA = 1.0 / (2.0 * 0.46), kB = 1.0 / (2.0 * 0.3);  // relative curvatures [1/m]
 
 /// A wheelset free to move vertically only, on two flat Hertz contacts (no suspension).
@@ -82,11 +82,11 @@ TEST(HuntCrossley, bounce_eigenvalue_matches_the_linearised_damping_ratio) {
     const Oscillator o = linearised_bounce(alpha);
     EXPECT_NEAR(modes.front().damping_ratio / o.zeta, 1.0, kRelTol) << "alpha " << alpha;
     EXPECT_NEAR(std::abs(modes.front().eigenvalue) / o.omega_n, 1.0, kRelTol);
-    std::printf("Hunt-Crossley bounce, alpha %4.1f s/m: zeta closed form %.6f, eigenvalue %.6f "
-                "(rel. error %.1e); omega_n %.2f rad/s (rel. error %.1e)\n",
-                alpha, o.zeta, modes.front().damping_ratio,
-                modes.front().damping_ratio / o.zeta - 1.0, o.omega_n,
-                std::abs(modes.front().eigenvalue) / o.omega_n - 1.0);
+    std::printf(
+        "Hunt-Crossley bounce, alpha %4.1f s/m: zeta closed form %.6f, eigenvalue %.6f "
+        "(rel. error %.1e); omega_n %.2f rad/s (rel. error %.1e)\n",
+        alpha, o.zeta, modes.front().damping_ratio, modes.front().damping_ratio / o.zeta - 1.0,
+        o.omega_n, std::abs(modes.front().eigenvalue) / o.omega_n - 1.0);
   }
 }
 
@@ -129,12 +129,13 @@ TEST(HuntCrossley, bounce_decays_at_the_linearised_damping_ratio) {
   ASSERT_GE(peaks.size(), 4u);
   const double cycles = static_cast<double>(peaks.size() - 1);
   const double decrement = std::log(peaks.front() / peaks.back()) / cycles;
-  const double zeta = decrement / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi +
-                                            decrement * decrement);
+  const double zeta =
+      decrement / std::sqrt(4.0 * std::numbers::pi * std::numbers::pi + decrement * decrement);
   EXPECT_NEAR(zeta / o.zeta, 1.0, kRelTol) << "closed form " << o.zeta << ", run " << zeta;
-  std::printf("Hunt-Crossley bounce, alpha %.1f s/m: zeta closed form %.5f, time run %.5f "
-              "(rel. error %.1e)\n",
-              kAlpha, o.zeta, zeta, zeta / o.zeta - 1.0);
+  std::printf(
+      "Hunt-Crossley bounce, alpha %.1f s/m: zeta closed form %.5f, time run %.5f "
+      "(rel. error %.1e)\n",
+      kAlpha, o.zeta, zeta, zeta / o.zeta - 1.0);
   // Undamped: no decay at all (the Hertz spring conserves energy).
   const VehicleModel m0(bouncing_wheelset(0.0));
   z.clear();
@@ -198,8 +199,8 @@ TEST(HuntCrossley, penetration_rate_is_the_rate_of_the_hertz_penetration) {
   // K is fixed), differentiated by central differences of step h along x(t) = x0 + h x0'
   // (positions moved by their rates; the defects move under the wheelset at V). Difference
   // error ~ h^2 delta''' / 6: 1e-6 relative on the damping term alpha delta_dot (~1e-2 of N).
-  constexpr double kAlpha = 3.0;                  // [s/m]
-  constexpr double kStep = 1e-6;                  // [s]
+  constexpr double kAlpha = 3.0;  // [s/m]
+  constexpr double kStep = 1e-6;  // [s]
   constexpr double kRelTolDampingTerm = 1e-5;
   const VehicleModel damped(wheelset_over_defects(kAlpha));
   const VehicleModel undamped(wheelset_over_defects(0.0));
@@ -239,15 +240,15 @@ TEST(HuntCrossley, penetration_rate_is_the_rate_of_the_hertz_penetration) {
     const double delta = std::pow(n0, 2.0 / 3.0);  // all three in units of K^(-2/3)
     const double rate = (delta_plus - delta_minus) / (2.0 * kStep) / delta;  // delta_dot / delta
     const auto mat = contact::combine(contact::Material::steel(), contact::Material::steel());
-    const double delta_m =
-        contact::hertz_solve(kA, kB, n0, mat.contact_modulus).approach;  // [m]
+    const double delta_m = contact::hertz_solve(kA, kB, n0, mat.contact_modulus).approach;  // [m]
     const double expected_term = kAlpha * rate * delta_m;  // alpha d(delta)/dt
     ASSERT_GT(std::abs(expected_term), 1e-3) << side << ": the probe must move the contact";
     const double damped_term = force(damped, t0, 0.0, side) / n0 - 1.0;
     EXPECT_NEAR(damped_term / expected_term, 1.0, kRelTolDampingTerm) << side;
-    std::printf("%s wheel: alpha delta_dot %.6e (central differences) against %.6e (model), "
-                "rel. error %.1e\n",
-                side, expected_term, damped_term, damped_term / expected_term - 1.0);
+    std::printf(
+        "%s wheel: alpha delta_dot %.6e (central differences) against %.6e (model), "
+        "rel. error %.1e\n",
+        side, expected_term, damped_term, damped_term / expected_term - 1.0);
   }
 }
 
