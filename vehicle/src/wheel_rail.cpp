@@ -46,11 +46,14 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
     return Eigen::Vector3d(v.x(), cr * v.y() - sr * v.z(), sr * v.y() + cr * v.z());
   };
 
-  // Pose relative to the rails.
+  // Pose relative to the rails: the axle centre's offset from the rails' origin (centreline at
+  // rail level, irregularities included) in the rails' axes, which the cross-level rolls by
+  // rail_roll about that origin (the inverse of roll_rail, which places the contact points).
   const Eigen::Vector3d centre = Eigen::Vector3d(0.0, body.rest.y(), body.rest.z()) + k.u;
   RailRelativePose rel;
-  rel.lateral = centre.y() - irr.lateral;
-  rel.height = centre.z() - irr.vertical - body.r0;
+  const Eigen::Vector3d offset = centre - Eigen::Vector3d(0.0, irr.lateral, irr.vertical);
+  rel.lateral = cr * offset.y() + sr * offset.z();
+  rel.height = -sr * offset.y() + cr * offset.z() - body.r0;
   rel.roll = k.angles.x() - rail_roll;
   rel.yaw = k.angles.z() - irr.d_lateral;
   model.in.geometry->contacts(to_contact_pose(rel), points);
@@ -70,10 +73,15 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
   const double rail_roll_rate =
       -k.motion.speed * irr.d_cross_level /
       (spacing * std::sqrt(std::max(1e-12, 1.0 - level_ratio * level_ratio)));
-  const Eigen::Vector3d pose_velocity(0.0, k.u_dot.y() - k.motion.speed * irr.d_lateral,
-                                      k.u_dot.z() - k.motion.speed * irr.d_vertical);
-  const Eigen::Vector3d pose_roll_rate(k.rates.x() - rail_roll_rate, 0.0, 0.0);
+  // d/dt of (rel.lateral, rel.height): the offset's rate turned into the rails' axes, plus the
+  // turning of those axes (d R^T/dt offset = rail_roll_rate (height', -lateral')).
+  const double offset_rate_y = k.u_dot.y() - k.motion.speed * irr.d_lateral;
+  const double offset_rate_z = k.u_dot.z() - k.motion.speed * irr.d_vertical;
   const Eigen::Vector3d centre_in_rails(0.0, rel.lateral, rel.height + body.r0);
+  const Eigen::Vector3d pose_velocity(
+      0.0, cr * offset_rate_y + sr * offset_rate_z + rail_roll_rate * centre_in_rails.z(),
+      -sr * offset_rate_y + cr * offset_rate_z - rail_roll_rate * centre_in_rails.y());
+  const Eigen::Vector3d pose_roll_rate(k.rates.x() - rail_roll_rate, 0.0, 0.0);
 
   for (const contact::WheelRailContact& c : points) {
     contact::ContactPatch patch = contact::hertz_patch_from_penetration(c, model.contact_modulus);
