@@ -22,6 +22,20 @@ int run(const std::string& args, const std::string& log) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+#ifdef FERRO_WITH_MPI
+/// `command` under `mpirun -n 2`.
+int run_mpi(const std::string& command, const std::string& log) {
+#if defined(__SANITIZE_ADDRESS__)
+  // OpenMPI unloads its plugins before exit, so LeakSanitizer can neither attribute nor
+  // suppress their allocations: leak checking is off for the mpirun children only.
+  const std::string mpi_env = "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
+#else
+  const std::string mpi_env;
+#endif
+  return run(mpi_env + "mpirun --allow-run-as-root --oversubscribe -n 2 " + command, log);
+}
+#endif
+
 std::string slurp(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "r");
   std::string s;
@@ -136,18 +150,7 @@ TEST_F(SweepCli, SerialThreadsResumeAndMpiAgree) {
   expect_identical(serial, read(dir + "/resumed.h5"), "resumed");
 
 #ifdef FERRO_WITH_MPI
-#if defined(__SANITIZE_ADDRESS__)
-  // OpenMPI unloads its plugins before exit, so LeakSanitizer can neither attribute nor
-  // suppress their allocations: leak checking is off for the mpirun children only.
-  const std::string mpi_env = "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
-#else
-  const std::string mpi_env;
-#endif
-  ASSERT_EQ(run(mpi_env + "mpirun --allow-run-as-root --oversubscribe -n 2 " + exe() + args +
-                    " -o " + dir +
-                    "/mpi.h5",
-                dir + "/mpi.log"),
-            0)
+  ASSERT_EQ(run_mpi(exe() + args + " -o " + dir + "/mpi.h5", dir + "/mpi.log"), 0)
       << slurp(dir + "/mpi.log");
   EXPECT_NE(slurp(dir + "/mpi.log").find("2 rank(s)"), std::string::npos) << slurp(dir + "/mpi.log");
   expect_identical(serial, read(dir + "/mpi.h5"), "mpirun -n 2");
@@ -179,15 +182,7 @@ TEST_F(SweepCli, ManchesterVehicleThreadsAndMpiAgreeWithSerial) {
       << slurp(dir + "/threads.log");
   expect_identical(serial, read(dir + "/threads.h5"), "2 threads");
 #ifdef FERRO_WITH_MPI
-#if defined(__SANITIZE_ADDRESS__)
-  const std::string mpi_env = "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
-#else
-  const std::string mpi_env;
-#endif
-  ASSERT_EQ(run(mpi_env + "mpirun --allow-run-as-root --oversubscribe -n 2 " + exe() + vargs +
-                    " -o " + dir + "/mpi.h5",
-                dir + "/mpi.log"),
-            0)
+  ASSERT_EQ(run_mpi(exe() + vargs + " -o " + dir + "/mpi.h5", dir + "/mpi.log"), 0)
       << slurp(dir + "/mpi.log");
   expect_identical(serial, read(dir + "/mpi.h5"), "mpirun -n 2");
 #else

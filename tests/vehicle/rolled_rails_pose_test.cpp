@@ -52,11 +52,11 @@ VehicleModelInputs wheelset_on(bool rolled_rails) {
   return in;
 }
 
-std::size_t index_of(const auto& info, const std::string& name) {
+std::size_t signal_index(const std::vector<SignalInfo>& info, const std::string& name) {
   for (std::size_t i = 0; i < info.size(); ++i) {
     if (info[i].name == name) return i;
   }
-  ADD_FAILURE() << "no entry " << name;
+  ADD_FAILURE() << "no signal " << name;
   return 0;
 }
 
@@ -65,10 +65,9 @@ TEST(Frames, a_pose_relative_to_rolled_rails_gives_the_flat_rail_contact) {
   constexpr double kRelTol = 1e-8;
   const VehicleModel flat(wheelset_on(false));
   const VehicleModel rolled(wheelset_on(true));
-  const auto states = flat.state_info();
-  const std::size_t iy = index_of(states, "wheelset_1.y");
-  const std::size_t iz = index_of(states, "wheelset_1.z");
-  const std::size_t iroll = index_of(states, "wheelset_1.roll");
+  const auto iy = static_cast<std::size_t>(flat.state_index("wheelset_1", Dof::y));
+  const auto iz = static_cast<std::size_t>(flat.state_index("wheelset_1", Dof::z));
+  const auto iroll = static_cast<std::size_t>(flat.state_index("wheelset_1", Dof::roll));
 
   // A pose relative to the rails with both wheels loaded: the static state on flat rails,
   // shifted 0.2 mm and rolled 0.02 mrad (the cone's 0.1 turns the shift into 0.02 mm of
@@ -98,7 +97,7 @@ TEST(Frames, a_pose_relative_to_rolled_rails_gives_the_flat_rail_contact) {
   flat.signals(0.0, x_flat, s_flat);
   rolled.signals(0.0, x_rolled, s_rolled);
   for (const char* side : {"left", "right"}) {
-    const std::size_t i = index_of(info, std::string("wheelset_1.") + side + ".normal_force");
+    const std::size_t i = signal_index(info, std::string("wheelset_1.") + side + ".normal_force");
     ASSERT_GT(s_flat[i], 10e3) << side;
     EXPECT_NEAR(s_rolled[i] / s_flat[i], 1.0, kRelTol)
         << side << ": " << s_rolled[i] << " N on rolled rails, " << s_flat[i] << " N on flat";

@@ -68,20 +68,25 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
 
   // Normal damping: rates of the rail-relative pose (the irregularities pass under the wheelset
   // at V) and the axle centre in the rails' axes, where the geometry places it.
+  // Computed only when the damping is on (this runs in every right-hand side).
   const double alpha = model.in.config.wheel_rail.hunt_crossley_alpha;
-  const double level_ratio = std::clamp(irr.cross_level / spacing, -1.0, 1.0);
-  const double rail_roll_rate =
-      -k.motion.speed * irr.d_cross_level /
-      (spacing * std::sqrt(std::max(1e-12, 1.0 - level_ratio * level_ratio)));
-  // d/dt of (rel.lateral, rel.height): the offset's rate turned into the rails' axes, plus the
-  // turning of those axes (d R^T/dt offset = rail_roll_rate (height', -lateral')).
-  const double offset_rate_y = k.u_dot.y() - k.motion.speed * irr.d_lateral;
-  const double offset_rate_z = k.u_dot.z() - k.motion.speed * irr.d_vertical;
   const Eigen::Vector3d centre_in_rails(0.0, rel.lateral, rel.height + body.r0);
-  const Eigen::Vector3d pose_velocity(
-      0.0, cr * offset_rate_y + sr * offset_rate_z + rail_roll_rate * centre_in_rails.z(),
-      -sr * offset_rate_y + cr * offset_rate_z - rail_roll_rate * centre_in_rails.y());
-  const Eigen::Vector3d pose_roll_rate(k.rates.x() - rail_roll_rate, 0.0, 0.0);
+  Eigen::Vector3d pose_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d pose_roll_rate = Eigen::Vector3d::Zero();
+  if (alpha > 0.0) {
+    const double level_ratio = std::clamp(irr.cross_level / spacing, -1.0, 1.0);
+    const double rail_roll_rate =
+        -k.motion.speed * irr.d_cross_level /
+        (spacing * std::sqrt(std::max(1e-12, 1.0 - level_ratio * level_ratio)));
+    // d/dt of (rel.lateral, rel.height): the offset's rate turned into the rails' axes, plus
+    // the turning of those axes (d R^T/dt offset = rail_roll_rate (height', -lateral')).
+    const double offset_rate_y = k.u_dot.y() - k.motion.speed * irr.d_lateral;
+    const double offset_rate_z = k.u_dot.z() - k.motion.speed * irr.d_vertical;
+    pose_velocity = {0.0,
+                     cr * offset_rate_y + sr * offset_rate_z + rail_roll_rate * centre_in_rails.z(),
+                     -sr * offset_rate_y + cr * offset_rate_z - rail_roll_rate * centre_in_rails.y()};
+    pose_roll_rate.x() = k.rates.x() - rail_roll_rate;
+  }
 
   for (const contact::WheelRailContact& c : points) {
     contact::ContactPatch patch = contact::hertz_patch_from_penetration(c, model.contact_modulus);
