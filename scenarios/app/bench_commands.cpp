@@ -141,7 +141,8 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
   work->add_option("--speed", wp->speed, "Override simulation.speed [m/s]");
   work->add_option("--tangential", wp->tangential, "Override the tangential contact model");
   work->add_option("--integrators", wp->options.integrators,
-                   "method or method:max_order, e.g. cvode_bdf cvode_bdf:2 odeint_rosenbrock4")
+                   "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
+                   "odeint_rosenbrock4 arkode_erk@5e-4")
       ->delimiter(',')
       ->capture_default_str();
   work->add_option("--rtols", wp->options.rtols, "relative tolerances")

@@ -298,6 +298,7 @@ Scene load_scene(const std::string& path) {
     v.stability_limit_detection =
         r.boolean_or("stability_limit_detection", v.stability_limit_detection);
     v.jacobian_max_steps = r.integer_or("jacobian_max_steps", v.jacobian_max_steps);
+    v.fixed_step = r.number_or("fixed_step", v.fixed_step);
     r.finish();
     validated(r, [&] { v.validate(r.path()); });
   }

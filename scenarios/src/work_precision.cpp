@@ -21,9 +21,25 @@ double cpu_now() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-vehicle::IntegratorSettings parse_entry(const Scene& scene, const std::string& entry,
+// An entry is `method`, `method:max_order` (an order cap) or `method@h` (a fixed step h [s],
+// arkode_erk / arkode_dirk; run once, the tolerances then only scale the Newton test).
+vehicle::IntegratorSettings parse_entry(const Scene& scene, const std::string& full_entry,
                                         double rtol, double atol_per_rtol) {
   vehicle::IntegratorSettings s = scene.solver;
+  s.fixed_step = 0.0;
+  std::string entry = full_entry;
+  if (const auto at = entry.find('@'); at != std::string::npos) {
+    const std::string step = entry.substr(at + 1);
+    char* end = nullptr;
+    const double h = std::strtod(step.c_str(), &end);
+    if (step.empty() || end == nullptr || *end != '\0' || !(h > 0.0)) {
+      throw std::invalid_argument(fmt::format(
+          "--integrators: '{}': expected method@step with a step > 0 s (e.g. arkode_erk@5e-4)",
+          full_entry));
+    }
+    s.fixed_step = h;
+    entry = entry.substr(0, at);
+  }
   const auto colon = entry.find(':');
   s.method = entry.substr(0, colon);
   s.max_order = 0;
@@ -39,7 +55,7 @@ vehicle::IntegratorSettings parse_entry(const Scene& scene, const std::string& e
   }
   s.rtol = rtol;
   s.atol = rtol * atol_per_rtol;
-  s.validate(fmt::format("--integrators '{}'", entry));
+  s.validate(fmt::format("--integrators '{}'", full_entry));
   return s;
 }
 
@@ -91,9 +107,11 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   std::vector<vehicle::IntegratorSettings> settings;
   std::vector<std::string> labels;
   for (const std::string& entry : options.integrators) {
+    const bool fixed = entry.find('@') != std::string::npos;
     for (double r : options.rtols) {
       settings.push_back(parse_entry(scene, entry, r, options.atol_per_rtol));
       labels.push_back(entry);
+      if (fixed) break;  // a fixed step does not depend on the tolerance: one run
     }
   }
   if (settings.empty()) throw std::invalid_argument("--integrators: give at least one");
@@ -140,6 +158,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   vehicle::IntegratorSettings ref_settings = scene.solver;
   ref_settings.method = "cvode_bdf";
   ref_settings.max_order = 0;
+  ref_settings.fixed_step = 0.0;
   ref_settings.rtol = options.reference_rtol;
   ref_settings.atol = options.reference_rtol * options.atol_per_rtol;
   const Trajectory ref = integrate(*system, x0, times, ref_settings, index);

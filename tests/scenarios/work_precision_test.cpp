@@ -20,11 +20,12 @@ TEST(WorkPrecision, errors_match_the_exact_linear_solution) {
   Scene scene = load_scene(std::string(FERRO_SOURCE_DIR) + "/scenarios/scenes/wheelset_hunting.yaml");
   scene.simulation.t_end = 2.0;
   WorkPrecisionOptions opt;
-  opt.integrators = {"cvode_bdf", "cvode_bdf:2"};
+  // Two adaptive entries at two tolerances each, and two fixed-step entries, each run once.
+  opt.integrators = {"cvode_bdf", "cvode_bdf:2", "arkode_erk@2e-3", "arkode_erk@1e-3"};
   opt.rtols = {1e-4, 1e-6};
   opt.target_error = 1e-3;
   const WorkPrecisionReport r = run_work_precision(scene, opt);
-  ASSERT_EQ(r.points.size(), 4u);
+  ASSERT_EQ(r.points.size(), 6u);
 
   // Exact solution on the output grid.
   const auto system = build_system(scene, scene.simulation.speed);
@@ -97,6 +98,13 @@ TEST(WorkPrecision, errors_match_the_exact_linear_solution) {
   // Tighter tolerance, smaller error, for each integrator.
   EXPECT_LT(r.points[1].error, r.points[0].error);
   EXPECT_LT(r.points[3].error, r.points[2].error);
+  // Fixed steps: the step is taken as given (t_end / h steps) and halving it divides the error
+  // of the order-4 method by ~2^4 (within the factor 1.5 the outputs' interpolation allows).
+  EXPECT_EQ(r.points[4].settings.fixed_step, 2e-3);
+  EXPECT_NEAR(static_cast<double>(r.points[4].steps), scene.simulation.t_end / 2e-3, 1.0);
+  EXPECT_NEAR(static_cast<double>(r.points[5].steps), scene.simulation.t_end / 1e-3, 1.0);
+  EXPECT_GT(r.points[4].error / r.points[5].error, 16.0 / 1.5);
+  EXPECT_LT(r.points[4].error / r.points[5].error, 16.0 * 1.5);
   // The pick meets the target and is the cheapest that does.
   ASSERT_TRUE(r.best.has_value());
   const auto& best = r.points[*r.best];
@@ -123,6 +131,10 @@ TEST(WorkPrecision, bad_entries_name_the_option) {
       },
       std::invalid_argument);
   opt.integrators = {"cvode_bdf:7"};
+  EXPECT_THROW((void)run_work_precision(scene, opt), std::invalid_argument);
+  opt.integrators = {"arkode_erk@x"};
+  EXPECT_THROW((void)run_work_precision(scene, opt), std::invalid_argument);
+  opt.integrators = {"cvode_bdf@1e-3"};  // BDF has no fixed step: refused, not ignored
   EXPECT_THROW((void)run_work_precision(scene, opt), std::invalid_argument);
   opt.integrators = {"cvode_bdf"};
   opt.states = {"no_such_state"};

@@ -58,6 +58,15 @@ void IntegratorSettings::validate(const std::string& where) const {
         "cvode_adams, got {}",
         where, max_order));
   }
+  if (!(fixed_step >= 0.0) || !std::isfinite(fixed_step)) {
+    throw std::invalid_argument(fmt::format(
+        "{}.fixed_step: must be >= 0 s (0 = adaptive steps), got {}", where, fixed_step));
+  }
+  if (fixed_step > 0.0 && method != "arkode_erk" && method != "arkode_dirk") {
+    throw std::invalid_argument(fmt::format(
+        "{}.fixed_step: only arkode_erk and arkode_dirk take a fixed step; {} needs 0, got {}",
+        where, method, fixed_step));
+  }
   if (jacobian_max_steps < 1) {
     throw std::invalid_argument(fmt::format(
         "{}.jacobian_max_steps: must be >= 1 (steps between two Jacobians), got {}", where,

@@ -288,6 +288,7 @@ class ArkodeErkIntegrator final : public Integrator {
     if (s_.initial_step > 0.0)
       check(ERKStepSetInitStep(h.mem, s_.initial_step), "ERKStepSetInitStep");
     check(ERKStepSetMaxNumSteps(h.mem, s_.max_steps), "ERKStepSetMaxNumSteps");
+    if (s_.fixed_step > 0.0) check(ERKStepSetFixedStep(h.mem, s_.fixed_step), "ERKStepSetFixedStep");
     return with_counts(
         run_loop(
             h, ud, times, observer,
@@ -334,6 +335,7 @@ class ArkodeDirkIntegrator final : public Integrator {
     if (s_.initial_step > 0.0)
       check(ARKStepSetInitStep(h.mem, s_.initial_step), "ARKStepSetInitStep");
     check(ARKStepSetMaxNumSteps(h.mem, s_.max_steps), "ARKStepSetMaxNumSteps");
+    if (s_.fixed_step > 0.0) check(ARKStepSetFixedStep(h.mem, s_.fixed_step), "ARKStepSetFixedStep");
     make_direct_solver(h, system, s_.linear_solver);
     check(ARKStepSetLinearSolver(h.mem, h.LS, h.A), "ARKStepSetLinearSolver");
     check(ARKStepSetJacEvalFrequency(h.mem, s_.jacobian_max_steps),

@@ -43,6 +43,10 @@ struct IntegratorSettings {
   /// Jacobian costs one right-hand side per state, 1000 takes 25-35 % of the CPU time off a
   /// run (docs/PERFORMANCE.md, "Jacobian age").
   long jacobian_max_steps = 1000;
+  /// arkode_erk / arkode_dirk: a constant step [s] with no error control (0: adaptive steps
+  /// under rtol / atol). The error is then the method's truncation error at that step, to be
+  /// measured against a tight-tolerance run (`ferrodyn bench work-precision --fixed-steps`).
+  double fixed_step = 0.0;
 
   /// Throws std::invalid_argument naming the field and the allowed values.
   void validate(const std::string& where = "solver") const;
