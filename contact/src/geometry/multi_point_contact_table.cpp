@@ -482,7 +482,9 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
   out.clear();
   // Interpolated candidates of the cell (at most kMaxPointsPerWheel per wheel and corner).
   constexpr int kBuf = 2 * kMaxPointsPerWheel * 8;
-  std::array<Candidate, kBuf> buf;
+  // Per-thread scratch (13 kB of candidates): a local array would be value-initialised on every
+  // call, which cost more than the interpolation itself.
+  thread_local std::array<Candidate, kBuf> buf;
   int n = 0;
   interpolate(pose, [&](const Candidate& s) {
     if (n < kBuf) buf[static_cast<std::size_t>(n++)] = s;
@@ -503,8 +505,8 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
   }
   // Penetrating candidates, joined runs sharing their depth as contacts_from_candidates().
   const double drop = pose.vertical;
-  std::array<RunMember, kBuf> members;
-  std::array<double, kBuf> gap;
+  thread_local std::array<RunMember, kBuf> members;
+  thread_local std::array<double, kBuf> gap;
   for (int i = 0; i < n; ++i) {
     const Candidate& s = buf[static_cast<std::size_t>(i)];
     members[static_cast<std::size_t>(i)] = {s.side, s.gap, s.barrier};
