@@ -110,8 +110,14 @@ int do_run(const RunArgs& a) {
                  modes.front().damping_ratio > 0.0 ? "stable" : "unstable");
     }
   }
-  fmt::print("  solver    {} (rtol {:g}, atol {:g}): {} steps, {} rhs evaluations\n",
-             scene.solver.method, scene.solver.rtol, scene.solver.atol, s.steps, s.rhs_evaluations);
+  if (scene.solver.fixed_step > 0.0) {
+    fmt::print("  solver    {} (fixed step {:g} s, no error control): {} steps, {} rhs evaluations\n",
+               scene.solver.method, scene.solver.fixed_step, s.steps, s.rhs_evaluations);
+  } else {
+    fmt::print("  solver    {} (rtol {:g}, atol {:g}): {} steps, {} rhs evaluations\n",
+               scene.solver.method, scene.solver.rtol, scene.solver.atol, s.steps,
+               s.rhs_evaluations);
+  }
   fmt::print("  status    {} at t = {:.6g} s: {} samples in {:.3f} s wall ({:.1f}x real time)\n",
              s.status_text, s.t_reached, s.samples, s.wall_seconds,
              s.wall_seconds > 0 ? s.t_reached / s.wall_seconds : 0.0);
