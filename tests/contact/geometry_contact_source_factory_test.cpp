@@ -85,6 +85,17 @@ TEST(make_contact_source, every_kind_and_the_table_cache) {
   EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 11u);
   EXPECT_FALSE(fc::MultiPointContactTable::is_table_of_another_version(tab.table_file));
   std::filesystem::remove(tab.table_file);
+  // The cache is written beside its path and renamed over it (so runs started together never
+  // read a half-written file), into a directory created on demand; nothing else is left behind.
+  const std::filesystem::path dir = std::string(FERRO_BINARY_DIR) + "/factory_table_cache_dir";
+  std::filesystem::remove_all(dir);
+  tab.table_file = (dir / "table.h5").string();
+  (void)fc::make_contact_source(tab);
+  ASSERT_TRUE(std::filesystem::exists(tab.table_file));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator{}),
+            1);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(make_contact_source, unknown_kind_names_the_field_and_the_allowed_values) {

@@ -11,6 +11,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include "ferro/contact/geometry/contact_sources.hpp"
 
 namespace ferro::contact {
@@ -58,7 +60,16 @@ std::shared_ptr<const ContactGeometrySource> make_contact_source(const ContactSo
     }
     auto t = std::make_shared<MultiPointContactTable>(
         MultiPointContactTable::build(*pair, spec.table));
-    if (!spec.table_file.empty()) t->save_hdf5(spec.table_file);
+    if (!spec.table_file.empty()) {
+      // Written beside the cache and renamed over it: runs started together never read a
+      // half-written table.
+      const std::filesystem::path target(spec.table_file);
+      if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
+      const std::string partial =
+          fmt::format("{}.partial.{}", spec.table_file, static_cast<long>(::getpid()));
+      t->save_hdf5(partial);
+      std::filesystem::rename(partial, target);
+    }
     return t;
   }
   throw std::invalid_argument(fmt::format("ContactSourceSpec.kind: '{}' is not one of {}",
