@@ -424,11 +424,12 @@ void VehicleModel::Impl::frame_at(double s, double speed, double rate, BodyKinem
 }
 
 void VehicleModel::Impl::evaluate(double t, std::span<const double> x, std::span<double> xdot,
-                                  WheelResult* wheels, double* car_body_ay) const {
+                                  WheelResult* wheels, double* car_body_ay,
+                                  double speed_override) const {
   thread_local std::vector<BodyKinematics> kin;
   if (kin.size() < bodies.size()) kin.resize(bodies.size());
 
-  const double speed = in.speed.speed(t);
+  const double speed = std::isfinite(speed_override) ? speed_override : in.speed.speed(t);
   const double rate = in.speed.rate(t);
   const double s_ref = in.start_position + in.speed.distance(t);
 
@@ -604,6 +605,16 @@ const VehicleModelInputs& VehicleModel::inputs() const { return impl_->in; }
 // ---------------------------------------------------------------------------------------------
 // Static equilibrium
 
+namespace {
+
+struct NewtonOutcome {
+  bool converged = false;
+  double residual = 0.0;  ///< largest scaled residual at the end [-]
+  int iterations = 0;
+};
+
+}  // namespace
+
 std::vector<double> VehicleModel::static_equilibrium(double t,
                                                      std::span<const double> start) const {
   const Impl& m = *impl_;
@@ -611,8 +622,7 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
     throw std::invalid_argument(fmt::format(
         "static_equilibrium: start has {} entries, the model {} states", start.size(), m.n_states));
   }
-  std::vector<double> x = start.empty() ? rest_state()
-                                        : std::vector<double>(start.begin(), start.end());
+  std::vector<double> guess = rest_state();
   // Unknowns: positions, spin perturbations and series-damper deflections; residuals: the
   // accelerations of those positions and the rates of the other two.
   std::vector<int> unknown, residual;
@@ -640,7 +650,7 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
     // Lower a wheelset onto the rails (touching height of the centred pose, found by bisection
     // on the source's contacts, then a typical Hertz approach) so that Newton starts with
     // contact stiffness.
-    if (b.has_contact && b.q[2] >= 0 && start.empty()) {
+    if (b.has_contact && b.q[2] >= 0) {
       std::vector<contact::WheelRailContact> points;
       double lifted = -0.02, penetrating = 0.02;  // pose.vertical bracket [m]
       for (int it = 0; it < 40; ++it) {
@@ -649,7 +659,7 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
         m.in.geometry->contacts(pose, points);
         (points.empty() ? lifted : penetrating) = pose.vertical;
       }
-      x[static_cast<std::size_t>(b.q[2])] = -(penetrating + 1.0e-4);
+      guess[static_cast<std::size_t>(b.q[2])] = -(penetrating + 1.0e-4);
     }
   }
   for (const ElementData& e : m.elements) {
@@ -660,17 +670,8 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
     }
   }
   const auto n = static_cast<Eigen::Index>(unknown.size());
-  if (n == 0) return x;
-  std::vector<double> xdot(m.n_states);
-  const auto eval = [&](const std::vector<double>& state, Eigen::VectorXd& r) {
-    const int code = rhs(t, state, xdot);
-    if (code != kRhsOk) return false;
-    for (Eigen::Index i = 0; i < n; ++i)
-      r[i] = xdot[static_cast<std::size_t>(residual[i])] * scale[static_cast<std::size_t>(i)];
-    return true;
-  };
-  Eigen::VectorXd r(n), r_trial(n), r_step(n);
-  if (!eval(x, r)) throw std::runtime_error("static_equilibrium: rhs failed at the start state");
+  if (n == 0) return start.empty() ? guess : std::vector<double>(start.begin(), start.end());
+
   // Relative to the weight: 1e-9 is far below the 0.1 % wheel-load test and above the
   // round-off of the contact forces (~1e-13 of the weight); kStallTol accepts a Newton that
   // stalled at the geometry's resolution (a table or search resolves gaps to ~1e-10 m, which
@@ -678,34 +679,139 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
   constexpr double kResidualTol = 1e-9;  // [-]
   constexpr double kStallTol = 1e-6;     // [-]
   constexpr double kStep = 1e-8;         // finite-difference step [m, rad]
-  Eigen::MatrixXd J(n, n);
-  for (int iter = 0; iter < 200; ++iter) {
-    if (r.lpNorm<Eigen::Infinity>() < kResidualTol) return x;
-    for (Eigen::Index j = 0; j < n; ++j) {
-      std::vector<double> xp = x;
-      xp[static_cast<std::size_t>(unknown[j])] += kStep;
-      if (!eval(xp, r_step)) throw std::runtime_error("static_equilibrium: rhs failed");
-      J.col(j) = (r_step - r) / kStep;
+
+  // Scaled residual at `state` for the speed `speed` (NaN: the profile's V(t)); false where the
+  // model cannot be evaluated (a pose outside a contact table, the track's end).
+  std::vector<double> xdot(m.n_states);
+  const auto eval = [&](const std::vector<double>& state, double speed, Eigen::VectorXd& r) {
+    try {
+      m.evaluate(t, state, xdot, nullptr, nullptr, speed);
+    } catch (const std::exception&) {
+      return false;
     }
-    const Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-r);
-    double lambda = 1.0;
-    bool improved = false;
-    for (int ls = 0; ls < 30; ++ls, lambda *= 0.5) {
-      std::vector<double> xt = x;
-      for (Eigen::Index j = 0; j < n; ++j) xt[static_cast<std::size_t>(unknown[j])] += lambda * dx[j];
-      if (eval(xt, r_trial) && r_trial.norm() < r.norm()) {
-        x = xt;
-        r = r_trial;
-        improved = true;
-        break;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      r[i] = xdot[static_cast<std::size_t>(residual[i])] * scale[static_cast<std::size_t>(i)];
+      if (!std::isfinite(r[i])) return false;
+    }
+    return true;
+  };
+
+  // Damped Newton from x (updated in place): numerical Jacobian, minimum-norm steps (weakly
+  // determined directions stay near rest), step halved until the residual's 2-norm falls.
+  Eigen::VectorXd r(n), r_trial(n), r_step(n);
+  Eigen::MatrixXd J(n, n);
+  const auto newton = [&](std::vector<double>& x, double speed, int max_iterations) {
+    NewtonOutcome out;
+    if (!eval(x, speed, r)) {
+      out.residual = std::numeric_limits<double>::infinity();
+      return out;
+    }
+    for (; out.iterations < max_iterations; ++out.iterations) {
+      out.residual = r.lpNorm<Eigen::Infinity>();
+      if (out.residual < kResidualTol) {
+        out.converged = true;
+        return out;
+      }
+      for (Eigen::Index j = 0; j < n; ++j) {
+        std::vector<double> xp = x;
+        xp[static_cast<std::size_t>(unknown[j])] += kStep;
+        if (!eval(xp, speed, r_step)) return out;
+        J.col(j) = (r_step - r) / kStep;
+      }
+      const Eigen::VectorXd dx = J.completeOrthogonalDecomposition().solve(-r);
+      double lambda = 1.0;
+      bool improved = false;
+      for (int ls = 0; ls < 30; ++ls, lambda *= 0.5) {
+        std::vector<double> xt = x;
+        for (Eigen::Index j = 0; j < n; ++j) xt[static_cast<std::size_t>(unknown[j])] += lambda * dx[j];
+        if (eval(xt, speed, r_trial) && r_trial.norm() < r.norm()) {
+          x = xt;
+          r = r_trial;
+          improved = true;
+          break;
+        }
+      }
+      if (!improved) break;
+    }
+    out.residual = r.lpNorm<Eigen::Infinity>();
+    out.converged = out.residual < kStallTol;  // stalled at the geometry's resolution
+    return out;
+  };
+
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // 1. Newton from the given start, or from rest with the wheelsets lowered onto the rails.
+  std::vector<double> x = start.empty() ? guess : std::vector<double>(start.begin(), start.end());
+  const NewtonOutcome direct = newton(x, nan, 200);
+  if (direct.converged) return x;
+
+  // 2. Continuation in speed. The residual is not smooth: the wheel-rail contact changes its
+  // points (tread, flange root, flange; a multi-point table steps where a point is born inside a
+  // cell), and a bump stop's table has kinks; Newton from rest can end against such a step with
+  // a large residual, typically a sharp curve at speed where the wheelsets roll on their flanges
+  // and the secondary lateral suspension takes the car body's versine. At V = 0 the creepages
+  // vanish (no sliding velocity) and the equilibrium is that of the elastic suspension, gravity,
+  // cant and normal contact alone, which Newton finds from rest. From there the speed is raised
+  // in steps, each Newton started from the previous equilibrium extrapolated along the path:
+  // first to the regularisation speed, over which the creep forces grow from zero to their
+  // rolling values (creepages are the sliding velocity over max(V, regularisation_speed)), then
+  // to the target speed (centrifugal force, cant deficiency). A step whose Newton fails is
+  // halved; the criteria are those of the direct solve.
+  x = guess;
+  const NewtonOutcome at_rest = newton(x, 0.0, 200);
+  if (!at_rest.converged) {
+    throw std::runtime_error(fmt::format(
+        "static_equilibrium: Newton did not converge (largest residual {:.3g} of the weight; at "
+        "V = 0, the start of the continuation in speed: {:.3g})",
+        direct.residual, at_rest.residual));
+  }
+  const double v_target = m.in.speed.speed(t);
+  const double v_reg = m.in.config.wheel_rail.regularisation_speed;
+  // Iterations a continuation step may take before it is halved, and the smallest step [m/s].
+  constexpr int kStepIterations = 30;
+  const double min_step = 1e-6 * std::max(v_target, v_reg);
+  std::vector<double> x_prev = x;  // the accepted point before x, for the secant predictor
+  double v = 0.0, v_prev = 0.0;
+  double last_residual = 0.0;
+  for (const double v_end : {std::min(v_target, v_reg), v_target}) {
+    double h = v_end - v;
+    while (v < v_end) {
+      const double v_try = v_end - v <= h * (1.0 + 1e-12) ? v_end : v + h;
+      bool accepted = false;
+      // Secant predictor along the path first, then the previous equilibrium as it is.
+      for (const bool predict : {v > v_prev, false}) {
+        std::vector<double> xt = x;
+        if (predict) {
+          const double ratio = (v_try - v) / (v - v_prev);
+          for (const int k : unknown) {
+            const auto i = static_cast<std::size_t>(k);
+            xt[i] += ratio * (x[i] - x_prev[i]);
+          }
+        }
+        const NewtonOutcome o = newton(xt, v_try, kStepIterations);
+        last_residual = o.residual;
+        if (o.converged) {
+          x_prev = std::move(x);
+          x = std::move(xt);
+          v_prev = v;
+          v = v_try;
+          // A step that converged quickly may double (within its segment).
+          if (o.iterations <= kStepIterations / 4) h *= 2.0;
+          accepted = true;
+          break;
+        }
+      }
+      if (accepted) continue;
+      h *= 0.5;
+      if (h < min_step) {
+        throw std::runtime_error(fmt::format(
+            "static_equilibrium: Newton did not converge (largest residual {:.3g} of the weight "
+            "from rest); the continuation in speed from V = 0 stopped at {:.6g} m/s of {:.6g} "
+            "(largest residual {:.3g})",
+            direct.residual, v, v_target, last_residual));
       }
     }
-    if (!improved) break;
   }
-  if (r.lpNorm<Eigen::Infinity>() < kStallTol) return x;  // stalled at the geometry's resolution
-  throw std::runtime_error(fmt::format(
-      "static_equilibrium: Newton did not converge (largest residual {:.3g} of the weight)",
-      r.lpNorm<Eigen::Infinity>()));
+  return x;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -86,8 +87,11 @@ struct VehicleModel::Impl {
 
   /// Evaluates the model at (t, x): xdot (may be empty) and, when `wheels` is given, the
   /// per-wheel results (2 per contact body) and the car-body lateral acceleration.
+  /// `speed_override` (finite) replaces the speed profile's V(t) (the static equilibrium's
+  /// continuation in speed); the track position and dV/dt stay those of t.
   void evaluate(double t, std::span<const double> x, std::span<double> xdot,
-                WheelResult* wheels, double* car_body_ay) const;
+                WheelResult* wheels, double* car_body_ay,
+                double speed_override = std::numeric_limits<double>::quiet_NaN()) const;
 
   /// Frame, frame motion and irregularities at arc length s.
   void frame_at(double s, double speed, double rate, BodyKinematics& k, bool irregular) const;

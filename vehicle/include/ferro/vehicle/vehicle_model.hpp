@@ -144,9 +144,14 @@ class VehicleModel final : public OdeSystem {
   /// the accelerations, spin accelerations and series-damper rates with every velocity zero,
   /// from rest_state() with the wheelsets lowered onto the rails. Numerical Jacobian, minimum-norm
   /// steps (weakly determined directions stay near rest); the car body's x is held at rest (it
-  /// defines the neutral longitudinal position of the whole vehicle). Throws
-  /// std::runtime_error when it does not converge. `start` (size() entries, optional) replaces
-  /// the rest state as the initial guess (e.g. beyond a bump stop's free play).
+  /// defines the neutral longitudinal position of the whole vehicle). When that Newton does not
+  /// converge (sharp curves at speed: flange contact, bump stops), continuation in speed: the
+  /// equilibrium at V = 0 (no creep forces), then the speed raised in adaptive steps, first to
+  /// wheel_rail.regularisation_speed (the creep forces grow from zero) and then to V(t), each
+  /// Newton warm-started from the previous step with the same criteria. Throws
+  /// std::runtime_error when neither converges (the message gives the speed the continuation
+  /// reached). `start` (size() entries, optional) replaces the rest state as the initial guess
+  /// of the first Newton (e.g. beyond a bump stop's free play).
   [[nodiscard]] std::vector<double> static_equilibrium(double t = 0.0,
                                                        std::span<const double> start = {}) const;
 
