@@ -39,14 +39,19 @@ struct StripGrid {
   std::vector<double> gap;  // relative gap at the strip centres
 };
 
-StripGrid make_grid(const NormalProblem& p, double z_min, double y_lo, double y_hi, int count) {
-  StripGrid g;
+void fill_grid(const NormalProblem& p, double z_min, double y_lo, double y_hi, int count,
+               StripGrid& g) {
   g.count = count;
   g.dy = (y_hi - y_lo) / count;
   g.y0 = y_lo + 0.5 * g.dy;
   g.gap.resize(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i)
     g.gap[static_cast<std::size_t>(i)] = relative_gap(p, z_min, g.y0 + i * g.dy);
+}
+
+StripGrid make_grid(const NormalProblem& p, double z_min, double y_lo, double y_hi, int count) {
+  StripGrid g;
+  fill_grid(p, z_min, y_lo, y_hi, count, g);
   return g;
 }
 
@@ -100,13 +105,15 @@ std::pair<double, double> penetrated_span(const NormalProblem& p, double z_min, 
 
 // Least-squares parabola z = c0 + c1 t + B t^2 (t = y - y[center]) through samples lo..hi;
 // returns B (NaN if the system is singular).
+// With `weight` (optional, one value per sample lo..hi), the weighted least-squares parabola.
 double least_squares_curvature(const NormalProblem& p, std::size_t center, std::size_t lo,
-                               std::size_t hi) {
-  double m[3][4] = {};  // normal equations [sum t^(i+j) | sum z t^i]
+                               std::size_t hi, const double* weight = nullptr) {
+  double m[3][4] = {};  // normal equations [sum w t^(i+j) | sum w z t^i]
   for (std::size_t j = lo; j <= hi; ++j) {
     const double t = p.gap_y[j] - p.gap_y[center];
     const double z = p.gap_z[j] - p.gap_z[center];
-    const double pw[5] = {1.0, t, t * t, t * t * t, t * t * t * t};
+    const double w = weight != nullptr ? weight[j - lo] : 1.0;
+    const double pw[5] = {w, w * t, w * t * t, w * t * t * t, w * t * t * t * t};
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) m[r][c] += pw[r + c];
       m[r][3] += z * pw[r];
@@ -141,7 +148,16 @@ void SemiHertzOptions::validate() const {
   }
 }
 
-NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& options) {
+namespace {
+
+// The checked problem's deepest sample and the first estimate of the reference curvature B_ref.
+struct GapMinimum {
+  std::size_t jmin = 0;
+  double z_min = 0.0;
+  double b_ref = 0.0;
+};
+
+GapMinimum find_minimum(const NormalProblem& p, const SemiHertzOptions& options) {
   options.validate();
   if (!(p.curvature_x > 0.0) || !std::isfinite(p.curvature_x)) {
     throw std::invalid_argument(fmt::format(
@@ -158,14 +174,15 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
           fmt::format("semi_hertz: gap_y must be strictly increasing (index {})", i + 1));
     }
   }
-  const CombinedMaterial mat = combine(p.body1, p.body2);
-  const auto jmin =
+  GapMinimum g;
+  g.jmin =
       static_cast<std::size_t>(std::min_element(p.gap_z.begin(), p.gap_z.end()) - p.gap_z.begin());
+  const std::size_t jmin = g.jmin;
   if (jmin == 0 || jmin + 1 == p.gap_y.size()) {
     throw std::invalid_argument(
         "semi_hertz: the gap minimum lies on the first or last sample; widen gap_y");
   }
-  const double z_min = p.gap_z[jmin];
+  g.z_min = p.gap_z[jmin];
   // Transverse curvature at the deepest point: second divided difference = coefficient of y^2.
   const double y0 = p.gap_y[jmin - 1], y1 = p.gap_y[jmin], y2 = p.gap_y[jmin + 1];
   const double z0 = p.gap_z[jmin - 1], z1 = p.gap_z[jmin], z2 = p.gap_z[jmin + 1];
@@ -182,6 +199,117 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
         "semi_hertz: the gap has no positive transverse curvature at its minimum (B = {} 1/m)",
         b_ref));
   }
+  g.b_ref = b_ref;
+  return g;
+}
+
+// Least-squares parabola z = c0 + c1 t + B t^2 (t = y - y_min) over the samples of the deepest
+// lobe (z - z_min < h0); NaN when the lobe has fewer than 5 samples or B is not positive.
+double lobe_curvature(const NormalProblem& p, const GapMinimum& g, double h0) {
+  std::size_t lo = g.jmin, hi = g.jmin;
+  while (lo > 0 && p.gap_z[lo - 1] - g.z_min < h0) --lo;
+  while (hi + 1 < p.gap_z.size() && p.gap_z[hi + 1] - g.z_min < h0) ++hi;
+  if (hi - lo + 1 >= 5) {
+    const double b_fit = least_squares_curvature(p, g.jmin, lo, hi);
+    if (b_fit > 0.0 && std::isfinite(b_fit)) return b_fit;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Least-squares parabola over the deepest lobe at h0 with the weights (h0 - (z - z_min)) / h0,
+// which fall to zero at the lobe's edge: B is continuous in h0 and in the gap samples (a sample
+// entering or leaving the lobe carries no weight), as a right-hand side of an integrator must be.
+// NaN when fewer than 5 samples carry weight or B is not positive.
+double tapered_lobe_curvature(const NormalProblem& p, const GapMinimum& g, double h0,
+                              std::vector<double>& weight) {
+  std::size_t lo = g.jmin, hi = g.jmin;
+  while (lo > 0 && p.gap_z[lo - 1] - g.z_min < h0) --lo;
+  while (hi + 1 < p.gap_z.size() && p.gap_z[hi + 1] - g.z_min < h0) ++hi;
+  if (hi - lo + 1 < 5) return std::numeric_limits<double>::quiet_NaN();
+  weight.resize(hi - lo + 1);
+  for (std::size_t j = lo; j <= hi; ++j) weight[j - lo] = (h0 - (p.gap_z[j] - g.z_min)) / h0;
+  const double b_fit = least_squares_curvature(p, g.jmin, lo, hi, weight.data());
+  return b_fit > 0.0 && std::isfinite(b_fit) ? b_fit : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Eq. (21) factors r (1 + lambda) and n^2 (n: the Hertz coefficient of the lateral semi-axis,
+// b = n c when B is the larger curvature), lambda = A / B_ref: delta = h0 r (1 + lambda) / n^2.
+struct ApproachFactors {
+  double r_one_plus_lambda = 0.0;
+  double n_squared = 0.0;
+  bool defined = false;
+};
+
+ApproachFactors approach_factors(double curvature_x, double b_ref) {
+  ApproachFactors f;
+  const double lambda = curvature_x / b_ref;
+  const double theta = std::acos(std::abs(curvature_x - b_ref) / (curvature_x + b_ref));
+  if (!(theta > 0.0)) return f;
+  const HertzCoefficients c = hertz_coefficients(theta);
+  const double n_lat = curvature_x <= b_ref ? c.n : c.m;
+  f.r_one_plus_lambda = c.r * (1.0 + lambda);
+  f.n_squared = n_lat * n_lat;
+  f.defined = true;
+  return f;
+}
+
+// Strips of the grid penetrated at the virtual penetration h0 (eqs. 22-23), one patch per
+// connected lobe with its equivalent ellipse: a = max a_i, b = half the lateral extent, centred
+// on the lobe. The storage of sol.patches (and of their strips) is reused.
+void build_patches(const StripGrid& grid, double h0, double ac, double kp, double curvature_x,
+                   double b_ref, NormalSolution& sol) {
+  std::size_t count = 0;
+  ContactPatch* current = nullptr;
+  auto flush = [&]() {
+    if (current == nullptr) return;
+    double load = 0.0, amax = 0.0, pmax = 0.0;
+    for (const auto& s : current->strips) {
+      load += 0.5 * kPi * s.peak_pressure * s.half_length * s.width;
+      amax = std::max(amax, s.half_length);
+      pmax = std::max(pmax, s.peak_pressure);
+    }
+    const double ylo = current->strips.front().y - 0.5 * current->strips.front().width;
+    const double yhi = current->strips.back().y + 0.5 * current->strips.back().width;
+    current->y_center = 0.5 * (ylo + yhi);
+    for (auto& s : current->strips) s.y -= current->y_center;
+    current->semi_axis_x = amax;
+    current->semi_axis_y = 0.5 * (yhi - ylo);
+    current->normal_force = load;
+    current->peak_pressure = pmax;
+    current->curvature_x = curvature_x;
+    current->curvature_y = b_ref;
+    current = nullptr;
+  };
+  for (int i = 0; i < grid.count; ++i) {
+    const double h = h0 - grid.gap[static_cast<std::size_t>(i)];
+    if (h <= 0.0) {
+      flush();
+      continue;
+    }
+    if (current == nullptr) {
+      if (count == sol.patches.size()) sol.patches.emplace_back();
+      current = &sol.patches[count++];
+      current->strips.clear();
+      current->approach = ContactPatch::kNaN;
+    }
+    PatchStrip s;
+    s.y = grid.y0 + i * grid.dy;
+    s.width = grid.dy;
+    s.half_length = std::sqrt(h / ac);     // eq. (22)
+    s.peak_pressure = kp * s.half_length;  // eq. (23) along the strip
+    current->strips.push_back(s);
+  }
+  flush();
+  sol.patches.resize(count);
+}
+
+}  // namespace
+
+NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& options) {
+  const GapMinimum g = find_minimum(p, options);
+  const CombinedMaterial mat = combine(p.body1, p.body2);
+  const double z_min = g.z_min;
+  double b_ref = g.b_ref;
   NormalSolution sol;
   if (p.normal_force == 0.0) return sol;
 
@@ -207,67 +335,77 @@ NormalSolution semi_hertz_solve(const NormalProblem& p, const SemiHertzOptions& 
   };
   solve_with(b_ref);
   if (options.curvature == SemiHertzOptions::Curvature::kFit) {
-    // Least-squares parabola z = c0 + c1 t + B t^2 (t = y - y_min) over the samples of the
-    // deepest lobe (z - z_min < h0), then solve again with that B.
-    std::size_t lo = jmin, hi = jmin;
-    while (lo > 0 && p.gap_z[lo - 1] - z_min < h0) --lo;
-    while (hi + 1 < p.gap_z.size() && p.gap_z[hi + 1] - z_min < h0) ++hi;
-    if (hi - lo + 1 >= 5) {
-      const double b_fit = least_squares_curvature(p, jmin, lo, hi);
-      if (b_fit > 0.0 && std::isfinite(b_fit)) {
-        b_ref = b_fit;
-        solve_with(b_ref);
-      }
+    // Least-squares curvature over the deepest lobe at this h0, then solve again with it.
+    const double b_fit = lobe_curvature(p, g, h0);
+    if (std::isfinite(b_fit)) {
+      b_ref = b_fit;
+      solve_with(b_ref);
     }
   }
-
-  // Strips and lobes.
-  ContactPatch current;
-  auto flush = [&]() {
-    if (current.strips.empty()) return;
-    double load = 0.0, amax = 0.0, pmax = 0.0;
-    for (const auto& s : current.strips) {
-      load += 0.5 * kPi * s.peak_pressure * s.half_length * s.width;
-      amax = std::max(amax, s.half_length);
-      pmax = std::max(pmax, s.peak_pressure);
-    }
-    const double ylo = current.strips.front().y - 0.5 * current.strips.front().width;
-    const double yhi = current.strips.back().y + 0.5 * current.strips.back().width;
-    current.y_center = 0.5 * (ylo + yhi);
-    for (auto& s : current.strips) s.y -= current.y_center;
-    current.semi_axis_x = amax;
-    current.semi_axis_y = 0.5 * (yhi - ylo);
-    current.normal_force = load;
-    current.peak_pressure = pmax;
-    current.curvature_x = p.curvature_x;
-    current.curvature_y = b_ref;
-    sol.patches.push_back(std::move(current));
-    current = ContactPatch{};
-  };
-  for (int i = 0; i < grid.count; ++i) {
-    const double h = h0 - grid.gap[static_cast<std::size_t>(i)];
-    if (h <= 0.0) {
-      flush();
-      continue;
-    }
-    PatchStrip s;
-    s.y = grid.y0 + i * grid.dy;
-    s.width = grid.dy;
-    s.half_length = std::sqrt(h / ac);     // eq. (22)
-    s.peak_pressure = kp * s.half_length;  // eq. (23) along the strip
-    current.strips.push_back(s);
-  }
-  flush();
+  build_patches(grid, h0, ac, kp, p.curvature_x, b_ref, sol);
   // Rigid approach from eq. (21): delta = h0 r (1 + lambda) / n^2, lambda = A/B_ref.
-  const double lambda = p.curvature_x / b_ref;
-  const double theta = std::acos(std::abs(p.curvature_x - b_ref) / (p.curvature_x + b_ref));
-  if (theta > 0.0) {
-    const HertzCoefficients c = hertz_coefficients(theta);
-    const double n_lat =
-        p.curvature_x <= b_ref ? c.n : c.m;  // b = n c when B is the larger curvature
-    sol.approach = h0 * c.r * (1.0 + lambda) / (n_lat * n_lat);
-  }
+  const ApproachFactors f = approach_factors(p.curvature_x, b_ref);
+  if (f.defined) sol.approach = h0 * f.r_one_plus_lambda / f.n_squared;
   return sol;
+}
+
+// Passes of the tapered lobe fit after the first estimate: the lobe's width goes as B^(-1/2),
+// so each pass moves B by a fraction of the previous change; two passes settle B on the S1002 /
+// UIC60 gap within 1e-3 (tests/vehicle/semi_hertz_vehicle_test.cpp).
+constexpr int kApproachFitPasses = 2;
+
+void semi_hertz_solve_from_approach(const NormalProblem& p, double approach,
+                                    const SemiHertzOptions& options, SemiHertzWorkspace& work,
+                                    NormalSolution& out) {
+  const GapMinimum g = find_minimum(p, options);
+  if (!(approach >= 0.0) || !std::isfinite(approach)) {
+    throw std::invalid_argument(
+        fmt::format("semi_hertz: the approach must be finite and >= 0 m, got {}", approach));
+  }
+  const CombinedMaterial mat = combine(p.body1, p.body2);
+  out.approach = approach;
+  if (approach == 0.0) {
+    out.patches.clear();
+    return;
+  }
+  // Reference Hertz ellipse of the same approach and compensation (eqs. 18-20); the virtual
+  // penetration from eq. (21) read backwards, h0 = delta n^2 / (r (1 + lambda)).
+  double b_ref = g.b_ref, ac = 0.0, kp = 0.0, h0 = 0.0;
+  auto solve_with = [&](double b) {
+    const ApproachFactors f = approach_factors(p.curvature_x, b);
+    if (!f.defined) {
+      throw std::invalid_argument(fmt::format(
+          "semi_hertz: eq. (21) undefined for A = {} 1/m, B_ref = {} 1/m", p.curvature_x, b));
+    }
+    h0 = approach * f.n_squared / f.r_one_plus_lambda;
+    const HertzSolution ref =
+        hertz_solve_from_approach(p.curvature_x, b, approach, mat.contact_modulus);
+    const double l = ref.semi_axis_y / ref.semi_axis_x;
+    ac = b * l * l;                            // A_c (eq. 19)
+    kp = ref.peak_pressure / ref.semi_axis_x;  // p0_i / a_i, independent of the load
+  };
+  // First estimate: the caller's curvature_y when given (a geometry source's point curvature,
+  // continuous in the pose), else the one of the samples around the minimum.
+  if (p.curvature_y > 0.0 && std::isfinite(p.curvature_y)) b_ref = p.curvature_y;
+  solve_with(b_ref);
+  if (options.curvature == SemiHertzOptions::Curvature::kFit) {
+    for (int pass = 0; pass < kApproachFitPasses; ++pass) {
+      const double b_fit = tapered_lobe_curvature(p, g, h0, work.weight);
+      if (!std::isfinite(b_fit)) break;
+      b_ref = b_fit;
+      solve_with(b_ref);
+    }
+  }
+  const auto [lo, hi] = penetrated_span(p, g.z_min, h0 * 1.0000001);
+  if (!(hi > lo)) {
+    out.patches.clear();
+    return;
+  }
+  StripGrid grid;
+  std::swap(grid.gap, work.strip_gap);  // reuse the workspace's storage
+  fill_grid(p, g.z_min, lo, hi, options.strips, grid);
+  build_patches(grid, h0, ac, kp, p.curvature_x, b_ref, out);
+  std::swap(grid.gap, work.strip_gap);
 }
 
 }  // namespace ferro::contact

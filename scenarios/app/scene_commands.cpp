@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 using scenarios::Scene;
 
 struct RunArgs {
-  std::string scene, output, plot_dir, integrator, tangential;
+  std::string scene, output, plot_dir, integrator, tangential, normal;
   std::vector<std::string> csv;
   double t_end = NAN, speed = NAN, pace = 0.0;
   bool no_plots = false, quiet = false;
@@ -76,6 +76,7 @@ namespace {
 int do_run(const RunArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
   apply_run_overrides(scene, a.t_end, a.speed, a.tangential);
+  if (!a.normal.empty()) scenarios::override_normal(scene, a.normal, "--normal");
   if (!a.integrator.empty()) {
     scene.solver.method = a.integrator;
     scene.solver.validate("--integrator");
@@ -268,6 +269,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
   run->add_option("--tangential", run_args->tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
+  run->add_option("--normal", run_args->normal,
+                  "Override the scene's normal contact model: hertz, semi_hertz (vehicle scenes)");
   run->add_option("--pace", run_args->pace,
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
   run->add_option("--plot-dir", run_args->plot_dir,

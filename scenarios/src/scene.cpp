@@ -373,4 +373,24 @@ void override_tangential(Scene& scene, const std::string& name, const std::strin
   }
 }
 
+void override_normal(Scene& scene, const std::string& name, const std::string& flag) {
+  if (scene.model.type != "vehicle") {
+    throw std::invalid_argument(fmt::format(
+        "{}: only vehicle scenes choose a normal contact model (this one is {})", flag,
+        scene.model.type));
+  }
+  if (name != "hertz" && name != "semi_hertz") {
+    throw std::invalid_argument(
+        fmt::format("{}: unknown normal model '{}'; allowed: hertz, semi_hertz", flag, name));
+  }
+  auto& w = scene.model.vehicle.wheel_rail;
+  if (name == "semi_hertz" && w.geometry != "table" && w.geometry != "search") {
+    throw std::invalid_argument(fmt::format(
+        "{}: semi_hertz reads the gap of the wheel and rail profiles, which geometry '{}' does "
+        "not have; allowed with it: hertz (semi_hertz needs geometry table or search)",
+        flag, w.geometry));
+  }
+  w.normal_model = name;
+}
+
 }  // namespace ferro::scenarios

@@ -394,6 +394,15 @@ void check_wheel_rail(const MapReader& r, const vehicle::WheelRailSpec& w) {
   }
   if (!(w.track_gauge > 1.0 && w.track_gauge < 2.0))
     r.fail("track_gauge", fmt::format("must lie in (1, 2) m, got {}", w.track_gauge));
+  if (w.normal_model == "semi_hertz" && w.geometry != "table" && w.geometry != "search") {
+    // Blame the key this block sets (a scene's contact block may set only one of them).
+    r.fail(r.has("normal") || !r.has("geometry") ? "normal" : "geometry",
+           fmt::format("normal 'semi_hertz' reads the gap of the wheel and rail profiles around "
+                       "each contact point, which geometry '{}' does not have; allowed: normal "
+                       "hertz with geometry '{}', or normal semi_hertz with geometry table or "
+                       "search",
+                       w.geometry, w.geometry));
+  }
 }
 
 int body_index(const VehicleConfig& config, const std::string& name) {

@@ -42,6 +42,9 @@ const BadScene kBadScenes[] = {
     {"vehicle_unknown_scope", 5, "model.scope", "did you mean 'bogie'?"},
     {"vehicle_curve_without_radius", 9, "track.sections[2].radius", "missing required key"},
     {"vehicle_bad_contact_override", 8, "contact.tangential_options", "mz"},
+    {"vehicle_semi_hertz_imported", 9, "contact.normal",
+     "allowed: normal hertz with geometry 'imported', or normal semi_hertz with geometry table "
+     "or search"},
     {"duplicate_key", 19, "simulation.speed", "first given at line 18, again at line 19"},
     {"complex_key", 17, "(key)", "a key must be a plain word, got '? '"},
     {"second_document", 27, "(document)", "2 YAML documents in one file"},

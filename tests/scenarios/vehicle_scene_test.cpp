@@ -112,5 +112,28 @@ TEST(VehicleScene, tangential_override) {
   EXPECT_THROW(override_tangential(legacy, "fastsim", "--tangential"), std::invalid_argument);
 }
 
+TEST(VehicleScene, normal_override) {
+  Scene s = load_scene("scenarios/scenes/thesis_1in10_erri_low_semi_hertz.yaml");
+  EXPECT_EQ(s.model.vehicle.wheel_rail.normal_model, "semi_hertz");
+  override_normal(s, "hertz", "--normal");
+  EXPECT_EQ(s.model.vehicle.wheel_rail.normal_model, "hertz");
+  const auto message = [](Scene& scene, const std::string& name) {
+    try {
+      override_normal(scene, name, "--normal");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(message(s, "semi-hertz").find("--normal: unknown normal model 'semi-hertz'; allowed: "
+                                          "hertz, semi_hertz"),
+            std::string::npos);
+  // The imported one-point table has no profiles, so no gap for semi-Hertz.
+  Scene imported = load_scene("scenarios/scenes/cooperrider_straight.yaml");
+  EXPECT_NE(message(imported, "semi_hertz").find("geometry 'imported'"), std::string::npos)
+      << message(imported, "semi_hertz");
+  EXPECT_EQ(imported.model.vehicle.wheel_rail.normal_model, "hertz");
+}
+
 }  // namespace
 }  // namespace ferro::scenarios

@@ -151,10 +151,18 @@ VehicleModel::VehicleModel(VehicleModelInputs inputs) : impl_(std::make_unique<I
   require(finite_positive(wr.shear_modulus), "wheel_rail.shear_modulus: must be > 0 Pa");
   require(std::isfinite(wr.poisson) && wr.poisson >= 0.0 && wr.poisson < 0.5,
           "wheel_rail.poisson: must be in [0, 0.5)");
-  require(wr.normal_model == "hertz",
-          fmt::format("wheel_rail.normal_model: '{}' is not available in the vehicle model; "
-                      "allowed: hertz",
+  require(wr.normal_model == "hertz" || wr.normal_model == "semi_hertz",
+          fmt::format("wheel_rail.normal: '{}' is not available in the vehicle model; "
+                      "allowed: hertz, semi_hertz",
                       wr.normal_model));
+  if (wr.normal_model == "semi_hertz") {
+    m.semi_hertz_pair = m.in.geometry->profile_pair();
+    require(m.semi_hertz_pair != nullptr,
+            fmt::format("wheel_rail.normal: semi_hertz needs the wheel and rail profiles around "
+                        "each contact point, which geometry '{}' does not have; allowed with it: "
+                        "hertz (semi_hertz needs geometry table or search)",
+                        m.in.geometry->name()));
+  }
   for (int i = 0; i < 4; ++i) {
     require(finite_positive(wr.reduction[static_cast<std::size_t>(i)]),
             fmt::format("wheel_rail.reduction[{}]: K_ij must be finite and > 0", i));

@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 #include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/semi_hertz.hpp"
 #include "ferro/track/kinematics.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
@@ -84,6 +86,10 @@ struct VehicleModel::Impl {
   /// the constants `reduction`.
   std::optional<contact::KijPatchLookup> reduction_table;
   double nominal_rail_spacing = 1.5;
+  /// wheel_rail.normal = semi_hertz: the geometry source's profiles, whose gap around each
+  /// contact point the semi-Hertz model reads; nullptr: Hertz from the point's curvatures.
+  const contact::WheelRailPair* semi_hertz_pair = nullptr;
+  contact::SemiHertzOptions semi_hertz_options;
 
   /// Evaluates the model at (t, x): xdot (may be empty) and, when `wheels` is given, the
   /// per-wheel results (2 per contact body) and the car-body lateral acceleration.

@@ -1,6 +1,7 @@
 // Wheel-rail coupling of one wheelset at every contact point the geometry source returns:
 // pose relative to the rails (with track irregularities), normal force from the penetration
-// (the contact layer's one Hertz entry point), exact creepages from the body and track-frame kinematics, tangential forces from the
+// (the contact layer's one Hertz entry point, or with wheel_rail.normal = semi_hertz its
+// semi-Hertz patches of the profiles' gap around the point), exact creepages from the body and track-frame kinematics, tangential forces from the
 // registered model, forces and moments on the wheelset. Optional Hunt-Crossley damping of the
 // normal force: N = N_Hertz (1 + alpha d(delta)/dt), clamped at N >= 0.
 //
@@ -22,6 +23,9 @@
 // relative normal velocity of the closest points); the yaw rate's share (flange lead) is left
 // out. The tangential model gets the
 // damped normal force (its Coulomb bound follows it) with the semi-axes of the penetration.
+// Semi-Hertz: each patch of a point (usually one; strips and equivalent ellipse as the contact
+// layer builds them) gets its own tangential-model call at the point's position, normal and
+// creepages; the damping scales its load, peak pressure and strip pressures alike.
 
 #include <algorithm>
 #include <cmath>
@@ -88,21 +92,38 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
     pose_roll_rate.x() = k.rates.x() - rail_roll_rate;
   }
 
+  const contact::WheelsetPose pose = to_contact_pose(rel);
+  thread_local contact::SemiHertzScratch semi_hertz_scratch;
   for (const contact::WheelRailContact& c : points) {
-    contact::ContactPatch patch = contact::hertz_patch_from_penetration(c, model.contact_modulus);
-    if (!(patch.normal_force > 0.0)) continue;  // wheel lift: no tangential model call
+    // Normal contact: one Hertz patch from the point's curvatures, or the semi-Hertz patches of
+    // the profiles' gap around the point (usually one).
+    contact::ContactPatch hertz_patch;
+    contact::ContactPatch* patches = &hertz_patch;
+    std::size_t patch_count = 1;
+    double point_normal_force = 0.0;
+    if (model.semi_hertz_pair == nullptr) {
+      hertz_patch = contact::hertz_patch_from_penetration(c, model.contact_modulus);
+      point_normal_force = hertz_patch.normal_force;
+    } else {
+      contact::NormalSolution& semi = contact::semi_hertz_patches_from_penetration(
+          *model.semi_hertz_pair, pose, c, model.material, model.semi_hertz_options,
+          semi_hertz_scratch);
+      patches = semi.patches.data();
+      patch_count = semi.patches.size();
+      for (std::size_t i = 0; i < patch_count; ++i) point_normal_force += patches[i].normal_force;
+    }
+    if (!(point_normal_force > 0.0)) continue;  // wheel lift: no tangential model call
 
     const Eigen::Vector3d p = rails_origin + roll_rail(from_contact_frame(c.x, c.y, c.z));
     const Eigen::Vector3d n = roll_rail(rail_normal(c.side, c.contact_angle));
+    double damping_factor = 1.0;
     if (alpha > 0.0) {
       // Velocity of the wheel section's point at the contact relative to the rails, rails' axes.
       const Eigen::Vector3d arm_in_rails = from_contact_frame(c.x, c.y, c.z) - centre_in_rails;
       const Eigen::Vector3d velocity = pose_velocity + pose_roll_rate.cross(arm_in_rails);
       const double penetration_rate = -velocity.dot(rail_normal(c.side, c.contact_angle));
-      const double factor = std::max(0.0, 1.0 + alpha * penetration_rate);
-      if (!(factor > 0.0)) continue;  // separating faster than 1/alpha: no force
-      patch.normal_force *= factor;
-      patch.peak_pressure *= factor;
+      damping_factor = std::max(0.0, 1.0 + alpha * penetration_rate);
+      if (!(damping_factor > 0.0)) continue;  // separating faster than 1/alpha: no force
     }
     // Wheel material point: axial offset along the axle, radial at the rolling radius.
     const Eigen::Vector3d d = p - centre;
@@ -119,35 +140,51 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
     t1.normalize();
     const Eigen::Vector3d t2 = n.cross(t1);
     contact::TangentialProblem problem;
-    problem.patch = &patch;
     problem.creepage.longitudinal = slip.dot(t1) / rolling_speed;
     problem.creepage.lateral = slip.dot(t2) / rolling_speed;
     problem.creepage.spin = omega.dot(n) / rolling_speed;
     problem.friction = model.in.config.wheel_rail.friction;
     problem.body1 = model.material;
     problem.body2 = model.material;
-    problem.reduction =
-        model.reduction_table ? model.reduction_table->at(patch) : model.reduction;
     problem.rolling_speed = rolling_speed;
-    const contact::TangentialSolution tang = model.tangential->solve(problem);
 
-    const Eigen::Vector3d force =
-        patch.normal_force * n + tang.force_x * t1 + tang.force_y * t2;
-    k.force += force;
-    k.moment += arm.cross(force) + tang.moment_z * n;
+    double normal_force = 0.0;
+    for (std::size_t i = 0; i < patch_count; ++i) {
+      contact::ContactPatch& patch = patches[i];
+      if (!(patch.normal_force > 0.0)) continue;
+      if (alpha > 0.0) {
+        patch.normal_force *= damping_factor;
+        patch.peak_pressure *= damping_factor;
+        for (contact::PatchStrip& strip : patch.strips) strip.peak_pressure *= damping_factor;
+      }
+      problem.patch = &patch;
+      problem.reduction =
+          model.reduction_table ? model.reduction_table->at(patch) : model.reduction;
+      const contact::TangentialSolution tang = model.tangential->solve(problem);
+
+      const Eigen::Vector3d force =
+          patch.normal_force * n + tang.force_x * t1 + tang.force_y * t2;
+      k.force += force;
+      k.moment += arm.cross(force) + tang.moment_z * n;
+      normal_force += patch.normal_force;
+      if (left_right != nullptr) {
+        WheelResult& w = left_right[c.side == contact::Side::left ? 0 : 1];
+        const double towards_centre = c.side == contact::Side::left ? -1.0 : 1.0;
+        w.lateral_towards_centre += towards_centre * force.y();
+        w.vertical += force.z();
+      }
+    }
 
     if (left_right != nullptr) {
       WheelResult& w = left_right[c.side == contact::Side::left ? 0 : 1];
       const double towards_centre = c.side == contact::Side::left ? -1.0 : 1.0;
-      w.lateral_towards_centre += towards_centre * force.y();
-      w.vertical += force.z();
-      w.normal_force += patch.normal_force;
+      w.normal_force += normal_force;
       if (w.points < WheelResult::kPointSignals) {
-        w.point_normal_force[static_cast<std::size_t>(w.points)] = patch.normal_force;
+        w.point_normal_force[static_cast<std::size_t>(w.points)] = normal_force;
       }
       ++w.points;
-      if (patch.normal_force > w.largest_normal_force) {
-        w.largest_normal_force = patch.normal_force;
+      if (normal_force > w.largest_normal_force) {
+        w.largest_normal_force = normal_force;
         w.creepage_x = problem.creepage.longitudinal;
         w.creepage_y = problem.creepage.lateral;
         w.spin = problem.creepage.spin;

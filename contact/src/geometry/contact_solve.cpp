@@ -167,37 +167,92 @@ WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose) 
   return p;
 }
 
+ContactPlaneGap::ContactPlaneGap(const WheelRailPair& pair, const WheelsetPose& pose,
+                                 const ContactPoint& pt, double plane_angle)
+    : pair_(&pair),
+      sgn_(pt.side == Side::right ? 1.0 : -1.0),
+      px_(pt.x),
+      py_(pt.y),
+      pz_(pt.z),
+      cp_(std::cos(pose.yaw)),
+      sp_(std::sin(pose.yaw)),
+      cr_(std::cos(pose.roll)),
+      sr_(std::sin(pose.roll)),
+      yc_(pose.lateral),
+      zc_(-pair.params().nominal_radius + pose.vertical) {
+  double dzr = 0.0;
+  if (std::isfinite(plane_angle)) {
+    dzr = -std::tan(plane_angle);  // contact_angle = -atan(dzr)
+  } else {
+    double zr = 0.0;
+    pair.rail().eval(pt.rail_y, zr, dzr);
+  }
+  const double f1 = sgn_ * dzr;  // track-frame slope dz/dy of the sampling plane
+  const double nn = std::sqrt(1.0 + f1 * f1);
+  ny_ = f1 / nn;
+  nz_ = -1.0 / nn;  // normal, out of the rail
+  ty_ = sgn_ / nn;
+  tz_ = sgn_ * f1 / nn;  // lateral tangent, to the field
+  double mx = 0.0;
+  to_local(0.0, ny_, nz_, mx, my_, mz_);  // normal in the wheelset frame
+  mx_ = mx;
+}
+
+void ContactPlaneGap::to_local(double x, double y, double z, double& lx, double& ly,
+                               double& lz) const {
+  // Wheelset rotation R = Rz(yaw) Rx(roll); R^T: Rz^T then Rx^T.
+  const double x1 = cp_ * x + sp_ * y, y1 = -sp_ * x + cp_ * y, z1 = z;
+  lx = x1;
+  ly = cr_ * y1 + sr_ * z1;
+  lz = -sr_ * y1 + cr_ * z1;
+}
+
+double ContactPlaneGap::at(double x_rel, double s) const {
+  const ProfileCurve& rail = pair_->rail();
+  const ProfileCurve& wheel = pair_->wheel();
+  const double top = pair_->rail_reference().top_z;
+  const double ro = pair_->rail_offset(), wo = pair_->wheel_offset();
+  const double x = px_ + x_rel;
+  const double qy = py_ + s * ty_, qz = pz_ + s * tz_;
+  // Rail along the normal line: f(qy + t ny) = qz + t nz.
+  double t_r = 0.0;
+  for (int it = 0; it < 30; ++it) {
+    const double yr = sgn_ * (qy + t_r * ny_) - ro;
+    if (!rail.contains(yr)) return std::numeric_limits<double>::quiet_NaN();
+    double z, dz;
+    rail.eval(yr, z, dz);
+    const double h = (z - top) - (qz + t_r * nz_);
+    const double dh = sgn_ * dz * ny_ - nz_;
+    const double step = h / dh;
+    t_r -= step;
+    if (std::abs(step) < 1e-12) break;
+  }
+  // Wheel along the same line: rho(P) = r(y_w).
+  double t_w = t_r;
+  for (int it = 0; it < 30; ++it) {
+    double lx, ly, lz;
+    to_local(x, qy + t_w * ny_ - yc_, qz + t_w * nz_ - zc_, lx, ly, lz);
+    const double yw = sgn_ * ly - wo;
+    if (!wheel.contains(yw)) return std::numeric_limits<double>::quiet_NaN();
+    double zw, dzw;
+    wheel.eval(yw, zw, dzw);
+    const double rho = std::hypot(lx, lz);
+    const double g = rho - pair_->wheel_radius(yw);
+    const double dg = (lx * mx_ + lz * mz_) / rho - dzw * sgn_ * my_;
+    const double step = g / dg;
+    t_w -= step;
+    if (std::abs(step) < 1e-12) break;
+  }
+  return t_w - t_r;
+}
+
 GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const ContactPoint& pt,
                    int nx, int ny, double dx, double ds, double x_centre, double s_centre,
                    double plane_angle) {
   if (nx < 1 || ny < 1 || !(dx > 0.0) || !(ds > 0.0)) {
     throw std::invalid_argument("sample_gap: need nx, ny >= 1 and dx, ds > 0 [m]");
   }
-  const double sgn = pt.side == Side::right ? 1.0 : -1.0;
-  const ProfileCurve& rail = pair.rail();
-  const ProfileCurve& wheel = pair.wheel();
-  const double top = pair.rail_reference().top_z;
-  const double ro = pair.rail_offset(), wo = pair.wheel_offset();
-  double zr, dzr;
-  rail.eval(pt.rail_y, zr, dzr);
-  if (std::isfinite(plane_angle)) dzr = -std::tan(plane_angle);  // contact_angle = -atan(dzr)
-  const double f1 = sgn * dzr;  // track-frame slope dz/dy of the sampling plane
-  const double nn = std::sqrt(1.0 + f1 * f1);
-  const double ny_ = f1 / nn, nz_ = -1.0 / nn;     // normal, out of the rail
-  const double ty = sgn / nn, tz = sgn * f1 / nn;  // lateral tangent, to the field
-  // Wheelset rotation R = Rz(yaw) Rx(roll); we need R^T.
-  const double cp = std::cos(pose.yaw), sp = std::sin(pose.yaw);
-  const double cr = std::cos(pose.roll), sr = std::sin(pose.roll);
-  const double yc = pose.lateral, zc = -pair.params().nominal_radius + pose.vertical;
-  auto to_local = [&](double x, double y, double z, double& lx, double& ly, double& lz) {
-    // Rz^T then Rx^T.
-    const double x1 = cp * x + sp * y, y1 = -sp * x + cp * y, z1 = z;
-    lx = x1;
-    ly = cr * y1 + sr * z1;
-    lz = -sr * y1 + cr * z1;
-  };
-  double mx, my, mz;
-  to_local(0.0, ny_, nz_, mx, my, mz);  // normal in the wheelset frame
+  const ContactPlaneGap plane(pair, pose, pt, plane_angle);
   GapGrid grid;
   grid.nx = nx;
   grid.ny = ny;
@@ -208,47 +263,8 @@ GapGrid sample_gap(const WheelRailPair& pair, const WheelsetPose& pose, const Co
   grid.gap.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny),
                   std::numeric_limits<double>::quiet_NaN());
   for (int iy = 0; iy < ny; ++iy) {
-    const double s = grid.s(iy);
     for (int ix = 0; ix < nx; ++ix) {
-      const double x = pt.x + grid.x(ix);
-      const double qy = pt.y + s * ty, qz = pt.z + s * tz;
-      // Rail along the normal line: f(qy + t ny) = qz + t nz.
-      double t_r = 0.0;
-      bool ok = true;
-      for (int it = 0; it < 30; ++it) {
-        const double yr = sgn * (qy + t_r * ny_) - ro;
-        if (!rail.contains(yr)) {
-          ok = false;
-          break;
-        }
-        double z, dz;
-        rail.eval(yr, z, dz);
-        const double h = (z - top) - (qz + t_r * nz_);
-        const double dh = sgn * dz * ny_ - nz_;
-        const double step = h / dh;
-        t_r -= step;
-        if (std::abs(step) < 1e-12) break;
-      }
-      // Wheel along the same line: rho(P) = r(y_w).
-      double t_w = t_r;
-      for (int it = 0; it < 30 && ok; ++it) {
-        double lx, ly, lz;
-        to_local(x, qy + t_w * ny_ - yc, qz + t_w * nz_ - zc, lx, ly, lz);
-        const double yw = sgn * ly - wo;
-        if (!wheel.contains(yw)) {
-          ok = false;
-          break;
-        }
-        double zw, dzw;
-        wheel.eval(yw, zw, dzw);
-        const double rho = std::hypot(lx, lz);
-        const double g = rho - pair.wheel_radius(yw);
-        const double dg = (lx * mx + lz * mz) / rho - dzw * sgn * my;
-        const double step = g / dg;
-        t_w -= step;
-        if (std::abs(step) < 1e-12) break;
-      }
-      if (ok) grid.gap[static_cast<std::size_t>(iy * nx + ix)] = t_w - t_r;
+      grid.gap[static_cast<std::size_t>(iy * nx + ix)] = plane.at(grid.x(ix), grid.s(iy));
     }
   }
   return grid;

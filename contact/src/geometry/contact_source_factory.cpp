@@ -56,7 +56,10 @@ std::shared_ptr<const ContactGeometrySource> make_contact_source(const ContactSo
         !MultiPointContactTable::is_table_of_another_version(spec.table_file)) {
       auto t = std::make_shared<MultiPointContactTable>(
           MultiPointContactTable::load_hdf5(spec.table_file));
-      if (t->fingerprint() == fp) return t;
+      if (t->fingerprint() == fp) {
+        t->attach_pair(pair);
+        return t;
+      }
     }
     auto t = std::make_shared<MultiPointContactTable>(
         MultiPointContactTable::build(*pair, spec.table));
@@ -70,6 +73,7 @@ std::shared_ptr<const ContactGeometrySource> make_contact_source(const ContactSo
       t->save_hdf5(partial);
       std::filesystem::rename(partial, target);
     }
+    t->attach_pair(pair);
     return t;
   }
   throw std::invalid_argument(fmt::format("ContactSourceSpec.kind: '{}' is not one of {}",

@@ -13,6 +13,10 @@
 // h0 is found from the load, F_n = (pi/2) sum p0_i a_i dy, rather than from delta through eq. (21);
 // for a quadratic gap both give h0 = b^2 B exactly. (3) Disconnected lobes are returned as separate
 // patches, each with an equivalent ellipse a = max a_i, b = half its lateral extent.
+// semi_hertz_solve_from_approach() is driven by the rigid approach delta instead (the dynamics,
+// where the penetration is known): h0 = delta n^2 / (r (1 + lambda)), eq. (21) read the other way,
+// and the load is what the strips carry; for the same B_ref the two entry points are inverse to
+// each other, and on a quadratic gap both give Hertz.
 
 #include "ferro/contact/normal_model.hpp"
 
@@ -30,5 +34,26 @@ struct SemiHertzOptions {
 
 [[nodiscard]] NormalSolution semi_hertz_solve(const NormalProblem& problem,
                                               const SemiHertzOptions& options);
+
+/// Buffers of semi_hertz_solve_from_approach(), reused from call to call.
+struct SemiHertzWorkspace {
+  std::vector<double> strip_gap;  ///< relative gap at the strip centres [m]
+  std::vector<double> weight;     ///< weights of the lobe fit [-]
+};
+
+/// Semi-Hertz patches for a rigid approach delta = `approach` [m] (>= 0) instead of a load;
+/// problem.normal_force is not read. The reference Hertz ellipse is the one of (A, B_ref) at that
+/// approach, h0 = delta n^2 / (r (1 + lambda)) (eq. 21), and each patch's normal_force is the load
+/// its strips carry. B_ref (curvature = fit): starts from problem.curvature_y when it is > 0
+/// (else from the samples around the minimum), then two passes of a least-squares parabola over
+/// the lobe at h0 weighted by (h0 - z) / h0, so that B_ref and the load are continuous in the
+/// approach and the gap (the unweighted lobe fit of semi_hertz_solve() jumps as samples enter
+/// the lobe, which an integrator's right-hand side must not do); on a quadratic gap both fits
+/// give its B exactly. Writes `out` (out.approach = delta; no patch when delta = 0), reusing the
+/// storage of its patches and strips and of `work`: no allocation once they have grown. Throws
+/// std::invalid_argument as semi_hertz_solve() does.
+void semi_hertz_solve_from_approach(const NormalProblem& problem, double approach,
+                                    const SemiHertzOptions& options, SemiHertzWorkspace& work,
+                                    NormalSolution& out);
 
 }  // namespace ferro::contact

@@ -85,4 +85,9 @@ struct Scene {
 /// model type or an unknown name.
 void override_tangential(Scene& scene, const std::string& name, const std::string& flag);
 
+/// Replaces the normal contact model of a vehicle scene (hertz | semi_hertz). Throws
+/// std::invalid_argument starting with `flag` for another model type, an unknown name, or
+/// semi_hertz with a geometry that has no profiles (imported, conical).
+void override_normal(Scene& scene, const std::string& name, const std::string& flag);
+
 }  // namespace ferro::scenarios

@@ -73,6 +73,10 @@ class ContactGeometrySource {
   /// wheel first, appended to `out` after clearing it. Must be thread-safe (const, no shared
   /// mutable state) and must not allocate once `out` has grown to its working size.
   virtual void contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out) const = 0;
+  /// The wheel and rail profiles the points come from, for normal models that need the gap
+  /// around a point (semi-Hertz); nullptr when the source has none (imported one-point tables,
+  /// the analytic cone).
+  [[nodiscard]] virtual const WheelRailPair* profile_pair() const { return nullptr; }
 };
 
 }  // namespace ferro::contact

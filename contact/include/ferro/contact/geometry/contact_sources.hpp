@@ -9,7 +9,9 @@
 // - make_contact_source(): builds one of them from a ContactSourceSpec;
 // - hertz_patch_from_penetration(): normal force, semi-axes and peak pressure of one point from
 //   its penetration, through the one Hertz implementation of hertz.hpp or, for imported tables,
-//   from the point's reference Hertz state.
+//   from the point's reference Hertz state;
+// - semi_hertz_patches_from_penetration(): the semi-Hertz patches of one point of a source with
+//   profiles (table, search), from the gap of the profiles around it.
 //
 // Conical geometry (contact-layer frame: y right, z down; side sign s = +1 right, -1 left).
 // Each wheel is a cone of conicity gamma whose radius is r0 at the nominal contact point, lateral
@@ -42,6 +44,8 @@
 #include "ferro/contact/contact_patch.hpp"
 #include "ferro/contact/geometry/contact_geometry_source.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+#include "ferro/contact/normal_model.hpp"
+#include "ferro/contact/semi_hertz.hpp"
 
 namespace ferro::contact {
 
@@ -57,6 +61,36 @@ namespace ferro::contact {
 [[nodiscard]] ContactPatch hertz_patch_from_penetration(const WheelRailContact& contact,
                                                         double contact_modulus);
 
+/// Buffers of semi_hertz_patches_from_penetration(), reused from call to call (one per thread).
+struct SemiHertzScratch {
+  NormalProblem problem;
+  SemiHertzWorkspace work;
+  NormalSolution solution;
+  std::vector<double> left, right;  ///< gap samples either side of the point [m]
+};
+
+/// Semi-Hertz normal contact of one point of a profile-based source (pair, pose: the ones the
+/// source answered for). The undeformed gap along the normal of the point's contact plane
+/// (inclined by its contact angle; ContactPlaneGap, in the wheel section through the point) is
+/// sampled outwards from the point every b/16 (b: the point's Hertz semi-axis, step kept in
+/// [2 um, 0.25 mm]) until, on each side, the gap exceeds its lowest value by 1.1 penetrations,
+/// a profile ends, or the gap rises and falls again by more than 1 um (a barrier: the next local
+/// minimum is another point of the source, so each point keeps its own basin and a joined run is
+/// split at its barrier). semi_hertz_solve_from_approach() then gives the patches (usually one;
+/// strips, equivalent ellipse, load) at the point's penetration, with A = the point's
+/// curvature_a and its curvature_b as the first estimate of B_ref; each patch carries
+/// approach = penetration. Returns scratch.solution (no patch
+/// when penetration <= 0). No allocation once the scratch buffers have grown. Throws
+/// std::invalid_argument on NaN penetration and where semi_hertz_solve() does (e.g. the basin's
+/// minimum on a profile end), std::runtime_error where a profile ends at the point.
+/// Known deviations: the gap is that of the wheel section through the point (x = 0; the
+/// longitudinal curvature is the point's A, eq. 17); the point keeps the position, normal and
+/// creepages the source gives (the patch centre's offset from the point, y_center, is not
+/// applied).
+[[nodiscard]] NormalSolution& semi_hertz_patches_from_penetration(
+    const WheelRailPair& pair, const WheelsetPose& pose, const WheelRailContact& contact,
+    const Material& material, const SemiHertzOptions& options, SemiHertzScratch& scratch);
+
 /// WheelRailContact of a search point (profile coordinates and gap carried over).
 [[nodiscard]] WheelRailContact to_wheel_rail_contact(const ContactPoint& point);
 
@@ -68,6 +102,7 @@ class SearchContactSource final : public ContactGeometrySource {
   [[nodiscard]] std::string_view name() const override { return "search"; }
   void contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out) const override;
   [[nodiscard]] const WheelRailPair& pair() const { return *pair_; }
+  [[nodiscard]] const WheelRailPair* profile_pair() const override { return pair_.get(); }
 
  private:
   std::shared_ptr<const WheelRailPair> pair_;
@@ -194,6 +229,10 @@ class MultiPointContactTable final : public ContactGeometrySource {
   void save_hdf5(const std::string& path) const;
 
   [[nodiscard]] std::string_view name() const override { return "table"; }
+  /// The pair the table was built from, when attached (make_contact_source() attaches it; a
+  /// table read alone from its file has none).
+  [[nodiscard]] const WheelRailPair* profile_pair() const override { return pair_.get(); }
+  void attach_pair(std::shared_ptr<const WheelRailPair> pair) { pair_ = std::move(pair); }
   /// Every penetrating point of both wheels (left first, each in increasing wheel_y). Throws
   /// std::out_of_range naming the axis when the pose lies outside the grid. No allocation once
   /// `out` holds 2 kMaxPointsPerWheel entries; well under 1 us.
@@ -223,6 +262,7 @@ class MultiPointContactTable final : public ContactGeometrySource {
     std::array<int, 8> corner{-1, -1, -1, -1, -1, -1, -1, -1};  ///< candidate index or -1
   };
   MultiPointTableParams params_;
+  std::shared_ptr<const WheelRailPair> pair_;
   std::uint64_t fingerprint_ = 0;
   std::array<Axis, 3> axes_{};  // lateral, roll, yaw
   std::vector<std::size_t> node_offset_;

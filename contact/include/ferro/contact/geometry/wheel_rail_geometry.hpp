@@ -238,6 +238,27 @@ struct GapGrid {
                                  double x_centre = 0.0, double s_centre = 0.0,
                                  double plane_angle = std::numeric_limits<double>::quiet_NaN());
 
+/// The undeformed separation of sample_gap(), one sample at a time: at(x, s) is the gap along
+/// the normal of `point`'s contact plane at x along the track and s across (towards the field
+/// side of that wheel), both relative to the point [m]; NaN where a profile ends. Keeps a
+/// reference to `pair`. Construction and each sample (two Newton solves on the resampled
+/// profiles) allocate nothing: the semi-Hertz normal contact of the dynamics samples it at every
+/// right-hand side.
+class ContactPlaneGap {
+ public:
+  ContactPlaneGap(const WheelRailPair& pair, const WheelsetPose& pose, const ContactPoint& point,
+                  double plane_angle = std::numeric_limits<double>::quiet_NaN());
+  [[nodiscard]] double at(double x, double s) const;
+
+ private:
+  void to_local(double x, double y, double z, double& lx, double& ly, double& lz) const;
+  const WheelRailPair* pair_;
+  double sgn_, px_, py_, pz_;
+  double cp_, sp_, cr_, sr_, yc_, zc_;
+  double ny_ = 0.0, nz_ = 0.0, ty_ = 0.0, tz_ = 0.0;  // plane normal and lateral tangent
+  double mx_ = 0.0, my_ = 0.0, mz_ = 0.0;             // the normal in the wheelset frame
+};
+
 /// `pose` moved vertically so that its deepest point just touches (smallest gap zero).
 [[nodiscard]] WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose);
 
