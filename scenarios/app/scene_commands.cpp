@@ -69,6 +69,13 @@ void apply_run_overrides(Scene& scene, double t_end, double speed, const std::st
     scene.simulation.speed = speed;
   }
   if (!tangential.empty()) scenarios::override_tangential(scene, tangential, "--tangential");
+  if (!std::isnan(t_end) || !std::isnan(speed)) {
+    const std::string problem = scenarios::track_extent_problem(scene, scene.simulation.t_end);
+    if (!problem.empty()) {
+      throw std::invalid_argument(
+          fmt::format("{}: {}", !std::isnan(t_end) ? "--t-end" : "--speed", problem));
+    }
+  }
 }
 
 namespace {

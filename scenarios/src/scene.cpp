@@ -120,37 +120,42 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
 }
 
 // The vehicle must stay on the designed track for the whole run.
-void check_track_extent(const Scene& scene, MapReader& sim, const MapReader& track) {
-  double front = 0.0, back = 0.0;
-  for (const auto& b : scene.model.vehicle.bodies) {
-    front = std::max(front, b.position.x());
-    back = std::min(back, b.position.x());
-  }
+void check_track_extent(const Scene& scene, MapReader& sim) {
   const auto& s = scene.simulation;
-  double distance = s.speed * s.t_end + 0.5 * s.acceleration * s.t_end * s.t_end;
-  if (s.acceleration < 0.0) {
-    const double t_stop = s.speed / -s.acceleration;
-    if (t_stop < s.t_end) distance = 0.5 * s.speed * t_stop;
-  }
   const auto& d = scene.track.design;
-  const double begin = d.start_s, end = d.start_s + d.total_length();
-  if (s.start_position + back - kTrackMargin < begin) {
+  double back = 0.0;
+  for (const auto& b : scene.model.vehicle.bodies) back = std::min(back, b.position.x());
+  if (s.start_position + back - kTrackMargin < d.start_s) {
     sim.fail("start_position",
              fmt::format("the rear of the vehicle ({:.3f} m behind its centre) starts before the "
                          "track begins at s = {} m; start_position must be >= {:.3f} m",
-                         -back, begin, begin - back + kTrackMargin));
+                         -back, d.start_s, d.start_s - back + kTrackMargin));
   }
-  if (s.start_position + front + distance + kTrackMargin > end) {
-    const std::string key = sim.has("t_end") ? "t_end" : "speed";
-    (void)track;
-    sim.fail(key, fmt::format("the vehicle runs off the track: it covers {:.1f} m from s = {} m "
-                              "(front {:.3f} m ahead of its centre) but the track ends at "
-                              "s = {:.1f} m; lengthen the track or shorten t_end",
-                              distance, s.start_position, front, end));
+  if (const std::string problem = track_extent_problem(scene, s.t_end); !problem.empty()) {
+    sim.fail(sim.has("t_end") ? "t_end" : "speed", problem);
   }
 }
 
 }  // namespace
+
+std::string track_extent_problem(const Scene& scene, double t_end) {
+  if (scene.model.type != "vehicle" || scene.track.type != "design") return {};
+  double front = 0.0;
+  for (const auto& b : scene.model.vehicle.bodies) front = std::max(front, b.position.x());
+  const auto& s = scene.simulation;
+  double distance = s.speed * t_end + 0.5 * s.acceleration * t_end * t_end;
+  if (s.acceleration < 0.0) {
+    const double t_stop = s.speed / -s.acceleration;
+    if (t_stop < t_end) distance = 0.5 * s.speed * t_stop;
+  }
+  const auto& d = scene.track.design;
+  const double end = d.start_s + d.total_length();
+  if (s.start_position + front + distance + kTrackMargin <= end) return {};
+  return fmt::format("the vehicle runs off the track: it covers {:.1f} m in {} s from s = {} m "
+                     "(front {:.3f} m ahead of its centre) but the track ends at s = {:.1f} m; "
+                     "lengthen the track (track.length) or shorten the run",
+                     distance, t_end, s.start_position, front, end);
+}
 
 Scene load_scene(const std::string& path) {
   Scene scene;
@@ -276,7 +281,7 @@ Scene load_scene(const std::string& path) {
     }
     init.finish();
     if (vehicle_model && scene.track.type == "design") {
-      check_track_extent(scene, s, *track_reader);
+      check_track_extent(scene, s);
     } else {
       s.allow("acceleration");
       s.allow("start_position");

@@ -82,7 +82,44 @@ Trajectory integrate(const vehicle::OdeSystem& system, const std::vector<double>
   return out;
 }
 
+// Parabola through (i-1, i, i+1) on a uniform or non-uniform grid: value at its vertex.
+double refined_extremum(const std::vector<double>& t, const std::vector<double>& x,
+                        std::size_t i) {
+  if (i == 0 || i + 1 >= x.size()) return x[i];
+  const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
+  const double d0 = (x[i] - x[i - 1]) / h0, d1 = (x[i + 1] - x[i]) / h1;
+  const double a = (d1 - d0) / (h0 + h1);  // x = x_i + b (s - t_i) + a (s - t_i)^2
+  if (a == 0.0) return x[i];
+  const double b = d0 + a * h0;
+  return x[i] - b * b / (4.0 * a);
+}
+
 }  // namespace
+
+CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector<double>& x) {
+  if (t.size() != x.size()) throw std::invalid_argument("cycle_statistics: sizes differ");
+  CycleStatistics c;
+  c.frequency = std::numeric_limits<double>::quiet_NaN();
+  if (x.size() < 3) return c;
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  c.amplitude = 0.5 * (refined_extremum(t, x, static_cast<std::size_t>(hi - x.begin())) -
+                       refined_extremum(t, x, static_cast<std::size_t>(lo - x.begin())));
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  double first = 0.0, last = 0.0;
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+    const double a = x[i] - mean, b = x[i + 1] - mean;
+    if (a < 0.0 && b >= 0.0) {
+      const double tc = t[i] - a * (t[i + 1] - t[i]) / (b - a);
+      if (c.crossings == 0) first = tc;
+      last = tc;
+      ++c.crossings;
+    }
+  }
+  if (c.crossings >= 2) c.frequency = (c.crossings - 1) / (last - first);
+  return c;
+}
 
 WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
   if (options.rtols.empty()) throw std::invalid_argument("--rtols: give at least one tolerance");
@@ -98,6 +135,14 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   if (!(options.reference_rtol > 0.0 && options.reference_rtol < 1.0)) {
     throw std::invalid_argument(
         fmt::format("--reference-rtol: must lie in (0, 1), got {}", options.reference_rtol));
+  }
+  if (!(options.settle >= 0.0) || !std::isfinite(options.settle)) {
+    throw std::invalid_argument(
+        fmt::format("--settle: must be finite and >= 0 s, got {}", options.settle));
+  }
+  if (options.metric != "pointwise" && options.metric != "cycle") {
+    throw std::invalid_argument(fmt::format(
+        "--metric: allowed values: pointwise, cycle; got '{}'", options.metric));
   }
   if (!(options.target_error > 0.0)) {
     throw std::invalid_argument(
@@ -120,8 +165,10 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   report.t_end = scene.simulation.t_end;
   const double setup_start = cpu_now();
   const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
-  const std::vector<double> x0 = initial_state(scene, *system);
+  std::vector<double> x0 = initial_state(scene, *system);
   report.setup_cpu_seconds = cpu_now() - setup_start;
+  report.settle = options.settle;
+  report.metric = options.metric;
 
   const auto info = system->state_info();
   std::vector<std::size_t> index;
@@ -152,15 +199,35 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   }
   for (std::size_t i : index) report.compared_states.push_back(info[i].name);
 
-  const std::vector<double> times =
-      vehicle::output_grid(0.0, scene.simulation.t_end, scene.output.interval);
-
   vehicle::IntegratorSettings ref_settings = scene.solver;
   ref_settings.method = "cvode_bdf";
   ref_settings.max_order = 0;
   ref_settings.fixed_step = 0.0;
   ref_settings.rtol = options.reference_rtol;
   ref_settings.atol = options.reference_rtol * options.atol_per_rtol;
+
+  const double t0 = options.settle;
+  if (t0 > 0.0) {
+    std::vector<double> settled;
+    auto integrator = vehicle::make_integrator(ref_settings);
+    const double start = cpu_now();
+    const auto res = integrator->integrate(*system, x0,
+                                           vehicle::output_grid(0.0, t0, scene.output.interval),
+                                           [&](double, std::span<const double> x) {
+                                             settled.assign(x.begin(), x.end());
+                                             return true;
+                                           });
+    report.settle_cpu_seconds = cpu_now() - start;
+    if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
+      throw std::runtime_error(fmt::format(
+          "work-precision: the reference's settling run (cvode_bdf, rtol {}) stopped at t = {} "
+          "s of {} s: {}",
+          options.reference_rtol, res.t_reached, t0, res.message));
+    }
+    x0 = settled;
+  }
+  const std::vector<double> times =
+      vehicle::output_grid(t0, t0 + scene.simulation.t_end, scene.output.interval);
   const Trajectory ref = integrate(*system, x0, times, ref_settings, index);
   const auto fill = [](WorkPrecisionPoint& p, const Trajectory& t) {
     p.status = vehicle::to_string(t.result.status);
@@ -182,6 +249,16 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   for (const auto& row : ref.compared) {
     for (std::size_t k = 0; k < row.size(); ++k) peak[k] = std::max(peak[k], std::abs(row[k]));
   }
+  const auto cycles = [&](const Trajectory& tr) {
+    std::vector<CycleStatistics> out;
+    std::vector<double> x(tr.compared.size());
+    for (std::size_t k = 0; k < index.size(); ++k) {
+      for (std::size_t i = 0; i < x.size(); ++i) x[i] = tr.compared[i][k];
+      out.push_back(cycle_statistics(times, x));
+    }
+    return out;
+  };
+  report.reference_cycles = cycles(ref);
 
   for (std::size_t i = 0; i < settings.size(); ++i) {
     WorkPrecisionPoint p;
@@ -200,14 +277,31 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
         }
       }
       p.error = err;
+      const auto run_cycles = cycles(run);
+      double cyc = 0.0;
+      for (std::size_t k = 0; k < index.size(); ++k) {
+        const auto& r = report.reference_cycles[k];
+        if (r.amplitude > 0.0) {
+          cyc = std::max(cyc, std::abs(run_cycles[k].amplitude - r.amplitude) / r.amplitude);
+        }
+        // A frequency needs at least two whole periods in the reference.
+        if (r.crossings >= 3) {
+          const double f = run_cycles[k].frequency;
+          cyc = std::max(cyc, std::isfinite(f) ? std::abs(f - r.frequency) / r.frequency
+                                               : std::numeric_limits<double>::infinity());
+        }
+      }
+      p.cycle_error = cyc;
     } else {
       p.error = std::numeric_limits<double>::quiet_NaN();
+      p.cycle_error = p.error;
     }
     report.points.push_back(p);
   }
   for (std::size_t i = 0; i < report.points.size(); ++i) {
     const auto& p = report.points[i];
-    if (!(p.error <= options.target_error)) continue;
+    const double e = options.metric == "cycle" ? p.cycle_error : p.error;
+    if (!(e <= options.target_error)) continue;
     if (!report.best || p.cpu_seconds < report.points[*report.best].cpu_seconds) report.best = i;
   }
   return report;
@@ -217,13 +311,13 @@ void write_work_precision_csv(const WorkPrecisionReport& report, const std::stri
   io::TextWriter out(path);
   out.write(
       "integrator,max_order,rtol,atol,status,t_reached_s,steps,rhs_evaluations,cpu_s,"
-      "cpu_s_per_simulated_s,error\n");
+      "cpu_s_per_simulated_s,error,cycle_error\n");
   const auto row = [&](const WorkPrecisionPoint& p) {
-    out.print("{},{},{:.3g},{:.3g},{},{:.9g},{},{},{:.6g},{:.6g},{:.6g}\n",
+    out.print("{},{},{:.3g},{:.3g},{},{:.9g},{},{},{:.6g},{:.6g},{:.6g},{:.6g}\n",
               p.integrator.substr(0, p.integrator.find(':')), p.settings.max_order,
               p.settings.rtol, p.settings.atol, p.status, p.t_reached, p.steps,
               p.rhs_evaluations, p.cpu_seconds,
-              report.t_end > 0.0 ? p.cpu_seconds / report.t_end : 0.0, p.error);
+              report.t_end > 0.0 ? p.cpu_seconds / report.t_end : 0.0, p.error, p.cycle_error);
   };
   row(report.reference);
   for (const auto& p : report.points) row(p);

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "ferro/scenarios/h5_output.hpp"
 #include "limited_process.hpp"
@@ -220,6 +221,33 @@ TEST(RunFailure, impossible_output_intervals_are_rejected_with_their_location) {
                                         (dir / "y.h5").string(), "--t-end", "1e300", "-q"});
   EXPECT_EQ(t_end.exit_code, 2) << t_end.output;
   EXPECT_NE(t_end.output.find("--t-end"), std::string::npos) << t_end.output;
+}
+
+TEST(RunFailure, a_duration_or_speed_override_that_leaves_the_track_is_refused) {
+  // The ERRI scene's 600 m track holds 10 s at 55 m/s from s = 15 m; 12 s or 70 m/s would run
+  // the leading wheelset past its end. Refused before any output is written, naming the flag,
+  // the distance and where the track ends.
+  const std::string scene = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+  const fs::path dir = fs::temp_directory_path() / "ferro_off_track_override";
+  fs::create_directories(dir);
+  const std::string out = (dir / "o.h5").string();
+  fs::remove(out);
+  for (const auto& [flag, value] : {std::pair<std::string, std::string>{"--t-end", "12"},
+                                    std::pair<std::string, std::string>{"--speed", "70"}}) {
+    const auto r = test::run_capture(
+        {FERRODYN_EXE, "run", scene, "-o", out, flag, value, "--no-plots", "-q"});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(flag + ": the vehicle runs off the track"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("track ends at s = 600.0 m"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const auto wp = test::run_capture({FERRODYN_EXE, "bench", "work-precision", scene, "--t-end",
+                                     "5", "--settle", "6", "--integrators", "cvode_bdf"});
+  EXPECT_EQ(wp.exit_code, 2) << wp.output;
+  EXPECT_NE(wp.output.find("--settle: the vehicle runs off the track"), std::string::npos)
+      << wp.output;
+  fs::remove_all(dir);
 }
 
 TEST(RunFailure, a_device_output_creates_no_file_beside_it) {

@@ -80,6 +80,11 @@ struct Scene {
 /// input, including values that fail the parameter structs' validate().
 [[nodiscard]] Scene load_scene(const std::string& path);
 
+/// For a vehicle scene on designed track: why the run of `t_end` seconds (the scene's speed,
+/// acceleration and start position) leaves the track, or empty when it stays on it. Scenes are
+/// checked at load; callers that change the speed or duration check again.
+[[nodiscard]] std::string track_extent_problem(const Scene& scene, double t_end);
+
 /// Replaces the tangential contact model of a vehicle scene (its options are dropped unless
 /// the model stays the same). Throws std::invalid_argument starting with `flag` for another
 /// model type or an unknown name.

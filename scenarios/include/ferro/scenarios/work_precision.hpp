@@ -6,6 +6,15 @@
 // Error of a run: the largest, over the compared states, of max_t |x(t) - x_ref(t)| divided by
 // max_t |x_ref(t)| (each state relative to its own peak), on the scene's output grid. The
 // compared states default to every wheelset's lateral displacement and yaw angle.
+//
+// On a limit cycle that error measures phase more than the cycle: a period off by 0.1 % moves
+// the motion by 0.6 % of its amplitude per period, and where a transient decides between
+// coexisting cycles, a tolerance change can pick the other one. For hunting runs the study
+// therefore also reports a cycle error, the largest relative deviation of each compared state's
+// amplitude (half its peak-to-peak) and frequency (from its mean crossings) from the
+// reference's, and can start every run from a state on the reference's settled motion
+// (`settle`): the reference integrates [0, settle] from the scene's initial state and every run,
+// the reference included, then covers [settle, settle + t_end] from where it ended.
 
 #include <optional>
 #include <string>
@@ -28,7 +37,23 @@ struct WorkPrecisionOptions {
   std::vector<std::string> states;
   /// Error the best choice must meet [-].
   double target_error = 1e-2;
+  /// Settling time [s] before the compared interval (see above); 0: start from the scene's state.
+  double settle = 0.0;
+  /// Error that picks the best choice: "pointwise" or "cycle".
+  std::string metric = "pointwise";
 };
+
+/// Amplitude and frequency of a sampled oscillation: amplitude = half of (max - min), each
+/// extremum refined by the parabola through it and its two neighbours; frequency from the upward
+/// crossings of the mean, located by linear interpolation: (crossings - 1) / (last - first),
+/// NaN with fewer than two crossings.
+struct CycleStatistics {
+  double amplitude = 0.0;
+  double frequency = 0.0;
+  int crossings = 0;
+};
+[[nodiscard]] CycleStatistics cycle_statistics(const std::vector<double>& t,
+                                               const std::vector<double>& x);
 
 struct WorkPrecisionPoint {
   std::string integrator;  ///< as given ("cvode_bdf:2")
@@ -38,11 +63,17 @@ struct WorkPrecisionPoint {
   long steps = 0, rhs_evaluations = 0;
   double cpu_seconds = 0.0;  ///< integration only (the model is built once, before)
   double error = 0.0;        ///< NaN when the run did not complete
+  double cycle_error = 0.0;  ///< amplitude and frequency (see above); NaN likewise
 };
 
 struct WorkPrecisionReport {
   double t_end = 0.0;
   double setup_cpu_seconds = 0.0;  ///< model, tables and static equilibrium, once
+  double settle = 0.0;             ///< compared interval [settle, settle + t_end]
+  double settle_cpu_seconds = 0.0; ///< the reference's settling run
+  std::string metric;              ///< which error chose `best`
+  /// Per compared state, the reference's amplitude and frequency over the compared interval.
+  std::vector<CycleStatistics> reference_cycles;
   WorkPrecisionPoint reference;
   std::vector<WorkPrecisionPoint> points;
   std::vector<std::string> compared_states;
