@@ -22,7 +22,7 @@ using scenarios::Scene;
 struct RunArgs {
   std::string scene, output, plot_dir, integrator, tangential, normal;
   std::vector<std::string> csv;
-  double t_end = NAN, speed = NAN, pace = 0.0;
+  double t_end = NAN, speed = NAN, pace = 0.0, rtol = NAN, atol = NAN;
   bool no_plots = false, quiet = false;
 };
 
@@ -87,6 +87,16 @@ int do_run(const RunArgs& a) {
   if (!a.integrator.empty()) {
     scene.solver.method = a.integrator;
     scene.solver.validate("--integrator");
+  }
+  if (!std::isnan(a.rtol)) {
+    if (!(a.rtol > 0.0 && a.rtol < 1.0))
+      throw std::invalid_argument(fmt::format("--rtol: must lie in (0, 1), got {}", a.rtol));
+    scene.solver.rtol = a.rtol;
+  }
+  if (!std::isnan(a.atol)) {
+    if (!(a.atol > 0.0) || !std::isfinite(a.atol))
+      throw std::invalid_argument(fmt::format("--atol: must be finite and > 0, got {}", a.atol));
+    scene.solver.atol = a.atol;
   }
   scenarios::RunOptions opt;
   opt.output_file = a.output;
@@ -274,6 +284,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
+  run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]");
+  run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]");
   run->add_option("--tangential", run_args->tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
   run->add_option("--normal", run_args->normal,

@@ -250,6 +250,24 @@ TEST(RunFailure, a_duration_or_speed_override_that_leaves_the_track_is_refused) 
   fs::remove_all(dir);
 }
 
+TEST(RunFailure, tolerance_overrides_are_applied_or_refused_naming_the_flag) {
+  const fs::path dir = fs::temp_directory_path() / "ferro_tolerance_override";
+  fs::create_directories(dir);
+  const std::string out = (dir / "o.h5").string();
+  const auto ok = test::run_capture({FERRODYN_EXE, "run", kHunting, "-o", out, "--t-end", "0.5",
+                                     "--rtol", "1e-3", "--atol", "1e-6", "--no-plots", "-q"});
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+  EXPECT_NE(ok.output.find("(rtol 0.001, atol 1e-06)"), std::string::npos) << ok.output;
+  for (const auto& [flag, value] : {std::pair<std::string, std::string>{"--rtol", "2"},
+                                    std::pair<std::string, std::string>{"--atol", "-1"}}) {
+    const auto r = test::run_capture(
+        {FERRODYN_EXE, "run", kHunting, "-o", out, flag, value, "--no-plots", "-q"});
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(flag + ": must"), std::string::npos) << r.output;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(RunFailure, a_device_output_creates_no_file_beside_it) {
   if (geteuid() != 0) GTEST_SKIP() << "only root could create files in /dev";
   ASSERT_FALSE(fs::exists("/dev/null.csv")) << "left over by another program; remove it";
