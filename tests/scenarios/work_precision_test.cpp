@@ -144,8 +144,8 @@ TEST(WorkPrecision, fast_vehicle_scene_stays_within_its_stated_error) {
 TEST(WorkPrecision, flange_hunting_scene_reaches_the_converged_cycle) {
   // The Cooperrider wagon's flange-hunting scene at its own loose tolerance against the same
   // start at rtol 1e-6 (within 1e-6 of rtol 1e-9 on the settled cycle): over
-  // t = 5-10 s both must be on the same limit cycle. Measured: amplitudes and frequencies
-  // within 0.2 %. kCycleTol allows the 0.31 % the scene states for its error on the cycle with
+  // t = 5-10 s both must be on the same limit cycle. Measured against rtol 1e-7: amplitudes
+  // and frequencies within 0.26 %. kCycleTol allows the 0.31 % the scene states for its error on the cycle with
   // room; landing on the neighbouring cycle (wheelset 3 swinging to 8.2 mm instead of 7.2 mm,
   // as rtol 1e-4 does) is a 3-14 % change.
   constexpr double kCycleTol = 0.01;
