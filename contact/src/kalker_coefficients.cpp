@@ -95,22 +95,66 @@ constexpr std::array<Column3, kRows> kC33 = {{{6.42, 8.28, 11.7},
 constexpr double row_parameter(int i) {
   return i <= 9 ? 0.1 * (i + 1) : 2.0 - 0.1 * (18 - i + 1);
 }
+constexpr std::array<double, kRows> kRowParameter = [] {
+  std::array<double, kRows> r{};
+  for (int i = 0; i < kRows; ++i) r[static_cast<std::size_t>(i)] = row_parameter(i);
+  return r;
+}();
 
-// Quadratic Lagrange interpolation in nu through the nodes 0, 1/4, 1/2.
-double in_poisson(const Column3& c, double nu) {
+// Quadratic Lagrange weights in nu through the nodes 0, 1/4, 1/2.
+struct PoissonWeights {
+  double l0 = 0.0, l1 = 0.0, l2 = 0.0;
+};
+
+PoissonWeights poisson_weights(double nu) {
   constexpr double n0 = 0.0, n1 = 0.25, n2 = 0.5;
-  const double l0 = (nu - n1) * (nu - n2) / ((n0 - n1) * (n0 - n2));
-  const double l1 = (nu - n0) * (nu - n2) / ((n1 - n0) * (n1 - n2));
-  const double l2 = (nu - n0) * (nu - n1) / ((n2 - n0) * (n2 - n1));
-  return l0 * c[0] + l1 * c[1] + l2 * c[2];
+  return {(nu - n1) * (nu - n2) / ((n0 - n1) * (n0 - n2)),
+          (nu - n0) * (nu - n2) / ((n1 - n0) * (n1 - n2)),
+          (nu - n0) * (nu - n1) / ((n2 - n0) * (n2 - n1))};
+}
+
+double in_poisson(const Column3& c, const PoissonWeights& l) {
+  return l.l0 * c[0] + l.l1 * c[1] + l.l2 * c[2];
+}
+
+// Where the ellipse parameter t and nu fall in the table, found once for the four coefficients.
+struct TablePoint {
+  double t = 0.0, nu = 0.0;
+  PoissonWeights poisson;
+  bool below = false;        ///< t below the first row: the asymptotes
+  bool between = false;      ///< t between rows `row` and `row + 1`, weight w on the latter
+  int row = 0;               ///< otherwise the row t lies on (or is clamped to)
+  double w = 0.0;
+};
+
+TablePoint table_point(double t, double nu) {
+  TablePoint p;
+  p.t = t;
+  p.nu = nu;
+  p.poisson = poisson_weights(nu);
+  if (t < kRowParameter[0]) {
+    p.below = true;
+  } else if (t >= kRowParameter[kRows - 1]) {
+    p.row = kRows - 1;
+  } else if (t > kRowParameter[0]) {
+    int i = 0;
+    while (i < kRows - 2 && t > kRowParameter[static_cast<std::size_t>(i + 1)]) ++i;
+    const double t0 = kRowParameter[static_cast<std::size_t>(i)];
+    const double t1 = kRowParameter[static_cast<std::size_t>(i + 1)];
+    p.between = true;
+    p.row = i;
+    p.w = (t - t0) / (t1 - t0);
+  }
+  return p;
 }
 
 // Below a/b = 0.1: Kalker's g -> 0 asymptotes (annex A.2 first row), see the header.
 enum class Coef { k11, k22, k23, k33 };
-double below_table(const std::array<Column3, kRows>& table, Coef which, double g, double nu) {
+double below_table(const std::array<Column3, kRows>& table, Coef which, double g, double nu,
+                   const PoissonWeights& poisson) {
   constexpr double kPi2 = 9.869604401089358;  // pi^2
   constexpr double g1 = 0.1;
-  const double node = in_poisson(table[0], nu);
+  const double node = in_poisson(table[0], poisson);
   switch (which) {
     case Coef::k11: {
       const double lim = kPi2 / (4.0 * (1.0 - nu));
@@ -130,15 +174,12 @@ double below_table(const std::array<Column3, kRows>& table, Coef which, double g
   return node;
 }
 
-double lookup(const std::array<Column3, kRows>& table, Coef which, double t, double nu) {
-  if (t < row_parameter(0)) return below_table(table, which, t, nu);
-  if (t == row_parameter(0)) return in_poisson(table[0], nu);
-  if (t >= row_parameter(kRows - 1)) return in_poisson(table[kRows - 1], nu);
-  int i = 0;
-  while (i < kRows - 2 && t > row_parameter(i + 1)) ++i;
-  const double t0 = row_parameter(i), t1 = row_parameter(i + 1);
-  const double w = (t - t0) / (t1 - t0);
-  return (1.0 - w) * in_poisson(table[i], nu) + w * in_poisson(table[i + 1], nu);
+double lookup(const std::array<Column3, kRows>& table, Coef which, const TablePoint& p) {
+  if (p.below) return below_table(table, which, p.t, p.nu, p.poisson);
+  const auto row = static_cast<std::size_t>(p.row);
+  if (!p.between) return in_poisson(table[row], p.poisson);
+  return (1.0 - p.w) * in_poisson(table[row], p.poisson) +
+         p.w * in_poisson(table[row + 1], p.poisson);
 }
 
 }  // namespace
@@ -152,9 +193,9 @@ KalkerCoefficients kalker_coefficients_table(double a, double b, double poisson)
     throw std::invalid_argument(
         fmt::format("kalker_coefficients_table: poisson must lie in [0, 0.5], got {}", poisson));
   }
-  const double t = a <= b ? a / b : 2.0 - b / a;
-  return KalkerCoefficients{lookup(kC11, Coef::k11, t, poisson), lookup(kC22, Coef::k22, t, poisson),
-                            lookup(kC23, Coef::k23, t, poisson), lookup(kC33, Coef::k33, t, poisson)};
+  const TablePoint p = table_point(a <= b ? a / b : 2.0 - b / a, poisson);
+  return KalkerCoefficients{lookup(kC11, Coef::k11, p), lookup(kC22, Coef::k22, p),
+                            lookup(kC23, Coef::k23, p), lookup(kC33, Coef::k33, p)};
 }
 
 KalkerCoefficients kalker_coefficients_voco_fit(double curvature_ratio) {

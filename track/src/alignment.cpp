@@ -33,12 +33,18 @@ double sinc(double x) {
 }  // namespace
 
 Eigen::Vector3d TrackFrame::angular_rate_per_length() const {
-  const double sp = std::sin(cant_angle), cp = std::cos(cant_angle);
-  return {-d_cant_angle, -curvature * sp, curvature * cp};
+  return angular_rate_per_length(std::sin(cant_angle), std::cos(cant_angle));
 }
 
 Eigen::Vector3d TrackFrame::d_angular_rate_per_length() const {
-  const double sp = std::sin(cant_angle), cp = std::cos(cant_angle);
+  return d_angular_rate_per_length(std::sin(cant_angle), std::cos(cant_angle));
+}
+
+Eigen::Vector3d TrackFrame::angular_rate_per_length(double sp, double cp) const {
+  return {-d_cant_angle, -curvature * sp, curvature * cp};
+}
+
+Eigen::Vector3d TrackFrame::d_angular_rate_per_length(double sp, double cp) const {
   return {-dd_cant_angle, -d_curvature * sp - curvature * cp * d_cant_angle,
           d_curvature * cp - curvature * sp * d_cant_angle};
 }
@@ -146,9 +152,13 @@ TrackFrame Alignment::frame(double s) const {
   TrackFrame f;
   f.s = s;
   f.section = i;
-  const Eigen::Vector2d d = plan_offset(st, u);
-  f.position = {st.x + d.x(), st.y + d.y(), 0.0};
   f.heading = st.heading + u * (st.curvature + 0.5 * st.d_curvature * u);
+  const double ch = std::cos(f.heading), sh = std::sin(f.heading);
+  // On a straight section the chord runs along the heading: plan_offset's u (cos, sin) of it.
+  const Eigen::Vector2d d = st.curvature == 0.0 && st.d_curvature == 0.0
+                                ? Eigen::Vector2d(u * ch, u * sh)
+                                : plan_offset(st, u);
+  f.position = {st.x + d.x(), st.y + d.y(), 0.0};
   f.curvature = st.curvature + st.d_curvature * u;
   f.d_curvature = st.d_curvature;
   f.cant = st.cant + st.d_cant * u;
@@ -166,7 +176,6 @@ TrackFrame Alignment::frame(double s) const {
   f.d_cant_angle = f.d_cant / (b * cp);
   f.dd_cant_angle = f.dd_cant / (b * cp) + f.d_cant * f.d_cant * sp / (b * b * cp * cp * cp);
   // R = Rz(heading) Rx(-phi).
-  const double ch = std::cos(f.heading), sh = std::sin(f.heading);
   f.rotation << ch, -sh * cp, -sh * sp,  //
       sh, ch * cp, ch * sp,              //
       0.0, -sp, cp;

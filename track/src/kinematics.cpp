@@ -15,12 +15,12 @@ FrameKinematics frame_kinematics(const TrackFrame& frame, double speed, double a
   FrameKinematics k;
   k.speed = speed;
   k.acceleration = acceleration;
-  const Eigen::Vector3d w = frame.angular_rate_per_length();
-  const Eigen::Vector3d dw = frame.d_angular_rate_per_length();
+  const double sp = std::sin(frame.cant_angle), cp = std::cos(frame.cant_angle);
+  const Eigen::Vector3d w = frame.angular_rate_per_length(sp, cp);
+  const Eigen::Vector3d dw = frame.d_angular_rate_per_length(sp, cp);
   k.angular_velocity = speed * w;
   // d/dt (V w(s)) = dV/dt w + V^2 dw/ds.
   k.angular_acceleration = acceleration * w + speed * speed * dw;
-  const double sp = std::sin(frame.cant_angle), cp = std::cos(frame.cant_angle);
   // Origin acceleration in ground axes: dV/dt t + V^2 k n_horizontal; in track axes the
   // horizontal normal is (0, cos phi, sin phi).
   const double centripetal = speed * speed * frame.curvature;

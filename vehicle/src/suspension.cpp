@@ -20,8 +20,8 @@
 namespace ferro::vehicle {
 
 void point_state(const BodyData* body, const BodyKinematics& k, const Eigen::Vector3d& p,
-                 Eigen::Vector3d& position, Eigen::Vector3d& velocity) {
-  Eigen::Vector3d local, arm;
+                 Eigen::Vector3d& position, Eigen::Vector3d& velocity, Eigen::Vector3d& arm) {
+  Eigen::Vector3d local;
   if (body == nullptr) {
     arm = Eigen::Vector3d(0.0, p.y(), p.z());
     local = arm;
@@ -94,9 +94,9 @@ void apply_element(const VehicleModel::Impl& model, const ElementData& e,
 
   // Attachment points in the ground frame, their relative position and velocity in the axes of
   // body_a's track frame.
-  Eigen::Vector3d pa, va, pb, vb;
-  point_state(body_a, ka, s.point_a, pa, va);
-  point_state(&body_b, kb, s.point_b, pb, vb);
+  Eigen::Vector3d pa, va, arm_a, pb, vb, arm_b;
+  point_state(body_a, ka, s.point_a, pa, va, arm_a);
+  point_state(&body_b, kb, s.point_b, pb, vb, arm_b);
   const Eigen::Matrix3d& Ra = ka.frame.rotation;
   const Eigen::Vector3d d = Ra.transpose() * (pb - pa);
   const Eigen::Vector3d deflection = d - e.rest_vector;
@@ -130,14 +130,14 @@ void apply_element(const VehicleModel::Impl& model, const ElementData& e,
   // Force and moment on body_b (its frame axes) and the reaction on body_a.
   const Eigen::Vector3d f_b = kb.frame.rotation.transpose() * (Ra * f);
   kb.force += f_b;
-  kb.moment += (kb.attitude * s.point_b).cross(f_b);
+  kb.moment += arm_b.cross(f_b);
   if (e.a >= 0) {
     BodyKinematics& ka_mut = kin[static_cast<std::size_t>(e.a)];
     ka_mut.force -= f;
     // The reaction acts on the same line as the action, through body_b's attachment point
     // (body_a's point plus d): a massless element passes no net couple, and angular momentum
     // is conserved when the two points separate under a preload.
-    ka_mut.moment -= (ka_mut.attitude * s.point_a + d).cross(f);
+    ka_mut.moment -= (arm_a + d).cross(f);
   }
 }
 

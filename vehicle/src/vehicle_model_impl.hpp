@@ -113,8 +113,10 @@ void apply_element(const VehicleModel::Impl& model, const ElementData& element,
 void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body,
                       BodyKinematics& k, WheelResult* left_right);
 
-/// Position and velocity (ground frame) of a point p given in body axes.
+/// Position and velocity (ground frame) of a point p given in body axes, and its arm from the
+/// body's centre in the axes of the body's track frame (the rotated p; (0, p_y, p_z) for the
+/// track frame itself, body == nullptr).
 void point_state(const BodyData* body, const BodyKinematics& k, const Eigen::Vector3d& p,
-                 Eigen::Vector3d& position, Eigen::Vector3d& velocity);
+                 Eigen::Vector3d& position, Eigen::Vector3d& velocity, Eigen::Vector3d& arm);
 
 }  // namespace ferro::vehicle

@@ -32,9 +32,12 @@ constexpr std::array<double Candidate::*, kFields - 1> kColumns = {
     &Candidate::curvature_a,   &Candidate::curvature_b,    &Candidate::dgap_dlateral,
     &Candidate::dgap_droll,    &Candidate::dgap_dyaw,      &Candidate::dbarrier_dlateral,
     &Candidate::dbarrier_droll, &Candidate::dbarrier_dyaw};
-// Columns interpolated with the corner weights alone: all from x on (gap and barrier carry a
-// Taylor shift).
+// Columns interpolated with the corner weights alone: x to curvature_b (gap and barrier carry a
+// Taylor shift; the gradients serve that shift at the nodes and are not interpolated).
 constexpr std::size_t kFirstWeighted = 2;
+constexpr std::size_t kEndWeighted = 11;
+static_assert(kColumns[kEndWeighted - 1] == &Candidate::curvature_b &&
+              kColumns[kEndWeighted] == &Candidate::dgap_dlateral);
 constexpr double kFormatVersion = 2.0;
 
 int axis_count(double min, double max, double step, const char* name) {
@@ -425,7 +428,7 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
     // half-gradient terms cancel for linear and bilinear parts). Partial branch: full Taylor
     // from the present corners, exact for linear functions.
     const double taylor = wsum > 1.0 - 1e-12 ? 0.5 : 1.0;
-    Candidate s;  // every field 0
+    Candidate s;  // every field 0 (the gradients stay so)
     s.side = g.side;
     double wbarrier = 0.0, barrier_shift = 0.0;
     for (int c = 0; c < (1 << d); ++c) {
@@ -444,7 +447,7 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
         barrier_shift += w[c] * bshift;
         wbarrier += w[c];
       }
-      for (std::size_t k = kFirstWeighted; k < kColumns.size(); ++k)
+      for (std::size_t k = kFirstWeighted; k < kEndWeighted; ++k)
         s.*kColumns[k] += wc * q.*kColumns[k];
     }
     // Half the gradient term where every corner has the barrier (exact for quadratics, as the

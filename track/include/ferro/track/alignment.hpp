@@ -49,6 +49,10 @@ struct TrackFrame {
   [[nodiscard]] Eigen::Vector3d angular_rate_per_length() const;
   /// Its derivative with respect to s [rad/m^2].
   [[nodiscard]] Eigen::Vector3d d_angular_rate_per_length() const;
+  /// The same two with sin(cant_angle) and cos(cant_angle) given by the caller (who needs them
+  /// for more than these).
+  [[nodiscard]] Eigen::Vector3d angular_rate_per_length(double sin_cant, double cos_cant) const;
+  [[nodiscard]] Eigen::Vector3d d_angular_rate_per_length(double sin_cant, double cos_cant) const;
   /// Nominal position of the left (+y) / right rail contact reference point, at +-rail_spacing/2
   /// along the track y axis, ground frame [m].
   [[nodiscard]] Eigen::Vector3d left_rail_position() const;
