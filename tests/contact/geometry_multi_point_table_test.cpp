@@ -7,6 +7,7 @@
 #include "a22_pair.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -31,12 +32,13 @@ const std::string kData = FERRO_DATA_DIR;
 // 2.4 mm, 0.21 rad). A table point is never further than that from a real one (no fake point).
 // Where a submerged barrier joins candidates into one run, the members share the run's depth
 // through the barrier (share_joined_runs), which the table interpolates with its own gradient:
-// the typical tier is 1.5 um (measured 1.26 um). A branch born inside a cell is absent from the
-// table until the cell's half-weight point; a wheel whose member count differs for that reason
-// is counted, not compared point by point: at most kMembershipShare of the wheels (measured
-// 1 of 400).
+// the typical tier is 1.5 um (measured 1.29 um; 0.47 mm). A branch born or dying inside a cell
+// fades in or out over the middle half of its corners' weight, sharing its wheel's load with
+// the branch that takes over; a wheel where that makes the member count differ, or a faded
+// point's penetration differ from the search's by more than the every-point tier, is counted,
+// not compared point by point: at most kFadingShare of the wheels (measured 11 of 400).
 constexpr double kTypicalPenetrationTol = 1.5e-6;  // [m], 95th percentile
-constexpr double kMembershipShare = 0.01;
+constexpr double kFadingShare = 0.04;              // [-] of the wheels
 constexpr double kTypicalPositionTol = 0.5e-3;     // [m], 95th percentile
 constexpr double kPenetrationTol = 10.0e-6;        // [m], every point
 constexpr double kPositionTol = 3.0e-3;            // [m], every point
@@ -63,25 +65,40 @@ int count_on(const std::vector<fc::WheelRailContact>& v, fc::Side side) {
                                         [&](const fc::WheelRailContact& c) { return c.side == side; }));
 }
 
+// The point of `b` on p's wheel nearest to p in wheel_y (nullptr when none).
+const fc::WheelRailContact* partner(const fc::WheelRailContact& p,
+                                    const std::vector<fc::WheelRailContact>& b) {
+  const fc::WheelRailContact* best = nullptr;
+  for (const fc::WheelRailContact& q : b) {
+    if (q.side != p.side) continue;
+    if (!best || std::abs(q.wheel_y - p.wheel_y) < std::abs(best->wheel_y - p.wheel_y)) best = &q;
+  }
+  return best;
+}
+
 // Every point of `a` deeper than kPenetrationTol has a partner in `b` (same wheel, nearest in
-// wheel_y) within the every-point tolerances; wheels whose member count differs are skipped and
-// counted in `membership_differs`.
+// wheel_y) within the every-point tolerances. With `fading`: wheels whose member count differs
+// or whose penetrations differ by more than kPenetrationTol (a branch fading in or out) are
+// skipped and counted there.
 void expect_matched(const std::vector<fc::WheelRailContact>& a,
                     const std::vector<fc::WheelRailContact>& b, const std::string& what,
-                    int* membership_differs = nullptr) {
+                    int* fading = nullptr) {
+  std::array<bool, 2> skip{false, false};
   for (const fc::Side side : {fc::Side::left, fc::Side::right}) {
-    if (membership_differs && count_on(a, side) != count_on(b, side)) ++*membership_differs;
+    if (!fading) continue;
+    bool& s = skip[static_cast<std::size_t>(side)];
+    s = count_on(a, side) != count_on(b, side);
+    for (const fc::WheelRailContact& p : a) {
+      if (s || p.side != side || p.penetration < kPenetrationTol) continue;
+      const fc::WheelRailContact* q = partner(p, b);
+      s = !q || std::abs(q->penetration - p.penetration) > kPenetrationTol;
+    }
+    if (s) ++*fading;
   }
   for (const fc::WheelRailContact& p : a) {
-    if (membership_differs && count_on(a, p.side) != count_on(b, p.side)) continue;
+    if (skip[static_cast<std::size_t>(p.side)]) continue;
     if (p.penetration < kPenetrationTol) continue;
-    const fc::WheelRailContact* best = nullptr;
-    for (const fc::WheelRailContact& q : b) {
-      if (q.side != p.side) continue;
-      if (!best || std::abs(q.wheel_y - p.wheel_y) < std::abs(best->wheel_y - p.wheel_y)) {
-        best = &q;
-      }
-    }
+    const fc::WheelRailContact* best = partner(p, b);
     ASSERT_NE(best, nullptr) << what << ": no point on that wheel";
     EXPECT_NEAR(best->penetration, p.penetration, kPenetrationTol) << what;
     EXPECT_NEAR(best->y, p.y, kPositionTol) << what;
@@ -115,7 +132,7 @@ TEST(multi_point_contact_table, agrees_with_the_online_search_off_the_grid) {
       depth(20e-6, 120e-6);
   std::vector<fc::WheelRailContact> a, b;
   std::vector<double> pen_err, pos_err;
-  int points = 0, wheels = 0, membership_differs = 0;
+  int points = 0, wheels = 0, fading = 0;
   for (int n = 0; n < 200; ++n) {
     fc::WheelsetPose pose{lat(rng), 0.0, roll(rng), 0.0};
     pose = fc::touching_pose(*pair, pose);
@@ -124,8 +141,8 @@ TEST(multi_point_contact_table, agrees_with_the_online_search_off_the_grid) {
     table.contacts(pose, b);
     const std::string what = "y " + std::to_string(pose.lateral) + " roll " +
                              std::to_string(pose.roll);
-    expect_matched(a, b, "search->table " + what, &membership_differs);
-    int counted_once = 0;  // the same wheels as above
+    expect_matched(a, b, "search->table " + what, &fading);
+    int counted_once = 0;  // much the same wheels as above
     expect_matched(b, a, "table->search " + what, &counted_once);
     wheels += 2;
     points += static_cast<int>(a.size());
@@ -138,7 +155,10 @@ TEST(multi_point_contact_table, agrees_with_the_online_search_off_the_grid) {
     }
   }
   EXPECT_GT(points, 200);
-  EXPECT_LE(membership_differs, kMembershipShare * wheels);
+  std::printf("[ figures  ] %d of %d wheels with a fading branch; deepest point per wheel: "
+              "penetration p95 %.2f um, position p95 %.2f mm\n",
+              fading, wheels, percentile95(pen_err) * 1e6, percentile95(pos_err) * 1e3);
+  EXPECT_LE(fading, kFadingShare * wheels);
   EXPECT_LT(percentile95(pen_err), kTypicalPenetrationTol);
   EXPECT_LT(percentile95(pos_err), kTypicalPositionTol);
 }
@@ -165,9 +185,12 @@ TEST(multi_point_contact_table, two_point_contact_found_by_table_and_search) {
     std::vector<fc::WheelRailContact> a, b;
     search.contacts(lw.pose, a);
     table.contacts(lw.pose, b);
+    // Points deeper than kCounted: a branch fading out of its cell (born or dying in it,
+    // MultiPointContactTable) may add a point of small penetration (measured 0.87 and 0.58 um).
+    constexpr double kCounted = 1e-6;  // [m]
     int right_search = 0, right_table = 0;
-    for (const auto& p : a) right_search += p.side == fc::Side::right ? 1 : 0;
-    for (const auto& p : b) right_table += p.side == fc::Side::right ? 1 : 0;
+    for (const auto& p : a) right_search += p.side == fc::Side::right && p.penetration > kCounted;
+    for (const auto& p : b) right_table += p.side == fc::Side::right && p.penetration > kCounted;
     EXPECT_EQ(right_search, 2) << "dy " << dy;
     EXPECT_EQ(right_table, 2) << "dy " << dy;
     expect_matched(a, b, "two-point search->table");
@@ -183,8 +206,8 @@ TEST(multi_point_contact_table, contact_moves_continuously_where_candidates_join
   // Sharing the run's depth (share_joined_runs) moves each wheel's load-weighted contact
   // position continuously: between neighbouring poses kStep apart it moves by at most
   // kMaxMoveSearch (measured 0.25 mm where the weights shift fastest). The table adds its
-  // known deviation, a branch born inside a cell entering at the half-weight point, which moves
-  // the centre by up to kMaxMoveTable (measured 0.63 mm), still 15 times below the old jump.
+  // known deviation, a branch born inside a cell fading in over the cell, which moves the centre
+  // by up to kMaxMoveTable (measured 0.34 mm), still 25 times below the old jump.
   constexpr double kStep = 5e-6;              // [m] of lateral shift between poses
   constexpr double kMaxMoveSearch = 0.3e-3;   // [m] per kStep
   constexpr double kMaxMoveTable = 0.7e-3;    // [m] per kStep
@@ -231,6 +254,76 @@ TEST(multi_point_contact_table, contact_moves_continuously_where_candidates_join
     EXPECT_GT(joined, 0) << "the sweep must cross a joined run";
     EXPECT_LT(worst, use_table ? kMaxMoveTable : kMaxMoveSearch) << (use_table ? "table" : "search");
   }
+}
+
+TEST(multi_point_contact_table, wheel_force_continuous_where_the_flange_root_branch_dies) {
+  // S1002 on UIC60 1:40 at roll -1 mrad (a grid node), lateral shift 6.1 -> 6.2 mm (one cell):
+  // the right wheel's contact races from the flange root (node 6.1 mm: one point at ~32 deg) to
+  // the flange (node 6.2 mm: one point at ~70 deg), so the root branch dies and the flange
+  // branch is born inside the cell. The wheel is held at vertical -0.1 mm (15 kN at 6.1 mm,
+  // 110 kN at 6.2 mm). Oracles: the flange's own force gradient (Hertz) and the online search.
+  // - Continuity: between poses kStep apart the table's summed normal force moves by at most
+  //   kGradientFactor times the search's largest force gradient on the flange at the cell's
+  //   far node (measured: 2.08 kN per um against 2.03; the fade adds less than the flange's
+  //   stiffness).
+  // - Agreement at the nodes: within kNodeTol over the first and last kNodeBand of the cell
+  //   (the gap is tabulated exactly at the nodes).
+  // - Agreement inside the cell: the median relative difference stays below kMidCellTol
+  //   (measured 0.16). The table does not resolve the point's path inside the cell; the
+  //   search's own force steps by 45 % inside it (the point jumping from root to flange, new
+  //   curvatures) and peaks at 1.6 MN over 10 um where the flange root is nearly conformal.
+  constexpr double kStep = 1e-6;           // [m] of lateral shift between poses
+  constexpr double kGradientFactor = 1.5;  // [-]
+  constexpr double kNodeTol = 0.05;        // [-] relative
+  constexpr double kNodeBand = 5e-6;       // [m]
+  constexpr double kMidCellTol = 0.25;     // [-] median relative difference
+  constexpr double kRoll = -1e-3, kVertical = -1e-4, kY0 = 6.1e-3, kY1 = 6.2e-3;
+  const auto pair = a22_pair();
+  const fc::SearchContactSource search(pair);
+  const fc::MultiPointContactTable& table = a22_table();
+  const double estar = 2.0 * 210.0e9 / (2.0 * (1.0 - 0.28 * 0.28));
+  std::vector<fc::WheelRailContact> pts;
+  const auto right_force = [&](const fc::ContactGeometrySource& source, double y) {
+    source.contacts(fc::WheelsetPose{y, kVertical, kRoll, 0.0}, pts);
+    double f = 0.0;
+    for (const auto& c : pts) {
+      if (c.side == fc::Side::right) f += fc::hertz_patch_from_penetration(c, estar).normal_force;
+    }
+    return f;
+  };
+  // The cell is the one meant: the right wheel's candidates are the root alone at the near
+  // node and the flange alone at the far node.
+  for (const int i : {101, 102}) {  // lateral nodes 6.1 and 6.2 mm; roll node 5: -1 mrad
+    int right = 0;
+    for (auto [c, end] = table.node(i, 5, 0); c != end; ++c) {
+      if (c->side != fc::Side::right) continue;
+      ++right;
+      EXPECT_EQ(c->contact_angle > 1.0, i == 102) << "node " << i << " angle " << c->contact_angle;
+    }
+    EXPECT_EQ(right, 1) << "node " << i;
+  }
+  const double flange_gradient =
+      (right_force(search, kY1 + kStep) - right_force(search, kY1 - kStep)) / (2.0 * kStep);
+  const int n = static_cast<int>(std::lround((kY1 - kY0) / kStep));
+  double previous = std::nan(""), worst_jump = 0.0;
+  std::vector<double> relative;
+  for (int i = 0; i <= n; ++i) {
+    const double y = kY0 + i * kStep;
+    const double ft = right_force(table, y), fs = right_force(search, y);
+    if (!std::isnan(previous)) worst_jump = std::max(worst_jump, std::abs(ft - previous));
+    previous = ft;
+    if (y - kY0 <= kNodeBand || kY1 - y <= kNodeBand) {
+      EXPECT_NEAR(ft / fs, 1.0, kNodeTol) << "y " << y;
+    }
+    relative.push_back(std::abs(ft - fs) / std::max(ft, fs));
+  }
+  std::sort(relative.begin(), relative.end());
+  const double median = relative[relative.size() / 2];
+  std::printf("[ figures  ] largest step %.0f N per %.0f um (flange gradient %.0f N/um); median "
+              "|table - search| / force %.3f\n",
+              worst_jump, kStep * 1e6, flange_gradient * 1e-6, median);
+  EXPECT_LT(worst_jump, kGradientFactor * std::abs(flange_gradient) * kStep);
+  EXPECT_LT(median, kMidCellTol);
 }
 
 TEST(multi_point_contact_table, hdf5_round_trip_and_range_errors) {

@@ -753,8 +753,8 @@ std::vector<double> VehicleModel::static_equilibrium(double t,
   if (direct.converged) return x;
 
   // 2. Continuation in speed. The residual is not smooth: the wheel-rail contact changes its
-  // points (tread, flange root, flange; a multi-point table steps where a point is born inside a
-  // cell), and a bump stop's table has kinks; Newton from rest can end against such a step with
+  // points (tread, flange root, flange: kinks where a point appears or fades in), and a bump
+  // stop's table has kinks; Newton from rest can end against such a kink or step with
   // a large residual, typically a sharp curve at speed where the wheelsets roll on their flanges
   // and the secondary lateral suspension takes the car body's versine. At V = 0 the creepages
   // vanish (no sliding velocity) and the equilibrium is that of the elastic suspension, gravity,

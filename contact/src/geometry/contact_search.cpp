@@ -389,7 +389,7 @@ void share_joined_runs(const RunMember* members, int count, double drop,
       double sum = 0.0;
       for (int i = start; i < end; ++i) {
         const double d = drop - members[i].gap;
-        effective_gap[i] = std::max(0.0, d - barrier_depth(i));  // excess, for now
+        effective_gap[i] = members[i].share * std::max(0.0, d - barrier_depth(i));  // excess
         sum += effective_gap[i];
       }
       const double n = static_cast<double>(end - start);

@@ -40,6 +40,22 @@ static_assert(kColumns[kEndWeighted - 1] == &Candidate::curvature_b &&
               kColumns[kEndWeighted] == &Candidate::dgap_dlateral);
 constexpr double kFormatVersion = 2.0;
 
+// Load share of a branch whose present corners carry the interpolation weight w in (0, 1]:
+// C1 smoothstep over w in [kFadeStart, 1 - kFadeStart], exactly 1 for a branch present at every
+// corner. share(w) + share(1 - w) = 1, so a branch dying across the corners where another is
+// born hands its load over to it with shares that sum to one. The middle half of the weight:
+// a wider band (down to w = 0) spreads more poses over two points (measured on S1002 / UIC60:
+// 20 or more instead of 11 of 400 wheels off the search's points, and three sharp-curve
+// equilibria of docs/VALIDATION.md failing that converge with this band); a narrower one
+// steepens the hand-over (slope up to 1.5 / (1 - 2 kFadeStart) of the two branches' force
+// difference per cell).
+constexpr double kFadeStart = 0.25;  // [-]
+double load_share(double w) {
+  if (w > 1.0 - 1e-12) return 1.0;
+  const double t = std::clamp((w - kFadeStart) / (1.0 - 2.0 * kFadeStart), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
 int axis_count(double min, double max, double step, const char* name) {
   if (!std::isfinite(min) || !std::isfinite(max) || max < min) {
     throw std::invalid_argument(fmt::format(
@@ -423,7 +439,8 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
     for (int c = 0; c < (1 << d); ++c) {
       if (g.corner[c] >= 0) wsum += w[c];
     }
-    if (wsum < 0.5 - 1e-12) continue;
+    const double share = load_share(wsum);
+    if (!(share > 0.0)) continue;  // no present corner carries weight
     // Full branch: weights w_c on g_c + (1/2) grad g_c . (q - q_c), exact for quadratics (the
     // half-gradient terms cancel for linear and bilinear parts). Partial branch: full Taylor
     // from the present corners, exact for linear functions.
@@ -455,16 +472,25 @@ void MultiPointContactTable::interpolate(const WheelsetPose& pose, Emit&& emit) 
     const double barrier_taylor = wbarrier > 1.0 - 1e-12 ? 0.5 : 1.0;
     s.barrier = wbarrier > 0.0 ? (s.barrier + barrier_taylor * barrier_shift) / wbarrier
                                : kNoBarrier;
-    emit(s);
+    emit(s, share);
   }
 }
 
 namespace {
 
-WheelRailContact to_contact(const MultiPointContactTable::Candidate& s, double drop) {
+// Penetration of a point of vertical gap `gap` (< 0: penetrating) and load share `share`: the
+// Hertz approach at which it carries share times the force of its full approach (F ~ approach^1.5
+// at fixed curvatures, so approach * share^(2/3)).
+double shared_penetration(double gap, double contact_angle, double share) {
+  const double full = std::max(0.0, -gap * std::cos(contact_angle));
+  return share < 1.0 ? full * std::cbrt(share * share) : full;
+}
+
+WheelRailContact to_contact(const MultiPointContactTable::Candidate& s, double drop,
+                            double share) {
   WheelRailContact c = WheelRailContact::geometry_of(s);
   c.vertical_gap = s.gap - drop;
-  c.penetration = std::max(0.0, -c.vertical_gap * std::cos(s.contact_angle));
+  c.penetration = shared_penetration(c.vertical_gap, s.contact_angle, share);
   return c;
 }
 
@@ -473,7 +499,9 @@ WheelRailContact to_contact(const MultiPointContactTable::Candidate& s, double d
 void MultiPointContactTable::candidates(const WheelsetPose& pose,
                                         std::vector<WheelRailContact>& out) const {
   out.clear();
-  interpolate(pose, [&](const Candidate& s) { out.push_back(to_contact(s, pose.vertical)); });
+  interpolate(pose, [&](const Candidate& s, double share) {
+    out.push_back(to_contact(s, pose.vertical, share));
+  });
   std::stable_sort(out.begin(), out.end(), [](const WheelRailContact& a, const WheelRailContact& b) {
     if (a.side != b.side) return a.side == Side::left;
     return a.wheel_y < b.wheel_y;
@@ -488,13 +516,18 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
   // Per-thread scratch (13 kB of candidates): a local array would be value-initialised on every
   // call, which cost more than the interpolation itself.
   thread_local std::array<Candidate, kBuf> buf;
+  thread_local std::array<double, kBuf> share;  // load share of each, with buf
   int n = 0;
-  interpolate(pose, [&](const Candidate& s) {
-    if (n < kBuf) buf[static_cast<std::size_t>(n++)] = s;
+  interpolate(pose, [&](const Candidate& s, double load_share) {
+    if (n < kBuf) {
+      share[static_cast<std::size_t>(n)] = load_share;
+      buf[static_cast<std::size_t>(n++)] = s;
+    }
   });
   // Left first, each wheel in increasing wheel_y (insertion sort: a handful of entries).
   for (int i = 1; i < n; ++i) {
     const Candidate key = buf[static_cast<std::size_t>(i)];
+    const double key_share = share[static_cast<std::size_t>(i)];
     int j = i - 1;
     auto before = [](const Candidate& a, const Candidate& b) {
       if (a.side != b.side) return a.side == Side::left;
@@ -502,9 +535,11 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
     };
     while (j >= 0 && before(key, buf[static_cast<std::size_t>(j)])) {
       buf[static_cast<std::size_t>(j + 1)] = buf[static_cast<std::size_t>(j)];
+      share[static_cast<std::size_t>(j + 1)] = share[static_cast<std::size_t>(j)];
       --j;
     }
     buf[static_cast<std::size_t>(j + 1)] = key;
+    share[static_cast<std::size_t>(j + 1)] = key_share;
   }
   // Penetrating candidates, joined runs sharing their depth as contacts_from_candidates().
   const double drop = pose.vertical;
@@ -512,15 +547,18 @@ void MultiPointContactTable::contacts(const WheelsetPose& pose,
   thread_local std::array<double, kBuf> gap;
   for (int i = 0; i < n; ++i) {
     const Candidate& s = buf[static_cast<std::size_t>(i)];
-    members[static_cast<std::size_t>(i)] = {s.side, s.gap, s.barrier};
+    members[static_cast<std::size_t>(i)] = {s.side, s.gap, s.barrier,
+                                            share[static_cast<std::size_t>(i)]};
   }
   share_joined_runs(members.data(), n, drop, gap.data());
   for (int i = 0; i < n; ++i) {
     const double g = gap[static_cast<std::size_t>(i)];
     if (!(g < 0.0)) continue;
-    out.push_back(to_contact(buf[static_cast<std::size_t>(i)], drop));
+    const Candidate& s = buf[static_cast<std::size_t>(i)];
+    out.push_back(WheelRailContact::geometry_of(s));
     out.back().vertical_gap = g;
-    out.back().penetration = -g * std::cos(out.back().contact_angle);
+    out.back().penetration =
+        shared_penetration(g, s.contact_angle, share[static_cast<std::size_t>(i)]);
   }
 }
 

@@ -141,6 +141,9 @@ struct RunMember {
   Side side = Side::right;
   double gap = 0.0;
   double barrier = std::numeric_limits<double>::infinity();
+  /// Load share of a member that fades in or out (a table's branch born or dying inside a grid
+  /// cell), in (0, 1]; its excess counts this much in the run's weights.
+  double share = 1.0;
 };
 
 /// Effective vertical gaps of candidates joined into runs, at a drop `drop` [m] below the
@@ -161,6 +164,8 @@ struct RunMember {
 /// - deeper in, the depths grow at a rate between w_i and 1 each: from two contacts' stiffness
 ///   when the barrier just submerges towards one contact's when the run is one flat patch
 ///   (D -> d, members sharing d by their weights).
+/// A member with share s < 1 (fading in or out) counts s e_i in place of e_i in the weights, so
+/// its partners get their full depth back as it fades out.
 /// Every effective gap is therefore continuous in the pose, where keeping only the deepest member
 /// jumps by the members' distance when their depths cross. An unjoined member keeps gap - drop.
 /// Known deviation: a run is one non-Hertzian patch in reality; sharing its depth among Hertzian
