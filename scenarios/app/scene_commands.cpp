@@ -22,7 +22,7 @@ using scenarios::Scene;
 struct RunArgs {
   std::string scene, output, plot_dir, integrator, tangential, normal;
   std::vector<std::string> csv;
-  double t_end = NAN, speed = NAN, pace = 0.0, rtol = NAN, atol = NAN;
+  double t_end = NAN, speed = NAN, pace = 0.0, rtol = NAN, atol = NAN, fixed_step = NAN;
   bool no_plots = false, quiet = false;
 };
 
@@ -86,7 +86,24 @@ int do_run(const RunArgs& a) {
   if (!a.normal.empty()) scenarios::override_normal(scene, a.normal, "--normal");
   if (!a.integrator.empty()) {
     scene.solver.method = a.integrator;
-    scene.solver.validate("--integrator");
+    // A scene's fixed step belongs to its explicit or implicit Runge-Kutta method: another
+    // method given here runs with its error control (--fixed-step sets a step explicitly).
+    if (std::isnan(a.fixed_step) && a.integrator != "arkode_erk" && a.integrator != "arkode_dirk")
+      scene.solver.fixed_step = 0.0;
+  }
+  if (!std::isnan(a.fixed_step)) {
+    if (!(a.fixed_step >= 0.0) || !std::isfinite(a.fixed_step))
+      throw std::invalid_argument(fmt::format(
+          "--fixed-step: must be >= 0 s (0: adaptive steps), got {}", a.fixed_step));
+    if (a.fixed_step > 0.0 && scene.solver.method != "arkode_erk" &&
+        scene.solver.method != "arkode_dirk")
+      throw std::invalid_argument(fmt::format(
+          "--fixed-step: only arkode_erk and arkode_dirk take a fixed step; {} needs 0, got {}",
+          scene.solver.method, a.fixed_step));
+    scene.solver.fixed_step = a.fixed_step;
+  }
+  if (!a.integrator.empty() || !std::isnan(a.fixed_step)) {
+    scene.solver.validate(!a.integrator.empty() ? "--integrator" : "--fixed-step");
   }
   if (!std::isnan(a.rtol)) {
     if (!(a.rtol > 0.0 && a.rtol < 1.0))
@@ -284,6 +301,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
+  run->add_option("--fixed-step", run_args->fixed_step,
+                  "Override solver.fixed_step [s] (arkode_erk, arkode_dirk; 0: adaptive steps)");
   run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]");
   run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]");
   run->add_option("--tangential", run_args->tangential,

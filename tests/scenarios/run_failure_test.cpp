@@ -268,6 +268,44 @@ TEST(RunFailure, tolerance_overrides_are_applied_or_refused_naming_the_flag) {
   fs::remove_all(dir);
 }
 
+TEST(RunFailure, fixed_step_overrides_are_applied_or_refused_naming_the_flag) {
+  // The fast ERRI scene integrates at a fixed 1 ms step: another method on the command line runs
+  // under its own error control, --fixed-step sets or clears the step, and a step for a method
+  // without one is refused.
+  const std::string scene = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+  const fs::path dir = fs::temp_directory_path() / "ferro_fixed_step_override";
+  fs::create_directories(dir);
+  const std::string out = (dir / "o.h5").string();
+  const auto bdf = test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end", "0.01",
+                                      "--integrator", "cvode_bdf", "--no-plots", "-q"});
+  EXPECT_EQ(bdf.exit_code, 0) << bdf.output;
+  EXPECT_NE(bdf.output.find("cvode_bdf (rtol"), std::string::npos) << bdf.output;
+  const auto half = test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end", "0.01",
+                                       "--fixed-step", "5e-4", "--no-plots", "-q"});
+  EXPECT_EQ(half.exit_code, 0) << half.output;
+  EXPECT_NE(half.output.find("fixed step 0.0005 s, no error control): 20 steps"),
+            std::string::npos)
+      << half.output;
+  const auto adaptive = test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end",
+                                           "0.01", "--fixed-step", "0", "--no-plots", "-q"});
+  EXPECT_EQ(adaptive.exit_code, 0) << adaptive.output;
+  EXPECT_NE(adaptive.output.find("arkode_erk (rtol"), std::string::npos) << adaptive.output;
+  const std::pair<std::vector<std::string>, std::string> refused[] = {
+      {{"--fixed-step", "-1"}, "--fixed-step: must be >= 0 s"},
+      {{"--integrator", "cvode_bdf", "--fixed-step", "1e-3"},
+       "--fixed-step: only arkode_erk and arkode_dirk take a fixed step; cvode_bdf needs 0"}};
+  fs::remove(out);
+  for (const auto& [args, message] : refused) {
+    std::vector<std::string> cmd{FERRODYN_EXE, "run", scene, "-o", out, "--no-plots", "-q"};
+    cmd.insert(cmd.end(), args.begin(), args.end());
+    const auto r = test::run_capture(cmd);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  fs::remove_all(dir);
+}
+
 TEST(RunFailure, a_device_output_creates_no_file_beside_it) {
   if (geteuid() != 0) GTEST_SKIP() << "only root could create files in /dev";
   ASSERT_FALSE(fs::exists("/dev/null.csv")) << "left over by another program; remove it";
