@@ -142,7 +142,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
   work->add_option("--tangential", wp->tangential, "Override the tangential contact model");
   work->add_option("--integrators", wp->options.integrators,
                    "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
-                   "odeint_rosenbrock4 arkode_erk@5e-4")
+                   "odeint_rosenbrock4 arkode_erk@5e-4 odeint_bs3@1e-3")
       ->delimiter(',')
       ->capture_default_str();
   work->add_option("--rtols", wp->options.rtols, "relative tolerances")

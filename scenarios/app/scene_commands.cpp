@@ -88,17 +88,17 @@ int do_run(const RunArgs& a) {
     scene.solver.method = a.integrator;
     // A scene's fixed step belongs to its explicit or implicit Runge-Kutta method: another
     // method given here runs with its error control (--fixed-step sets a step explicitly).
-    if (std::isnan(a.fixed_step) && a.integrator != "arkode_erk" && a.integrator != "arkode_dirk")
+    if (std::isnan(a.fixed_step) && !vehicle::takes_fixed_step(a.integrator))
       scene.solver.fixed_step = 0.0;
   }
   if (!std::isnan(a.fixed_step)) {
     if (!(a.fixed_step >= 0.0) || !std::isfinite(a.fixed_step))
       throw std::invalid_argument(fmt::format(
           "--fixed-step: must be >= 0 s (0: adaptive steps), got {}", a.fixed_step));
-    if (a.fixed_step > 0.0 && scene.solver.method != "arkode_erk" &&
-        scene.solver.method != "arkode_dirk")
+    if (a.fixed_step > 0.0 && !vehicle::takes_fixed_step(scene.solver.method))
       throw std::invalid_argument(fmt::format(
-          "--fixed-step: only arkode_erk and arkode_dirk take a fixed step; {} needs 0, got {}",
+          "--fixed-step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} "
+          "needs 0, got {}",
           scene.solver.method, a.fixed_step));
     scene.solver.fixed_step = a.fixed_step;
   }
@@ -302,7 +302,8 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
   run->add_option("--fixed-step", run_args->fixed_step,
-                  "Override solver.fixed_step [s] (arkode_erk, arkode_dirk; 0: adaptive steps)");
+                  "Override solver.fixed_step [s] (arkode_erk, arkode_dirk, odeint_bs3; 0: "
+                  "adaptive steps)");
   run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]");
   run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]");
   run->add_option("--tangential", run_args->tangential,

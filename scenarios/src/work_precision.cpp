@@ -22,7 +22,8 @@ double cpu_now() {
 }
 
 // An entry is `method`, `method:max_order` (an order cap) or `method@h` (a fixed step h [s],
-// arkode_erk / arkode_dirk; run once, the tolerances then only scale the Newton test).
+// arkode_erk / arkode_dirk / odeint_bs3; run once, the tolerances then only scale the Newton
+// test).
 vehicle::IntegratorSettings parse_entry(const Scene& scene, const std::string& full_entry,
                                         double rtol, double atol_per_rtol) {
   vehicle::IntegratorSettings s = scene.solver;

@@ -270,8 +270,8 @@ TEST(RunFailure, tolerance_overrides_are_applied_or_refused_naming_the_flag) {
 
 TEST(RunFailure, fixed_step_overrides_are_applied_or_refused_naming_the_flag) {
   // The fast ERRI scene integrates at a fixed 1 ms step: another method on the command line runs
-  // under its own error control, --fixed-step sets or clears the step, and a step for a method
-  // without one is refused.
+  // under its own error control, --fixed-step sets or clears the step, a step for a method
+  // without one is refused, and so is no step for the method that needs one.
   const std::string scene = "scenarios/scenes/manchester_straight_erri_fast.yaml";
   const fs::path dir = fs::temp_directory_path() / "ferro_fixed_step_override";
   fs::create_directories(dir);
@@ -286,14 +286,17 @@ TEST(RunFailure, fixed_step_overrides_are_applied_or_refused_naming_the_flag) {
   EXPECT_NE(half.output.find("fixed step 0.0005 s, no error control): 20 steps"),
             std::string::npos)
       << half.output;
-  const auto adaptive = test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end",
-                                           "0.01", "--fixed-step", "0", "--no-plots", "-q"});
+  const auto adaptive =
+      test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end", "0.01", "--integrator",
+                         "arkode_erk", "--fixed-step", "0", "--no-plots", "-q"});
   EXPECT_EQ(adaptive.exit_code, 0) << adaptive.output;
   EXPECT_NE(adaptive.output.find("arkode_erk (rtol"), std::string::npos) << adaptive.output;
   const std::pair<std::vector<std::string>, std::string> refused[] = {
       {{"--fixed-step", "-1"}, "--fixed-step: must be >= 0 s"},
+      {{"--fixed-step", "0"}, "odeint_bs3 runs at a fixed step only"},
       {{"--integrator", "cvode_bdf", "--fixed-step", "1e-3"},
-       "--fixed-step: only arkode_erk and arkode_dirk take a fixed step; cvode_bdf needs 0"}};
+       "--fixed-step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; cvode_bdf "
+       "needs 0"}};
   fs::remove(out);
   for (const auto& [args, message] : refused) {
     std::vector<std::string> cmd{FERRODYN_EXE, "run", scene, "-o", out, "--no-plots", "-q"};

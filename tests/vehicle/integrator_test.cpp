@@ -176,7 +176,7 @@ TEST(IntegratorSettings, jacobian_max_steps_below_one_is_rejected) {
   }
 }
 
-TEST(IntegratorSettings, fixed_step_only_for_the_arkode_methods) {
+TEST(IntegratorSettings, fixed_step_only_for_the_fixed_step_methods) {
   IntegratorSettings s;
   s.fixed_step = 1e-3;
   s.method = "cvode_bdf";  // adaptive only: refused, not ignored
@@ -188,8 +188,19 @@ TEST(IntegratorSettings, fixed_step_only_for_the_arkode_methods) {
   }
   s.method = "arkode_erk";
   EXPECT_NO_THROW(s.validate("solver"));
+  s.method = "odeint_bs3";
+  EXPECT_NO_THROW(s.validate("solver"));
   s.fixed_step = -1e-3;
   EXPECT_THROW(s.validate("solver"), std::invalid_argument);
+  s.fixed_step = 0.0;  // odeint_bs3 has no error control: a step is required
+  try {
+    s.validate("solver");
+    FAIL() << "expected an error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("odeint_bs3 runs at a fixed step only"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // Largest deviation from the closed form over 5 s with a constant step h.
@@ -219,13 +230,14 @@ TEST(FixedStep, takes_the_given_step_and_converges_at_the_method_order) {
   // divides it by 2^p. The observed ratio of two runs (h = 5 ms and 2.5 ms, hw = 0.047 and
   // 0.024 on this oscillator, well inside the asymptotic range) must lie within a factor
   // kOrderBand of 2^p: the leading error term's share at these hw leaves the ratio within
-  // 0.3 % of 2^p (measured 16.00 / 8.02 / 4.00 / 15.97), and 10 % still separates neighbouring
-  // orders (2^p against 2^(p+-1): a factor 2); a run that ignored the fixed step (error control
-  // at rtol 1e-6) or used the wrong order would miss it by far.
+  // 0.3 % of 2^p (measured 16.01 / 8.02 / 4.00 / 16.00, odeint_bs3 8.02), and 10 % still
+  // separates neighbouring orders (2^p against 2^(p+-1): a factor 2); a run that ignored the
+  // fixed step (error control at rtol 1e-6) or used the wrong order would miss it by far.
   constexpr double kOrderBand = 1.1;
   struct Case { const char* method; int erk_order; int order; };
   for (const Case c : {Case{"arkode_erk", 4, 4}, Case{"arkode_erk", 3, 3},
-                       Case{"arkode_erk", 2, 2}, Case{"arkode_dirk", 4, 4}}) {
+                       Case{"arkode_erk", 2, 2}, Case{"arkode_dirk", 4, 4},
+                       Case{"odeint_bs3", 4, 3}}) {
     long n1 = 0, n2 = 0;
     const double e1 = fixed_step_error(c.method, c.erk_order, 5e-3, &n1);
     const double e2 = fixed_step_error(c.method, c.erk_order, 2.5e-3, &n2);
@@ -237,6 +249,66 @@ TEST(FixedStep, takes_the_given_step_and_converges_at_the_method_order) {
     EXPECT_GT(ratio, expected / kOrderBand) << c.method << " order " << c.erk_order;
     EXPECT_LT(ratio, expected * kOrderBand) << c.method << " order " << c.erk_order;
   }
+}
+
+TEST(FixedStep, odeint_bs3_interpolates_outputs_between_steps_at_the_method_order) {
+  // Outputs every 50 ms on steps of 3 ms and 1.5 ms fall inside steps and are read from the
+  // cubic Hermite interpolant (local error O(h^4)): the global error must still fall as h^3,
+  // within kOrderBand of 8 (measured 8.02); a linear interpolant (O(h^2)) would give ~4.
+  constexpr double kOrderBand = 1.1;
+  long n1 = 0, n2 = 0;
+  const double e1 = fixed_step_error("odeint_bs3", 4, 3e-3, &n1);
+  const double e2 = fixed_step_error("odeint_bs3", 4, 1.5e-3, &n2);
+  EXPECT_EQ(n1, 1667);  // 5 s / 3 ms, the last step past the end
+  EXPECT_EQ(n2, 3334);
+  EXPECT_GT(e1 / e2, 8.0 / kOrderBand);
+  EXPECT_LT(e1 / e2, 8.0 * kOrderBand);
+}
+
+/// Van der Pol's oscillator (mu = 1): nonlinear, so two integrators agree to round-off only if
+/// they evaluate the same formula.
+class VanDerPol final : public OdeSystem {
+ public:
+  std::size_t size() const override { return 2; }
+  int rhs(double, std::span<const double> x, std::span<double> xd) const override {
+    xd[0] = x[1];
+    xd[1] = (1.0 - x[0] * x[0]) * x[1] - x[0];
+    return kRhsOk;
+  }
+  std::vector<SignalInfo> state_info() const override { return {{"x", "-", ""}, {"v", "-", ""}}; }
+};
+
+TEST(FixedStep, odeint_bs3_is_the_formula_of_arkodes_order_3_method) {
+  // ARKODE's order-3 explicit method is Bogacki and Shampine's 3(2) pair, whose third-order
+  // solution odeint_bs3 computes: at the same fixed step the two runs must agree to round-off
+  // (measured 5e-13 over 2 000 steps, the operations grouped differently), while another
+  // order-3 formula differs by its truncation error: Heun's order-3 formula at the same 5 ms
+  // step by 9e-8 (Bogacki-Shampine's own error against a 1.25 ms step: 6e-7). kSameFormula
+  // lies 200x above the one and 900x below the other.
+  constexpr double kSameFormula = 1e-10;
+  VanDerPol sys;
+  const auto times = output_grid(0.0, 10.0, 0.05);
+  const std::vector<double> x0{2.0, 0.0};
+  std::vector<std::vector<double>> runs;
+  for (const char* method : {"odeint_bs3", "arkode_erk"}) {
+    IntegratorSettings s;
+    s.method = method;
+    s.erk_order = 3;
+    s.fixed_step = 5e-3;
+    std::vector<double> xs;
+    const auto r = make_integrator(s)->integrate(sys, x0, times, [&](double, std::span<const double> x) {
+      xs.push_back(x[0]);
+      xs.push_back(x[1]);
+      return true;
+    });
+    ASSERT_EQ(r.status, IntegrationResult::Status::kCompleted) << r.message;
+    runs.push_back(xs);
+  }
+  ASSERT_EQ(runs[0].size(), runs[1].size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < runs[0].size(); ++i)
+    worst = std::max(worst, std::abs(runs[0][i] - runs[1][i]));
+  EXPECT_LT(worst, kSameFormula);
 }
 
 /// Stiff and nonlinear, with a closed form: x' = -k x^2 (x = x0 / (1 + k x0 t), Jacobian -2 k x
@@ -337,16 +409,24 @@ TEST(RecoverableRhs, implicit_sundials_methods_retry_with_a_smaller_step) {
 // Explicit methods cannot recover (ARKODE's ERKStep by design, Odeint has no retry): they must
 // report the failure with its time instead of carrying on.
 TEST(RecoverableRhs, explicit_methods_report_it_as_a_failure) {
-  for (const char* method : {"arkode_erk", "odeint_dopri5"}) {
+  for (const char* method : {"arkode_erk", "odeint_dopri5", "odeint_bs3"}) {
     IntegratorSettings s;
     s.method = method;
     s.initial_step = 0.2;
+    if (std::string(method) == "odeint_bs3") s.fixed_step = 0.06;  // h rate 2.4: overshoots
     PositiveDecay sys;
     const std::vector<double> x0{1.0};
     const auto r = make_integrator(s)->integrate(
         sys, x0, output_grid(0.0, 0.5, 0.05), [](double, std::span<const double>) { return true; });
     EXPECT_EQ(r.status, IntegrationResult::Status::kSolverFailure) << method;
     EXPECT_NE(r.message.find("t = "), std::string::npos) << r.message;
+    if (std::string(method) == "odeint_bs3") {
+      // The failing step's start and state, and the cause, are reported.
+      EXPECT_NE(r.message.find("right-hand side returned 1"), std::string::npos) << r.message;
+      ASSERT_EQ(r.state.size(), 1u);
+      EXPECT_GE(r.state[0], 0.0) << r.message;
+      EXPECT_NEAR(std::fmod(r.t_reached + 1e-12, 0.06), 0.0, 1e-9) << r.message;
+    }
   }
 }
 

@@ -12,10 +12,15 @@
 namespace ferro::vehicle {
 
 const std::vector<std::string>& available_integrators() {
-  static const std::vector<std::string> kNames = {"cvode_bdf", "cvode_adams", "arkode_erk",
-                                                  "arkode_dirk", "odeint_dopri5",
-                                                  "odeint_rosenbrock4"};
+  static const std::vector<std::string> kNames = {"cvode_bdf",     "cvode_adams",
+                                                  "arkode_erk",    "arkode_dirk",
+                                                  "odeint_dopri5", "odeint_rosenbrock4",
+                                                  "odeint_bs3"};
   return kNames;
+}
+
+bool takes_fixed_step(const std::string& method) {
+  return method == "arkode_erk" || method == "arkode_dirk" || method == "odeint_bs3";
 }
 
 void IntegratorSettings::validate(const std::string& where) const {
@@ -62,10 +67,15 @@ void IntegratorSettings::validate(const std::string& where) const {
     throw std::invalid_argument(fmt::format(
         "{}.fixed_step: must be >= 0 s (0 = adaptive steps), got {}", where, fixed_step));
   }
-  if (fixed_step > 0.0 && method != "arkode_erk" && method != "arkode_dirk") {
+  if (fixed_step > 0.0 && !takes_fixed_step(method)) {
     throw std::invalid_argument(fmt::format(
-        "{}.fixed_step: only arkode_erk and arkode_dirk take a fixed step; {} needs 0, got {}",
+        "{}.fixed_step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} needs "
+        "0, got {}",
         where, method, fixed_step));
+  }
+  if (method == "odeint_bs3" && !(fixed_step > 0.0)) {
+    throw std::invalid_argument(fmt::format(
+        "{}.fixed_step: odeint_bs3 runs at a fixed step only; give a step > 0 s", where));
   }
   if (jacobian_max_steps < 1) {
     throw std::invalid_argument(fmt::format(

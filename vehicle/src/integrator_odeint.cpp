@@ -1,5 +1,14 @@
-// Boost.Odeint adapters: runge_kutta_dopri5 with dense output, and rosenbrock4 (linearly
-// implicit, 4th order) with a central-difference Jacobian of the system.
+// Boost.Odeint adapters: runge_kutta_dopri5 with dense output, rosenbrock4 (linearly
+// implicit, 4th order) with a central-difference Jacobian of the system, and odeint_bs3: the
+// order-3 Bogacki-Shampine formula at a fixed step with no error control, as Odeint's generic
+// explicit Runge-Kutta stepper.
+//
+// References: Bogacki & Shampine, "A 3(2) pair of Runge-Kutta formulas", Appl. Math. Lett. 2
+// (1989) 321-325: c = (0, 1/2, 3/4), a21 = 1/2, a31 = 0, a32 = 3/4, b = (2/9, 1/3, 4/9). The
+// pair's fourth stage (first same as last) serves only its embedded error estimate, which a
+// fixed step does not use, so a step takes 3 right-hand sides (the first one is the previous
+// step's end slope). Outputs between two steps are read from the cubic Hermite interpolant of
+// the step's end values and slopes (third order, as the method).
 //
 // Known deviations: Odeint has no notion of a recoverable right-hand-side error; a positive
 // return code from rhs() is reported as a solver failure (with time, state and cause) instead of
@@ -8,6 +17,9 @@
 
 #include <boost/numeric/odeint/integrate/integrate.hpp>
 #include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/array.hpp>
+#include <boost/fusion/include/make_vector.hpp>
+#include <boost/numeric/odeint/stepper/explicit_generic_rk.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
 #include <cmath>
 #include <stdexcept>
@@ -94,6 +106,100 @@ IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<
   return result;
 }
 
+// Runs the Bogacki-Shampine formula at the fixed step s.fixed_step from times.front(): step k
+// ends at t0 + k h exactly (no accumulated rounding), outputs on a step end take its state, the
+// others the cubic Hermite interpolant of the step they fall in.
+IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const double> x0,
+                                      const std::vector<double>& times, const Observer& observer,
+                                      const IntegratorSettings& s) {
+  using State = std::vector<double>;
+  using Bs3 = odeint::explicit_generic_rk<3, 3, State, double>;
+  const boost::array<double, 1> a1 = {{0.5}};
+  const boost::array<double, 2> a2 = {{0.0, 0.75}};
+  const Bs3::coef_a_type a = boost::fusion::make_vector(a1, a2);
+  const Bs3::coef_b_type b = {{2.0 / 9.0, 1.0 / 3.0, 4.0 / 9.0}};
+  const Bs3::coef_c_type c = {{0.0, 0.5, 0.75}};
+  Bs3 stepper(a, b, c);
+
+  IntegrationResult result;
+  const std::size_t n = system.size();
+  long rhs_count = 0;
+  auto sys = [&](const State& y, State& dydt, double t) {
+    ++rhs_count;
+    const int rc = system.rhs(t, y, dydt);
+    if (rc != kRhsOk) throw RhsFailure(rc, t);
+  };
+  State x(x0.begin(), x0.end()), x_next(n), f(n), f_next(n), out(n);
+  auto record = [&](double t, const State& state) {
+    result.t_reached = t;
+    result.state.assign(state.begin(), state.end());
+    return observer(t, result.state);
+  };
+  const double t0 = times.front();
+  const double h = s.fixed_step;
+  const double eps = 1e-9 * h;  // an output this close to a step end is on it
+  if (!record(t0, x)) {
+    result.status = IntegrationResult::Status::kInterrupted;
+    return result;
+  }
+  std::size_t next = 1;
+  while (next < times.size() && times[next] <= t0 + eps) ++next;
+  double t = t0;
+  long steps_since_output = 0;
+  try {
+    if (next < times.size()) sys(x, f, t);
+    while (next < times.size()) {
+      if (++steps_since_output > s.max_steps) {
+        throw StepLimit(fmt::format("more than max_steps = {} steps before output t = {:.9g} s",
+                                    s.max_steps, times[next]));
+      }
+      const double t_next = t0 + static_cast<double>(result.steps + 1) * h;
+      stepper.do_step(sys, x, f, t, x_next, h);
+      ++result.steps;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(x_next[i])) {
+          throw std::runtime_error(
+              fmt::format("state {} became non-finite at t = {:.9g} s", i, t_next));
+        }
+      }
+      // The end slope: the next step's first stage and the interpolant's second slope, needed
+      // unless this step ends the run on its last output.
+      const bool inside = times[next] < t_next - eps;
+      const bool more = times.back() > t_next + eps;
+      if (inside || more) sys(x_next, f_next, t_next);
+      for (; next < times.size() && times[next] <= t_next + eps; ++next) {
+        const double to = times[next];
+        if (to >= t_next - eps) {
+          out = x_next;
+        } else {
+          const double th = (to - t) / h, u = 1.0 - th;
+          const double h00 = (1.0 + 2.0 * th) * u * u, h10 = th * u * u * h;
+          const double h01 = th * th * (3.0 - 2.0 * th), h11 = -th * th * u * h;
+          for (std::size_t i = 0; i < n; ++i)
+            out[i] = h00 * x[i] + h10 * f[i] + h01 * x_next[i] + h11 * f_next[i];
+        }
+        if (!record(to, out)) {
+          result.status = IntegrationResult::Status::kInterrupted;
+          result.rhs_evaluations = rhs_count;
+          return result;
+        }
+        steps_since_output = 0;
+      }
+      x.swap(x_next);
+      f.swap(f_next);
+      t = t_next;
+    }
+  } catch (const std::exception& e) {
+    result.status = IntegrationResult::Status::kSolverFailure;
+    result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}", s.method, t,
+                                 result.t_reached, e.what());
+    result.t_reached = t;
+    result.state.assign(x.begin(), x.end());
+  }
+  result.rhs_evaluations = rhs_count;
+  return result;
+}
+
 class OdeintIntegrator final : public Integrator {
  public:
   explicit OdeintIntegrator(IntegratorSettings s) : s_(std::move(s)) {}
@@ -104,6 +210,7 @@ class OdeintIntegrator final : public Integrator {
     const std::size_t n = system.size();
     long rhs_count = 0;
     const double max_dt = std::isfinite(s_.max_step) ? s_.max_step : 0.0;
+    if (s_.method == "odeint_bs3") return bs3_fixed_step_loop(system, x0, times, observer, s_);
     if (s_.method == "odeint_dopri5") {
       using State = std::vector<double>;
       auto sys = [&](const State& x, State& dxdt, double t) {

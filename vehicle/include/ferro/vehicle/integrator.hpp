@@ -43,9 +43,10 @@ struct IntegratorSettings {
   /// Jacobian costs one right-hand side per state, 1000 takes 25-35 % of the CPU time off a
   /// run (docs/PERFORMANCE.md, "Jacobian age").
   long jacobian_max_steps = 1000;
-  /// arkode_erk / arkode_dirk: a constant step [s] with no error control (0: adaptive steps
-  /// under rtol / atol). The error is then the method's truncation error at that step, to be
-  /// measured against a tight-tolerance run (`ferrodyn bench work-precision --fixed-steps`).
+  /// arkode_erk / arkode_dirk / odeint_bs3 (which needs one): a constant step [s] with no
+  /// error control (0: adaptive steps under rtol / atol). The error is then the method's
+  /// truncation error at that step, to be measured against a tight-tolerance run
+  /// (`ferrodyn bench work-precision --integrators METHOD@STEP`).
   double fixed_step = 0.0;
 
   /// Throws std::invalid_argument naming the field and the allowed values.
@@ -54,6 +55,10 @@ struct IntegratorSettings {
 
 /// Names accepted in IntegratorSettings::method.
 [[nodiscard]] const std::vector<std::string>& available_integrators();
+
+/// Whether a method runs at IntegratorSettings::fixed_step (arkode_erk, arkode_dirk,
+/// odeint_bs3).
+[[nodiscard]] bool takes_fixed_step(const std::string& method);
 
 /// Called at every output time with the interpolated state; return false to stop the run
 /// (interruption). t is the output time.
