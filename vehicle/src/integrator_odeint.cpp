@@ -143,7 +143,12 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
     return result;
   }
   std::size_t next = 1;
-  while (next < times.size() && times[next] <= t0 + eps) ++next;
+  for (; next < times.size() && times[next] <= t0 + eps; ++next) {
+    if (!record(times[next], x)) {  // outputs at the start itself
+      result.status = IntegrationResult::Status::kInterrupted;
+      return result;
+    }
+  }
   double t = t0;
   long steps_since_output = 0;
   try {
