@@ -44,6 +44,16 @@ struct StepLimit : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Throws with the first non-finite state component of a step that ended at t.
+template <class V>
+void throw_if_not_finite(const V& x, double t) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) {
+      throw std::runtime_error(fmt::format("state {} became non-finite at t = {:.9g} s", i, t));
+    }
+  }
+}
+
 // Runs a dense-output stepper through the output times. State type V is std::vector<double> or
 // ublas::vector<double>.
 template <class Dense, class System, class V>
@@ -86,13 +96,7 @@ IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<
       }
       stepper.do_step(sys);
       ++result.steps;
-      const auto& xc = stepper.current_state();
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!std::isfinite(xc[i])) {
-          throw std::runtime_error(
-              fmt::format("state {} became non-finite at t = {:.9g} s", i, stepper.current_time()));
-        }
-      }
+      throw_if_not_finite(stepper.current_state(), stepper.current_time());
     }
   } catch (const std::exception& e) {
     result.status = IntegrationResult::Status::kSolverFailure;
@@ -161,12 +165,7 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
       const double t_next = t0 + static_cast<double>(result.steps + 1) * h;
       stepper.do_step(sys, x, f, t, x_next, h);
       ++result.steps;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!std::isfinite(x_next[i])) {
-          throw std::runtime_error(
-              fmt::format("state {} became non-finite at t = {:.9g} s", i, t_next));
-        }
-      }
+      throw_if_not_finite(x_next, t_next);
       // The end slope: the next step's first stage and the interpolant's second slope, needed
       // unless this step ends the run on its last output.
       const bool inside = times[next] < t_next - eps;
@@ -174,16 +173,15 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
       if (inside || more) sys(x_next, f_next, t_next);
       for (; next < times.size() && times[next] <= t_next + eps; ++next) {
         const double to = times[next];
-        if (to >= t_next - eps) {
-          out = x_next;
-        } else {
+        const bool on_step_end = to >= t_next - eps;
+        if (!on_step_end) {
           const double th = (to - t) / h, u = 1.0 - th;
           const double h00 = (1.0 + 2.0 * th) * u * u, h10 = th * u * u * h;
           const double h01 = th * th * (3.0 - 2.0 * th), h11 = -th * th * u * h;
           for (std::size_t i = 0; i < n; ++i)
             out[i] = h00 * x[i] + h10 * f[i] + h01 * x_next[i] + h11 * f_next[i];
         }
-        if (!record(to, out)) {
+        if (!record(to, on_step_end ? x_next : out)) {
           result.status = IntegrationResult::Status::kInterrupted;
           result.rhs_evaluations = rhs_count;
           return result;
