@@ -110,6 +110,35 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings) 
   return detail::make_odeint(settings);
 }
 
+namespace detail {
+
+StepMonitor::StepMonitor(const OdeSystem& system, const StopRequest& stop)
+    : system_(system), stop_(stop), bounds_(system.state_bounds()) {}
+
+std::string StepMonitor::divergence(double t, std::span<const double> x) const {
+  const auto name = [&](std::size_t i) {
+    const auto info = system_.state_info();
+    return i < info.size() ? info[i].name : fmt::format("{}", i);
+  };
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i]))
+      return fmt::format("state {} ({}) became non-finite at t = {:.9g} s", i, name(i), t);
+  }
+  for (const StateBound& b : bounds_) {
+    if (b.index < x.size() && !(std::abs(x[b.index]) <= b.limit)) {
+      const auto info = system_.state_info();
+      const std::string unit = b.index < info.size() ? info[b.index].unit : "";
+      return fmt::format(
+          "the solution diverged: {} = {:.6g} {} at t = {:.9g} s, beyond its bound +-{:.6g} {} "
+          "({})",
+          name(b.index), x[b.index], unit, t, b.limit, unit, b.reason);
+    }
+  }
+  return {};
+}
+
+}  // namespace detail
+
 std::vector<double> output_grid(double t0, double t_end, double dt) {
   if (!(dt > 0.0) || !(t_end >= t0) || !std::isfinite(t_end)) {
     throw std::invalid_argument(fmt::format(

@@ -44,14 +44,11 @@ struct StepLimit : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Throws with the first non-finite state component of a step that ended at t.
+// Throws the cause when the state of a step that ended at t fails the divergence guard.
 template <class V>
-void throw_if_not_finite(const V& x, double t) {
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i])) {
-      throw std::runtime_error(fmt::format("state {} became non-finite at t = {:.9g} s", i, t));
-    }
-  }
+void throw_if_diverged(const StepMonitor& monitor, const V& x, double t) {
+  std::string cause = monitor.divergence(t, std::span<const double>(&x[0], x.size()));
+  if (!cause.empty()) throw std::runtime_error(cause);
 }
 
 // Runs a dense-output stepper through the output times. State type V is std::vector<double> or
@@ -59,10 +56,12 @@ void throw_if_not_finite(const V& x, double t) {
 template <class Dense, class System, class V>
 IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<double>& times,
                              const Observer& observer, const IntegratorSettings& s,
-                             long& rhs_count) {
+                             long& rhs_count, const StepMonitor& monitor) {
   IntegrationResult result;
   const std::size_t n = x.size();
   auto record = [&](double t, const V& state) {
+    // The interpolant between two accepted steps may leave the bounds the step ends keep.
+    if (t != times.front()) throw_if_diverged(monitor, state, t);
     result.t_reached = t;
     result.state.assign(state.begin(), state.end());
     return observer(t, result.state);
@@ -96,8 +95,15 @@ IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<
       }
       stepper.do_step(sys);
       ++result.steps;
-      throw_if_not_finite(stepper.current_state(), stepper.current_time());
+      if (monitor.stop_requested()) throw StopRequested{};
+      throw_if_diverged(monitor, stepper.current_state(), stepper.current_time());
     }
+  } catch (const StopRequested&) {
+    // The stepper keeps the state of its last completed step.
+    result.status = IntegrationResult::Status::kInterrupted;
+    result.t_reached = stepper.current_time();
+    const auto& xc = stepper.current_state();
+    result.state.assign(xc.begin(), xc.end());
   } catch (const std::exception& e) {
     result.status = IntegrationResult::Status::kSolverFailure;
     result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}", s.method,
@@ -115,7 +121,7 @@ IntegrationResult dense_loop(Dense& stepper, System sys, V x, const std::vector<
 // others the cubic Hermite interpolant of the step they fall in.
 IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const double> x0,
                                       const std::vector<double>& times, const Observer& observer,
-                                      const IntegratorSettings& s) {
+                                      const IntegratorSettings& s, const StepMonitor& monitor) {
   using State = std::vector<double>;
   using Bs3 = odeint::explicit_generic_rk<3, 3, State, double>;
   const boost::array<double, 1> a1 = {{0.5}};
@@ -129,19 +135,23 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
   const std::size_t n = system.size();
   long rhs_count = 0;
   auto sys = [&](const State& y, State& dydt, double t) {
+    if (monitor.stop_requested()) throw StopRequested{};
     ++rhs_count;
     const int rc = system.rhs(t, y, dydt);
     if (rc != kRhsOk) throw RhsFailure(rc, t);
   };
   State x(x0.begin(), x0.end()), x_next(n), f(n), f_next(n), out(n);
+  const double t0 = times.front();
+  const double h = s.fixed_step;
+  const double eps = 1e-9 * h;  // an output this close to a step end is on it
   auto record = [&](double t, const State& state) {
+    // The interpolant between two steps may leave the bounds the step ends keep (the outputs
+    // at the start itself are the initial state).
+    if (t > t0 + eps) throw_if_diverged(monitor, state, t);
     result.t_reached = t;
     result.state.assign(state.begin(), state.end());
     return observer(t, result.state);
   };
-  const double t0 = times.front();
-  const double h = s.fixed_step;
-  const double eps = 1e-9 * h;  // an output this close to a step end is on it
   if (!record(t0, x)) {
     result.status = IntegrationResult::Status::kInterrupted;
     return result;
@@ -165,7 +175,7 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
       const double t_next = t0 + static_cast<double>(result.steps + 1) * h;
       stepper.do_step(sys, x, f, t, x_next, h);
       ++result.steps;
-      throw_if_not_finite(x_next, t_next);
+      throw_if_diverged(monitor, x_next, t_next);
       // The end slope: the next step's first stage and the interpolant's second slope, needed
       // unless this step ends the run on its last output.
       const bool inside = times[next] < t_next - eps;
@@ -191,7 +201,13 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
       x.swap(x_next);
       f.swap(f_next);
       t = t_next;
+      if (monitor.stop_requested()) throw StopRequested{};
     }
+  } catch (const StopRequested&) {
+    // x is the state at the end of the last completed step, t its time.
+    result.status = IntegrationResult::Status::kInterrupted;
+    result.t_reached = t;
+    result.state.assign(x.begin(), x.end());
   } catch (const std::exception& e) {
     result.status = IntegrationResult::Status::kSolverFailure;
     result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}", s.method, t,
@@ -213,21 +229,30 @@ class OdeintIntegrator final : public Integrator {
     const std::size_t n = system.size();
     long rhs_count = 0;
     const double max_dt = std::isfinite(s_.max_step) ? s_.max_step : 0.0;
-    if (s_.method == "odeint_bs3") return bs3_fixed_step_loop(system, x0, times, observer, s_);
+    const StepMonitor monitor(system, stop_);
+    if (s_.method == "odeint_bs3")
+      return bs3_fixed_step_loop(system, x0, times, observer, s_, monitor);
     if (s_.method == "odeint_dopri5") {
       using State = std::vector<double>;
       auto sys = [&](const State& x, State& dxdt, double t) {
+        if (monitor.stop_requested()) throw StopRequested{};
         ++rhs_count;
         const int rc = system.rhs(t, x, dxdt);
         if (rc != kRhsOk) throw RhsFailure(rc, t);
       };
       auto stepper =
           odeint::make_dense_output(s_.atol, s_.rtol, max_dt, odeint::runge_kutta_dopri5<State>());
-      return dense_loop(stepper, sys, State(x0.begin(), x0.end()), times, observer, s_, rhs_count);
+      return dense_loop(stepper, sys, State(x0.begin(), x0.end()), times, observer, s_, rhs_count,
+                        monitor);
     }
     // rosenbrock4 runs in a C++17 translation unit (see odeint_rosenbrock_raw.hpp).
     std::vector<double> fp(n), fm(n);
+    bool stopped = false;  // a stop request ended a right-hand side
     auto rhs = [&](double t, const double* x, double* xdot) {
+      if (monitor.stop_requested()) {
+        stopped = true;
+        return kRhsFatal;
+      }
       ++rhs_count;
       return system.rhs(t, std::span<const double>(x, n), std::span<double>(xdot, n));
     };
@@ -242,19 +267,32 @@ class OdeintIntegrator final : public Integrator {
       rhs_count += 2 * static_cast<long>(n) + 2;
       for (std::size_t i = 0; i < n; ++i) dfdt[i] = (fp[i] - fm[i]) / (2.0 * ht);
     };
+    std::string output_divergence;  // an interpolated output beyond the bounds
     auto observe = [&](double t, const double* x) {
+      if (t != times.front()) {
+        output_divergence = monitor.divergence(t, std::span<const double>(x, n));
+        if (!output_divergence.empty()) return false;
+      }
       return observer(t, std::span<const double>(x, n));
+    };
+    auto check_step = [&](double t, const double* x) {
+      return monitor.divergence(t, std::span<const double>(x, n));
     };
     const RawSettings raw{s_.rtol, s_.atol, max_dt, s_.initial_step, s_.max_steps};
     RawResult r = rosenbrock4_run(n, std::vector<double>(x0.begin(), x0.end()), times, raw, rhs,
-                                  jac, observe);
+                                  jac, observe, check_step);
     IntegrationResult result;
     result.status = r.status == 0   ? IntegrationResult::Status::kCompleted
-                    : r.status == 1 ? IntegrationResult::Status::kInterrupted
-                                    : IntegrationResult::Status::kSolverFailure;
+                    : r.status == 1 || stopped ? IntegrationResult::Status::kInterrupted
+                                               : IntegrationResult::Status::kSolverFailure;
     result.t_reached = r.t_reached;
     result.state = std::move(r.state);
-    result.message = std::move(r.message);
+    if (!stopped) result.message = std::move(r.message);
+    if (!output_divergence.empty()) {
+      result.status = IntegrationResult::Status::kSolverFailure;
+      result.message = fmt::format("odeint_rosenbrock4 at output t = {:.9g} s: {}", r.t_reached,
+                                   output_divergence);
+    }
     result.steps = r.steps;
     result.rhs_evaluations = rhs_count;
     return result;

@@ -28,12 +28,19 @@ namespace {
 
 struct UserData {
   const OdeSystem* system = nullptr;
+  const StepMonitor* monitor = nullptr;
   long rhs_evaluations = 0;
+  bool stopped = false;    // a stop request ended a right-hand side
+  std::string method;      // the integrator's name, for messages
   std::string last_error;  // from the SUNDIALS error handler or a caught exception
 };
 
 int sundials_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   auto* ud = static_cast<UserData*>(user_data);
+  if (ud->monitor->stop_requested()) {
+    ud->stopped = true;  // the solver gives up the step; run_loop reports the interruption
+    return kRhsFatal;
+  }
   const auto n = static_cast<std::size_t>(N_VGetLength(y));
   ++ud->rhs_evaluations;
   try {
@@ -57,6 +64,7 @@ void error_handler(int error_code, const char* module, const char* function, cha
 struct Handles {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
+  N_Vector out = nullptr;  // interpolated output state
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   SUNNonlinearSolver NLS = nullptr;
@@ -76,6 +84,7 @@ struct Handles {
     if (NLS != nullptr) SUNNonlinSolFree(NLS);
     if (LS != nullptr) SUNLinSolFree(LS);
     if (A != nullptr) SUNMatDestroy(A);
+    if (out != nullptr) N_VDestroy(out);
     if (y != nullptr) N_VDestroy(y);
     if (ctx != nullptr) SUNContext_Free(&ctx);
   }
@@ -205,39 +214,92 @@ IntegrationResult with_counts(IntegrationResult result, Handles& h, const UserDa
   return result;
 }
 
-// The output loop, shared by CVODE and ARKODE. `step_to` advances to tout and returns the flag;
+// The output loop, shared by CVODE and ARKODE: one step at a time (`step_one` takes one internal
+// step towards tout and returns the flag), so that every accepted step passes the StepMonitor
+// (stop request, divergence guard); each output is interpolated at its time by `get_dky` (the
+// package's GetDky), which gives the same steps and outputs as the packages' own NORMAL mode.
 // `current` returns the solver's internal time and state for failure reports.
-template <class StepTo, class Current, class FlagName>
+template <class StepOne, class GetDky, class Current, class FlagName>
 IntegrationResult run_loop(Handles& h, UserData& ud, const std::vector<double>& times,
-                           const Observer& observer, StepTo step_to, Current current,
-                           FlagName flag_name) {
+                           const Observer& observer, long max_steps, StepOne step_one,
+                           GetDky get_dky, Current current, FlagName flag_name) {
+  constexpr int kTooMuchWork = -1;  // CV_TOO_MUCH_WORK, ARK_TOO_MUCH_WORK
   IntegrationResult result;
   const auto n = static_cast<std::size_t>(N_VGetLength(h.y));
-  double* yp = N_VGetArrayPointer(h.y);
+  const double* yp = N_VGetArrayPointer(h.y);
+  h.out = N_VClone(h.y);
+  const double* outp = N_VGetArrayPointer(h.out);
   result.t_reached = times.front();
   result.state.assign(yp, yp + n);
   if (!observer(times.front(), result.state)) {
     result.status = IntegrationResult::Status::kInterrupted;
     return result;
   }
+  // Ends the run at the last completed step (time t_step, state in y).
+  const auto stop_at_step = [&](double t_step, IntegrationResult::Status status,
+                                std::string message) {
+    result.status = status;
+    result.message = std::move(message);
+    result.t_reached = t_step;
+    result.state.assign(yp, yp + n);
+    return result;
+  };
+  double t_step = times.front();  // end of the last accepted step
   for (std::size_t i = 1; i < times.size(); ++i) {
-    double t = 0.0;
-    const int flag = step_to(times[i], &t);
+    const double tout = times[i];
+    for (long steps = 0; t_step < tout; ++steps) {
+      const double last_output = result.t_reached;
+      if (steps >= max_steps) {
+        return stop_at_step(
+            t_step, IntegrationResult::Status::kSolverFailure,
+            fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): more than max_steps = {} "
+                        "steps before output t = {:.9g} s",
+                        flag_name(kTooMuchWork), t_step, last_output, max_steps, tout));
+      }
+      const int flag = step_one(tout, &t_step);
+      if (flag < 0) {
+        double t_cur = t_step;
+        std::vector<double> y_cur(yp, yp + n);
+        current(&t_cur, y_cur);
+        result.status = ud.stopped ? IntegrationResult::Status::kInterrupted
+                                   : IntegrationResult::Status::kSolverFailure;
+        if (!ud.stopped) {
+          result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
+                                       flag_name(flag), t_cur, last_output,
+                                       ud.last_error.empty() ? "no detail" : ud.last_error);
+        }
+        result.t_reached = t_cur;
+        result.state = std::move(y_cur);
+        return result;
+      }
+      if (ud.monitor->stop_requested())
+        return stop_at_step(t_step, IntegrationResult::Status::kInterrupted, {});
+      std::string cause = ud.monitor->divergence(t_step, std::span<const double>(yp, n));
+      if (!cause.empty()) {
+        return stop_at_step(t_step, IntegrationResult::Status::kSolverFailure,
+                            fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
+                                        ud.method, t_step, last_output, cause));
+      }
+    }
+    const int flag = get_dky(h.mem, tout, 0, h.out);
     if (flag < 0) {
-      double t_cur = result.t_reached;
-      std::vector<double> y_cur = result.state;
-      current(&t_cur, y_cur);
+      return stop_at_step(t_step, IntegrationResult::Status::kSolverFailure,
+                          fmt::format("{} interpolating the output t = {:.9g} s", flag_name(flag),
+                                      tout));
+    }
+    // The interpolant between two accepted steps may leave the bounds the step ends keep.
+    std::string cause = ud.monitor->divergence(tout, std::span<const double>(outp, n));
+    if (!cause.empty()) {
       result.status = IntegrationResult::Status::kSolverFailure;
-      result.message =
-          fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}", flag_name(flag), t_cur,
-                      result.t_reached, ud.last_error.empty() ? "no detail" : ud.last_error);
-      result.t_reached = t_cur;
-      result.state = std::move(y_cur);
+      result.message = fmt::format("{} at output t = {:.9g} s (last output t = {:.9g} s): {}",
+                                   ud.method, tout, result.t_reached, cause);
+      result.t_reached = tout;
+      result.state.assign(outp, outp + n);
       return result;
     }
-    result.t_reached = t;
-    result.state.assign(yp, yp + n);
-    if (!observer(t, result.state)) {
+    result.t_reached = tout;
+    result.state.assign(outp, outp + n);
+    if (!observer(tout, result.state)) {
       result.status = IntegrationResult::Status::kInterrupted;
       return result;
     }
@@ -253,7 +315,11 @@ class CvodeIntegrator final : public Integrator {
   IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
                               const std::vector<double>& times, const Observer& observer) override {
     Handles h;
-    UserData ud{&system, 0, {}};
+    const StepMonitor monitor(system, stop_);
+    UserData ud;
+    ud.system = &system;
+    ud.monitor = &monitor;
+    ud.method = s_.method;
     const auto n = static_cast<sunindextype>(system.size());
     check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
     h.y = N_VNew_Serial(n, h.ctx);
@@ -285,9 +351,9 @@ class CvodeIntegrator final : public Integrator {
     }
     return with_counts(
         run_loop(
-            h, ud, times, observer,
-            [&](double tout, double* t) { return CVode(h.mem, tout, h.y, t, CV_NORMAL); },
-            state_reader(h, CVodeGetCurrentTime, CVodeGetDky),
+            h, ud, times, observer, s_.max_steps,
+            [&](double tout, double* t) { return CVode(h.mem, tout, h.y, t, CV_ONE_STEP); },
+            CVodeGetDky, state_reader(h, CVodeGetCurrentTime, CVodeGetDky),
             [](int flag) { return owned_flag_name(CVodeGetReturnFlagName(flag)); }),
         h, ud, CVodeGetNumSteps);
   }
@@ -305,7 +371,11 @@ class ArkodeErkIntegrator final : public Integrator {
                               const std::vector<double>& times, const Observer& observer) override {
     Handles h;
     h.arkode = true;
-    UserData ud{&system, 0, {}};
+    const StepMonitor monitor(system, stop_);
+    UserData ud;
+    ud.system = &system;
+    ud.monitor = &monitor;
+    ud.method = s_.method;
     const auto n = static_cast<sunindextype>(system.size());
     check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
     h.y = N_VNew_Serial(n, h.ctx);
@@ -324,9 +394,11 @@ class ArkodeErkIntegrator final : public Integrator {
     if (s_.fixed_step > 0.0) check(ERKStepSetFixedStep(h.mem, s_.fixed_step), "ERKStepSetFixedStep");
     return with_counts(
         run_loop(
-            h, ud, times, observer,
-            [&](double tout, double* t) { return ERKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
-            state_reader(h, ERKStepGetCurrentTime, ERKStepGetDky),
+            h, ud, times, observer, s_.max_steps,
+            [&](double tout, double* t) {
+              return ERKStepEvolve(h.mem, tout, h.y, t, ARK_ONE_STEP);
+            },
+            ERKStepGetDky, state_reader(h, ERKStepGetCurrentTime, ERKStepGetDky),
             [](int flag) { return owned_flag_name(ERKStepGetReturnFlagName(flag)); }),
         h, ud, ERKStepGetNumSteps);
   }
@@ -351,7 +423,11 @@ class ArkodeDirkIntegrator final : public Integrator {
     Handles h;
     h.arkode = true;
     h.arkstep = true;
-    UserData ud{&system, 0, {}};
+    const StepMonitor monitor(system, stop_);
+    UserData ud;
+    ud.system = &system;
+    ud.monitor = &monitor;
+    ud.method = s_.method;
     const auto n = static_cast<sunindextype>(system.size());
     check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
     h.y = N_VNew_Serial(n, h.ctx);
@@ -384,9 +460,11 @@ class ArkodeDirkIntegrator final : public Integrator {
     check(ARKStepSetPredictorMethod(h.mem, 1), "ARKStepSetPredictorMethod");
     return with_counts(
         run_loop(
-            h, ud, times, observer,
-            [&](double tout, double* t) { return ARKStepEvolve(h.mem, tout, h.y, t, ARK_NORMAL); },
-            state_reader(h, ARKStepGetCurrentTime, ARKStepGetDky),
+            h, ud, times, observer, s_.max_steps,
+            [&](double tout, double* t) {
+              return ARKStepEvolve(h.mem, tout, h.y, t, ARK_ONE_STEP);
+            },
+            ARKStepGetDky, state_reader(h, ARKStepGetCurrentTime, ARKStepGetDky),
             [](int flag) { return owned_flag_name(ARKStepGetReturnFlagName(flag)); }),
         h, ud, ARKStepGetNumSteps);
   }

@@ -15,7 +15,8 @@ RawResult rosenbrock4_run(std::size_t n, const std::vector<double>& x0,
                           const std::vector<double>& times, const RawSettings& s,
                           const std::function<int(double, const double*, double*)>& rhs,
                           const std::function<void(double, const double*, double*, double*)>& jac,
-                          const std::function<bool(double, const double*)>& observe) {
+                          const std::function<bool(double, const double*)>& observe,
+                          const std::function<std::string(double, const double*)>& check_step) {
   using State = boost::numeric::ublas::vector<double>;
   using Matrix = boost::numeric::ublas::matrix<double>;
   RawResult result;
@@ -79,13 +80,9 @@ RawResult rosenbrock4_run(std::size_t n, const std::vector<double>& x0,
       stepper.do_step(std::make_pair(sys, jacobian));
       ++result.steps;
       const auto& xc = stepper.current_state();
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!std::isfinite(xc[i])) {
-          std::ostringstream msg;
-          msg << "state " << i << " became non-finite at t = " << stepper.current_time() << " s";
-          throw std::runtime_error(msg.str());
-        }
-      }
+      std::copy(xc.begin(), xc.end(), xs.begin());
+      const std::string cause = check_step(stepper.current_time(), xs.data());
+      if (!cause.empty()) throw std::runtime_error(cause);
     }
   } catch (const std::exception& e) {
     std::ostringstream msg;

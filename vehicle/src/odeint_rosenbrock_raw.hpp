@@ -22,11 +22,13 @@ struct RawResult {
 };
 
 // rhs(t, x, xdot) returns the OdeSystem code; jac(t, x, J row-major, dfdt) throws on failure;
-// observe(t, x) returns false to stop.
+// observe(t, x) returns false to stop; check_step(t, x) after every step returns the cause of a
+// divergence (empty: the state is acceptable).
 RawResult rosenbrock4_run(std::size_t n, const std::vector<double>& x0,
                           const std::vector<double>& times, const RawSettings& settings,
                           const std::function<int(double, const double*, double*)>& rhs,
                           const std::function<void(double, const double*, double*, double*)>& jac,
-                          const std::function<bool(double, const double*)>& observe);
+                          const std::function<bool(double, const double*)>& observe,
+                          const std::function<std::string(double, const double*)>& check_step);
 
 }  // namespace ferro::vehicle::detail

@@ -7,6 +7,12 @@
 // retries with a smaller step; ARKODE's explicit ERKStep and Odeint cannot retry and report a
 // solver failure at that time; < 0 fatal -- every integrator stops and reports time, state and
 // cause.
+//
+// After every accepted step each integrator checks the state (the divergence guard): a
+// non-finite state, or one beyond the system's state_bounds(), stops the run as a solver
+// failure naming the state, its value, the bound and the time. A stop request
+// (Integrator::set_stop_request) is polled before every right-hand side and after every step:
+// the run then ends as an interruption at its last completed step.
 
 #include <functional>
 #include <limits>
@@ -67,7 +73,9 @@ using Observer = std::function<bool(double t, std::span<const double> x)>;
 struct IntegrationResult {
   enum class Status { kCompleted, kInterrupted, kSolverFailure };
   Status status = Status::kCompleted;
-  double t_reached = 0.0;     ///< last time with a valid state [s]
+  /// Last time with a valid state [s]: the last output time, or for an interruption or a
+  /// failure between outputs, the end of the last completed step.
+  double t_reached = 0.0;
   std::vector<double> state;  ///< state at t_reached
   std::string message;        ///< cause of a failure, empty otherwise
   long steps = 0;             ///< internal steps taken
@@ -76,9 +84,16 @@ struct IntegrationResult {
 
 [[nodiscard]] std::string to_string(IntegrationResult::Status status);
 
+/// Polled by an integrator before every right-hand side and after every step; true stops the
+/// integration at once. Must be cheap (e.g. an atomic load).
+using StopRequest = std::function<bool()>;
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
+  /// From now on integrate() polls `stop`: once it returns true, integrate() returns
+  /// kInterrupted with the state of the last completed step (t_reached: that step's end).
+  void set_stop_request(StopRequest stop) { stop_ = std::move(stop); }
   [[nodiscard]] virtual std::string name() const = 0;
   /// Integrates from (output_times.front(), x0) through every output time, calling `observer`
   /// at each (including the first). Never throws for solver trouble: the result says what
@@ -86,6 +101,9 @@ class Integrator {
   virtual IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
                                       const std::vector<double>& output_times,
                                       const Observer& observer) = 0;
+
+ protected:
+  StopRequest stop_;  ///< empty: never stop early
 };
 
 /// Factory from settings; throws std::invalid_argument for an unknown method.

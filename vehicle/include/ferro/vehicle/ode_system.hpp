@@ -15,6 +15,15 @@ inline constexpr int kRhsOk = 0;
 inline constexpr int kRhsRecoverable = 1;
 inline constexpr int kRhsFatal = -1;
 
+/// A bound |x[index]| <= limit that the state of a physical solution never leaves, derived from
+/// the model's geometry (e.g. a wheelset's lateral displacement far beyond its flange
+/// clearance): a state beyond it means the integration has diverged.
+struct StateBound {
+  std::size_t index = 0;
+  double limit = 0.0;  ///< [state unit]
+  std::string reason;  ///< what lies beyond, e.g. "the flange has crossed the rail head"
+};
+
 /// A named output signal with its SI unit.
 struct SignalInfo {
   std::string name;
@@ -40,6 +49,10 @@ class OdeSystem {
   /// Optional half-bandwidths of the Jacobian (upper, lower) for banded linear solvers;
   /// {-1, -1} when unknown (dense).
   [[nodiscard]] virtual std::pair<int, int> jacobian_bandwidth() const { return {-1, -1}; }
+  /// Bounds no physical state leaves (the integrators' divergence guard: after every step each
+  /// state must be finite and within them, or the run stops as a solver failure naming the
+  /// state). Empty: finiteness only.
+  [[nodiscard]] virtual std::vector<StateBound> state_bounds() const { return {}; }
 };
 
 /// Central-difference Jacobian J = df/dx at (t, x), row-major size() x size(). Step per state:

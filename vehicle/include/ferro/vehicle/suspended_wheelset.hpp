@@ -71,6 +71,8 @@ class SuspendedWheelset final : public OdeSystem {
   [[nodiscard]] std::vector<SignalInfo> state_info() const override;
   [[nodiscard]] std::vector<SignalInfo> signal_info() const override;
   void signals(double t, std::span<const double> x, std::span<double> out) const override;
+  /// |y| within the half gauge, |psi| within 0.5 rad (state_bounds.cpp).
+  [[nodiscard]] std::vector<StateBound> state_bounds() const override;
 
   [[nodiscard]] double speed() const { return speed_; }
   [[nodiscard]] const SuspendedWheelsetParams& params() const { return p_; }

@@ -137,6 +137,9 @@ class VehicleModel final : public OdeSystem {
   /// Half-bandwidths from the coupling structure (suspension elements, contact) and the state
   /// order.
   [[nodiscard]] std::pair<int, int> jacobian_bandwidth() const override;
+  /// Wheelset displacements within twice the flangeway, other bodies' displacements within
+  /// half the track gauge, every body angle within 0.5 rad (state_bounds.cpp).
+  [[nodiscard]] std::vector<StateBound> state_bounds() const override;
 
   /// Every body at its rest position, velocities and internal states zero.
   [[nodiscard]] std::vector<double> rest_state() const;
