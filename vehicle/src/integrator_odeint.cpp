@@ -175,7 +175,16 @@ IntegrationResult bs3_fixed_step_loop(const OdeSystem& system, std::span<const d
       const double t_next = t0 + static_cast<double>(result.steps + 1) * h;
       stepper.do_step(sys, x, f, t, x_next, h);
       ++result.steps;
-      throw_if_diverged(monitor, x_next, t_next);
+      // A step that leaves the bounds ends the run with the offending state.
+      if (std::string cause = monitor.divergence(t_next, x_next); !cause.empty()) {
+        result.status = IntegrationResult::Status::kSolverFailure;
+        result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
+                                     s.method, t_next, result.t_reached, cause);
+        result.t_reached = t_next;
+        result.state = x_next;
+        result.rhs_evaluations = rhs_count;
+        return result;
+      }
       // The end slope: the next step's first stage and the interpolant's second slope, needed
       // unless this step ends the run on its last output.
       const bool inside = times[next] < t_next - eps;

@@ -235,57 +235,60 @@ IntegrationResult run_loop(Handles& h, UserData& ud, const std::vector<double>& 
     result.status = IntegrationResult::Status::kInterrupted;
     return result;
   }
-  // Ends the run at the last completed step (time t_step, state in y).
-  const auto stop_at_step = [&](double t_step, IntegrationResult::Status status,
-                                std::string message) {
+  double t_step = times.front();                 // end of the last accepted step
+  std::vector<double> y_step(yp, yp + n);        // and the state there
+  // Ends the run at time t with the state in y (the step that just ended, or one that failed).
+  const auto stop_at = [&](double t, const double* y, IntegrationResult::Status status,
+                           std::string message) {
     result.status = status;
     result.message = std::move(message);
-    result.t_reached = t_step;
-    result.state.assign(yp, yp + n);
+    result.t_reached = t;
+    result.state.assign(y, y + n);
     return result;
   };
-  double t_step = times.front();  // end of the last accepted step
   for (std::size_t i = 1; i < times.size(); ++i) {
     const double tout = times[i];
     for (long steps = 0; t_step < tout; ++steps) {
       const double last_output = result.t_reached;
       if (steps >= max_steps) {
-        return stop_at_step(
-            t_step, IntegrationResult::Status::kSolverFailure,
+        return stop_at(
+            t_step, y_step.data(), IntegrationResult::Status::kSolverFailure,
             fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): more than max_steps = {} "
                         "steps before output t = {:.9g} s",
                         flag_name(kTooMuchWork), t_step, last_output, max_steps, tout));
       }
-      const int flag = step_one(tout, &t_step);
+      double t_new = t_step;
+      const int flag = step_one(tout, &t_new);
       if (flag < 0) {
-        double t_cur = t_step;
-        std::vector<double> y_cur(yp, yp + n);
-        current(&t_cur, y_cur);
-        result.status = ud.stopped ? IntegrationResult::Status::kInterrupted
-                                   : IntegrationResult::Status::kSolverFailure;
-        if (!ud.stopped) {
-          result.message = fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
-                                       flag_name(flag), t_cur, last_output,
-                                       ud.last_error.empty() ? "no detail" : ud.last_error);
+        // The run ends at the last accepted step; the message gives where the solver was.
+        if (ud.stopped) {
+          return stop_at(t_step, y_step.data(), IntegrationResult::Status::kInterrupted, {});
         }
-        result.t_reached = t_cur;
-        result.state = std::move(y_cur);
-        return result;
+        double t_cur = t_step;
+        std::vector<double> y_cur = y_step;
+        current(&t_cur, y_cur);
+        return stop_at(t_step, y_step.data(), IntegrationResult::Status::kSolverFailure,
+                       fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
+                                   flag_name(flag), t_cur, last_output,
+                                   ud.last_error.empty() ? "no detail" : ud.last_error));
       }
-      if (ud.monitor->stop_requested())
-        return stop_at_step(t_step, IntegrationResult::Status::kInterrupted, {});
-      std::string cause = ud.monitor->divergence(t_step, std::span<const double>(yp, n));
+      // A step that leaves the bounds ends the run with the offending state.
+      std::string cause = ud.monitor->divergence(t_new, std::span<const double>(yp, n));
       if (!cause.empty()) {
-        return stop_at_step(t_step, IntegrationResult::Status::kSolverFailure,
-                            fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
-                                        ud.method, t_step, last_output, cause));
+        return stop_at(t_new, yp, IntegrationResult::Status::kSolverFailure,
+                       fmt::format("{} at t = {:.9g} s (last output t = {:.9g} s): {}",
+                                   ud.method, t_new, last_output, cause));
       }
+      t_step = t_new;
+      y_step.assign(yp, yp + n);
+      if (ud.monitor->stop_requested())
+        return stop_at(t_step, y_step.data(), IntegrationResult::Status::kInterrupted, {});
     }
     const int flag = get_dky(h.mem, tout, 0, h.out);
     if (flag < 0) {
-      return stop_at_step(t_step, IntegrationResult::Status::kSolverFailure,
-                          fmt::format("{} interpolating the output t = {:.9g} s", flag_name(flag),
-                                      tout));
+      return stop_at(t_step, y_step.data(), IntegrationResult::Status::kSolverFailure,
+                     fmt::format("{} interpolating the output t = {:.9g} s", flag_name(flag),
+                                 tout));
     }
     // The interpolant between two accepted steps may leave the bounds the step ends keep.
     std::string cause = ud.monitor->divergence(tout, std::span<const double>(outp, n));
