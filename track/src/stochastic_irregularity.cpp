@@ -73,6 +73,17 @@ void StochasticIrregularitySpec::validate(const std::string& where) const {
     throw std::invalid_argument(
         fmt::format("{}.channels: at least one of lateral, vertical, cross_level, gauge", where));
   }
+  // The grid of the inverse FFT covers the length and the longest wavelength (checked in
+  // floating point before any node count is formed).
+  const double spacing = std::isnan(grid_spacing) ? wavelength_min / 20.0 : grid_spacing;
+  const double nodes = std::max(length, wavelength_max) / spacing;
+  if (!(nodes <= static_cast<double>(kMaxGridNodes))) {
+    throw std::invalid_argument(fmt::format(
+        "{}.{}: {} m at a grid spacing of {} m needs {:.3g} nodes, more than 2^27 = {}; shorten "
+        "it or raise wavelength_min",
+        where, length >= wavelength_max ? "length" : "wavelength_max",
+        std::max(length, wavelength_max), spacing, nodes, kMaxGridNodes));
+  }
 }
 
 StochasticIrregularity::StochasticIrregularity(const StochasticIrregularitySpec& spec)
@@ -82,13 +93,8 @@ StochasticIrregularity::StochasticIrregularity(const StochasticIrregularitySpec&
       std::isnan(spec_.grid_spacing) ? spec_.wavelength_min / 20.0 : spec_.grid_spacing;
   // Period covers the length and the longest wavelength; node count a power of two.
   const double min_period = std::max(spec_.length, spec_.wavelength_max);
-  std::size_t n = 16;
-  while (static_cast<double>(n) * wanted < min_period) n *= 2;
-  if (n > (std::size_t{1} << 27)) {
-    throw std::invalid_argument(
-        fmt::format("stochastic.length: {} m at a grid spacing of {} m needs more than 2^27 nodes",
-                    spec_.length, wanted));
-  }
+  std::size_t n = 16;  // validate() bounds min_period / wanted by kMaxGridNodes
+  while (static_cast<double>(n) * wanted < min_period && n < kMaxGridNodes) n *= 2;
   spacing_ = wanted;
   period_ = static_cast<double>(n) * spacing_;
   const double d_omega = kTwoPi / period_;

@@ -19,6 +19,7 @@
 // same track on every standard library.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -28,6 +29,9 @@
 #include "ferro/track/spectra.hpp"
 
 namespace ferro::track {
+
+/// Most nodes of the inverse-FFT grid of a realisation (2^27: 1 GiB per channel of doubles).
+inline constexpr std::size_t kMaxGridNodes = std::size_t{1} << 27;
 
 struct StochasticIrregularitySpec {
   TrackSpectrum spectrum = TrackSpectrum::kErriLow;
