@@ -6,17 +6,25 @@ python3-h5py. Called by `ferrodyn run`, `ferrodyn eig` and `ferrodyn plot`; usab
   ferroplot.py eigen OUT_eig.h5 --out DIR
   ferroplot.py auto FILE.h5 ...      (picks by the file's 'kind' attribute)
 
-Exit status: 0 ok, 2 bad input (unknown signal, unreadable file), 1 other failure.
+Exit status: 0 ok, 2 bad input (unknown signal, unreadable file), 3 python3-matplotlib or
+python3-h5py missing, 1 other failure (e.g. a folder that cannot be written).
 """
 import argparse
 import os
+import signal
 import sys
 
-import h5py
-import matplotlib
+# SIGINT and SIGTERM end the script at once, as they would any plain program.
+signal.signal(signal.SIGINT, signal.SIG_DFL)
+try:
+    import h5py
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+except ImportError as e:
+    print(f"ferroplot: needs python3-matplotlib and python3-h5py: {e}", file=sys.stderr)
+    sys.exit(3)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import analysis_plot  # noqa: E402
@@ -119,4 +127,8 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except OSError as e:
+        print(f"ferroplot: cannot write the plots: {e}", file=sys.stderr)
+        sys.exit(1)

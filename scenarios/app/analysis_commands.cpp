@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <mutex>
 
 #include "cli.hpp"
@@ -17,6 +19,7 @@
 #include "ferro/scenarios/analysis/output.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "terminal.hpp"
@@ -37,16 +40,30 @@ std::string sibling(const std::string& file, const std::string& suffix) {
   return (p.parent_path() / (p.stem().string() + suffix)).string();
 }
 
-void plot(const std::string& h5, bool no_plots) {
-  if (no_plots) return;
+// Draws the plots of an analysis' output; returns the verb's exit code (`code` unless a stop
+// request ended the plotting).
+int plot(const std::string& h5, bool no_plots, int code) {
+  if (no_plots) return code;
   std::fflush(stdout);  // the report before the script's list of files
   const std::string dir = sibling(h5, "_plots");
-  if (scenarios::run_python_tool("ferroplot.py", {"auto", h5, "--out", dir, "--format", "png,svg"}) ==
-      0) {
+  const int rc = scenarios::run_python_tool("ferroplot.py",
+                                            {"auto", h5, "--out", dir, "--format", "png,svg"},
+                                            [] { return InterruptGuard::stop_now(); });
+  if (rc == scenarios::kProgramStopped) return 128 + InterruptGuard::signal_received();
+  if (rc == 0) {
     fmt::print("  plots     {}/\n", dir);
+  } else if (rc == kPlotsNeedPython) {
+    fmt::print(stderr,
+               "ferrodyn: warning: no plots: python3 with matplotlib and h5py needed; the "
+               "results in {} are complete\n",
+               h5);
   } else {
-    fmt::print(stderr, "ferrodyn: warning: plotting failed; the results in {} are complete\n", h5);
+    fmt::print(stderr,
+               "ferrodyn: warning: plotting failed (exit status {}, see above); the results in {} "
+               "are complete\n",
+               rc, h5);
   }
+  return code;
 }
 
 void positive(double v, const char* option) {
@@ -54,11 +71,26 @@ void positive(double v, const char* option) {
     throw std::invalid_argument(fmt::format("{}: must be > 0, got {}", option, v));
 }
 
+// The output of an analysis, claimed before it computes (refused paths are refused at once):
+// `given` from -o, else `fallback`; the scene's (or run file's) inputs are never written.
+struct AnalysisOutput {
+  scenarios::OutputSet set;
+  scenarios::OutputFile* file = nullptr;
+  AnalysisOutput(const std::string& given, const std::string& fallback, bool overwrite,
+                 std::vector<std::string> inputs, bool no_plots)
+      : set({overwrite, std::move(inputs)}) {
+    file = &set.claim(given.empty() ? fallback : given, given.empty() ? "output" : "-o");
+    if (!no_plots) check_plot_folder(sibling(file->path(), "_plots"), "plots");
+  }
+  [[nodiscard]] const std::string& path() const { return file->path(); }
+  [[nodiscard]] const std::string& write_path() const { return file->write_path(); }
+};
+
 // ---------------------------------------------------------------- derailment
 struct DerailArgs {
   std::string file, output;
-  double mu = 0.36, flange_angle_deg = -1.0, q0 = -1.0, window = 2.0, step = 0.5;
-  bool no_plots = false;
+  double mu = 0.36, flange_angle_deg = NAN, q0 = NAN, window = 2.0, step = 0.5;  // NaN: not given
+  bool no_plots = false, overwrite = false;
 };
 
 int do_derailment(const DerailArgs& a) {
@@ -67,16 +99,14 @@ int do_derailment(const DerailArgs& a) {
   an::DerailmentOptions o;
   if (!(a.mu >= 0.0 && a.mu < 2.0)) throw std::invalid_argument("--mu: allowed [0, 2)");
   o.mu = a.mu;
-  if (a.flange_angle_deg > 0.0) {
-    if (!(a.flange_angle_deg < 90.0))
-      throw std::invalid_argument("--flange-angle-deg: allowed (0, 90)");
-    o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
-  }
-  o.wheel_load_static = a.q0;
+  if (!std::isnan(a.flange_angle_deg)) o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
+  o.wheel_load_static = std::isnan(a.q0) ? -1.0 : a.q0;  // < 0: the first sample
   positive(a.window, "--window");
   positive(a.step, "--step");
   o.window = a.window;
   o.step = a.step;
+  AnalysisOutput out(a.output, sibling(a.file, "_derailment.h5"), a.overwrite, {a.file},
+                     a.no_plots);
   const auto r = an::assess_derailment_file(a.file, o);
   fmt::print("ferrodyn derailment: {} (mu = {}, {} m sliding mean every {} m)\n", a.file, o.mu,
              o.window, o.step);
@@ -95,11 +125,11 @@ int do_derailment(const DerailArgs& a) {
                x.max_sum_y_position, x.limit / 1e3, x.axle_load / 1e3, x.pass ? "pass" : "FAIL");
   }
   fmt::print("  verdict   {}\n", r.pass ? "pass" : "FAIL");
-  const std::string out = a.output.empty() ? sibling(a.file, "_derailment.h5") : a.output;
-  an::write_derailment_report(r, a.file, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
-  return kExitOk;  // the verdict is a result, not a failure of the assessment
+  an::write_derailment_report(r, a.file, out.write_path());
+  out.file->commit();
+  fmt::print("  output    {}\n", out.path());
+  // The verdict is a result, not a failure of the assessment.
+  return plot(out.path(), a.no_plots, kExitOk);
 }
 
 // ---------------------------------------------------------------- settle options
@@ -155,7 +185,7 @@ struct RampArgs {
   std::string scene, output;
   double speed_initial = 110.0, deceleration = 1.0, speed_final = NAN, hold = 0.1,
          threshold = 1e-4, max_amplitude = 0.05, window = 2.0, interval = 2e-3, disturbance = 0.01, k11 = 1.0, k22 = 1.0;
-  bool no_plots = false;
+  bool no_plots = false, overwrite = false;
 };
 
 int do_ramp(const RampArgs& a) {
@@ -178,6 +208,8 @@ int do_ramp(const RampArgs& a) {
   o.envelope_window = a.window;
   o.output_interval = a.interval;
   o.solver = scene.solver;
+  AnalysisOutput out(a.output, sibling(scene.output.file, "_ramp.h5"), a.overwrite,
+                     scenarios::scene_inputs(scene), a.no_plots);
   const auto family = an::speed_family(scene);
   const auto probe = family(o.speed_initial);
   const auto lateral = an::lateral_states(*probe);
@@ -214,11 +246,14 @@ int do_ramp(const RampArgs& a) {
         "  growth    none: the envelope is largest in its first window (the disturbance "
         "decays or settles)\n");
   }
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
-  an::write_ramp(scene, r, o, lateral.name.front(), out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
-  return r.completed ? kExitOk : kExitRunFailure;
+  an::write_ramp(scene, r, o, lateral.name.front(), out.write_path());
+  out.file->commit();
+  fmt::print("  output    {}\n", out.path());
+  if (!r.completed) {
+    std::fflush(stdout);
+    fmt::print(stderr, "ferrodyn: failure: the ramp stopped before its end: {}\n", r.message);
+  }
+  return plot(out.path(), a.no_plots, r.completed ? kExitOk : kExitRunFailure);
 }
 
 // ---------------------------------------------------------------- bifurcation
@@ -226,7 +261,7 @@ struct BranchArgs {
   std::string scene, output;
   double speed_max = NAN, speed_min = NAN, step = 2.0, bracket = 0.1;
   SettleArgs settle;
-  bool no_plots = false, no_hopf = false;
+  bool no_plots = false, no_hopf = false, overwrite = false;
 };
 
 an::BranchOptions branch_options(const Scene& scene, const BranchArgs& a) {
@@ -317,6 +352,9 @@ void print_branch(const an::KijRow& row, const std::vector<std::string>& names) 
 
 int do_branch(const BranchArgs& a) {
   const Scene scene = scenarios::load_scene(a.scene);
+  (void)branch_options(scene, a);  // validate before starting
+  AnalysisOutput out(a.output, sibling(scene.output.file, "_bifurcation.h5"), a.overwrite,
+                     scenarios::scene_inputs(scene), a.no_plots);
   fmt::print("ferrodyn critical-speed bifurcation: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.settle.k11, a.settle.k22);
   std::vector<std::string> names;
@@ -324,12 +362,10 @@ int do_branch(const BranchArgs& a) {
       run_branch(scene, a, {a.settle.k11, a.settle.k22}, !a.no_hopf, &names, true);
   print_branch(row, names);
   const Scene reduced = an::with_reduction(scene, row.k);
-  const std::string out =
-      a.output.empty() ? sibling(scene.output.file, "_bifurcation.h5") : a.output;
-  an::write_branch(reduced, row.branch, names, row.hopf_speed, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
-  return kExitOk;
+  an::write_branch(reduced, row.branch, names, row.hopf_speed, out.write_path());
+  out.file->commit();
+  fmt::print("  output    {}\n", out.path());
+  return plot(out.path(), a.no_plots, kExitOk);
 }
 
 // ---------------------------------------------------------------- eigen
@@ -339,7 +375,7 @@ struct EigenArgs {
   int points = 150;
   double k11 = 1.0, k22 = 1.0;
   std::string output;
-  bool no_plots = false;
+  bool no_plots = false, overwrite = false;
 };
 
 int do_eigen(const EigenArgs& a) {
@@ -349,6 +385,8 @@ int do_eigen(const EigenArgs& a) {
   scene.eigen.speed_min = a.speed_min;
   scene.eigen.speed_max = a.speed_max;
   scene.eigen.points = a.points;
+  AnalysisOutput out(a.output, sibling(scene.output.file, "_eig.h5"), a.overwrite,
+                     scenarios::scene_inputs(scene), a.no_plots);
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.k11, a.k22);
@@ -358,11 +396,10 @@ int do_eigen(const EigenArgs& a) {
   } else {
     fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", a.speed_min, a.speed_max);
   }
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_eig.h5") : a.output;
-  scenarios::write_eigen_report(scene, r, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
-  return kExitOk;
+  scenarios::write_eigen_report(scene, r, out.write_path());
+  out.file->commit();
+  fmt::print("  output    {}\n", out.path());
+  return plot(out.path(), a.no_plots, kExitOk);
 }
 
 // ---------------------------------------------------------------- K_ij study
@@ -388,10 +425,11 @@ int do_kij(const KijArgs& a) {
     ks.push_back(r);
   }
   (void)branch_options(scene, a.branch);  // validate before starting
+  AnalysisOutput out(a.branch.output, sibling(scene.output.file, "_kij.h5"), a.branch.overwrite,
+                     scenarios::scene_inputs(scene), a.branch.no_plots);
   std::vector<an::KijRow> rows(ks.size());
   std::vector<std::string> names;
   std::mutex m;
-  InterruptGuard guard;
   std::size_t done = 0;
   an::parallel_for(
       ks.size(),
@@ -430,12 +468,10 @@ int do_kij(const KijArgs& a) {
   }
   if (std::abs(a.k.front() - 1.0) > 1e-12)
     fmt::print("  (ratios are to the first K in the list, {})\n", a.k.front());
-  const std::string out =
-      a.branch.output.empty() ? sibling(scene.output.file, "_kij.h5") : a.branch.output;
-  an::write_kij_study(scene, rows, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.branch.no_plots);
-  return kExitOk;
+  an::write_kij_study(scene, rows, out.write_path());
+  out.file->commit();
+  fmt::print("  output    {}\n", out.path());
+  return plot(out.path(), a.branch.no_plots, kExitOk);
 }
 
 // ---------------------------------------------------------------- sweep
@@ -447,8 +483,8 @@ struct SweepArgs {
   std::string coefficient = "both";
   SettleArgs settle;
   int jobs = 1;
-  int max_new_points = -1;
-  bool restart = false, quiet = false, no_plots = false;
+  int max_new_points = -1;  // -1: no limit
+  bool restart = false, quiet = false, no_plots = false, overwrite = false;
 };
 
 struct MpiContext {
@@ -542,6 +578,12 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
       points.push_back({v, r});
     }
   }
+  // Rank 0 writes the output: claimed before any point is computed.
+  std::optional<AnalysisOutput> output;
+  if (mpi.rank == 0) {
+    output.emplace(a.output, sibling(scene.output.file, "_sweep.h5"), a.overwrite,
+                   scenarios::scene_inputs(scene), a.no_plots);
+  }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_sweep.h5") : a.output;
   const std::string journal_dir = out + ".points";
   // Everything that changes the numbers identifies the sweep.
@@ -579,7 +621,6 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   std::size_t done = 0;
   an::PoolOptions pool;
   pool.jobs = a.jobs;
-  InterruptGuard guard;
   pool.should_stop = [] { return InterruptGuard::signal_received() != 0; };
   pool.on_done = [&](const an::SweepPointResult& r) {
     journal->record(r);
@@ -636,7 +677,8 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   }
   const auto probe = scenarios::build_system(scene, points.front().speed);
   const auto names = an::lateral_states(*probe).name;
-  an::write_sweep(scene, names, results, out);
+  an::write_sweep(scene, names, results, output->write_path());
+  output->file->commit();
   fs::remove_all(journal_dir);  // complete: the HDF5 file holds every point
   fmt::print("ferrodyn sweep: {} ({}), {} points, {} rank(s) x {} thread(s)\n", scene.name,
              scene.path, points.size(), mpi.size, a.jobs);
@@ -649,8 +691,7 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   }
   fmt::print("  wall      {:.2f} s this invocation; CPU {:.2f} s over all points\n", wall, cpu);
   fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
-  return kExitOk;
+  return plot(out, a.no_plots, kExitOk);
 }
 
 int do_sweep(const SweepArgs& a) {
@@ -689,14 +730,23 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   auto* der = app.add_subcommand(
       "derailment", "Derailment assessment of a run: Y/Q (2 m mean), Nadal, sum Y, dQ/Q0, plot");
   der->add_option("run", d->file, "HDF5 output of `ferrodyn run`")->required();
-  der->add_option("--mu", d->mu, "Friction coefficient in Nadal's formula")->capture_default_str();
+  der->add_option("--mu", d->mu, "Friction coefficient in Nadal's formula")
+      ->check(number_in(0.0, 2.0, false, true, ""))
+      ->capture_default_str();
   der->add_option("--flange-angle-deg", d->flange_angle_deg,
-                  "Flange angle [deg] (default: largest contact angle of each wheel)");
-  der->add_option("--q0", d->q0, "Static wheel load Q0 [N] (default: first sample)");
-  der->add_option("--window", d->window, "Sliding-mean window [m]")->capture_default_str();
-  der->add_option("--step", d->step, "Sliding-mean sampling step [m]")->capture_default_str();
+                  "Flange angle [deg] (default: largest contact angle of each wheel)")
+      ->check(number_in(0.0, 90.0, true, true, "deg"));
+  der->add_option("--q0", d->q0, "Static wheel load Q0 [N] (default: first sample)")
+      ->check(number_in(0.0, INFINITY, true, true, "N"));
+  der->add_option("--window", d->window, "Sliding-mean window [m]")
+      ->check(number_in(0.0, INFINITY, true, true, "m"))
+      ->capture_default_str();
+  der->add_option("--step", d->step, "Sliding-mean sampling step [m]")
+      ->check(number_in(0.0, INFINITY, true, true, "m"))
+      ->capture_default_str();
   der->add_option("-o,--output", d->output, "Report file (default: <run>_derailment.h5)");
   der->add_flag("--no-plots", d->no_plots, "Do not draw plots");
+  add_overwrite_flag(der, d->overwrite);
   der->callback([&handler, d] { handler = [d] { return do_derailment(*d); }; });
 
   auto* cs = app.add_subcommand("critical-speed", "Critical speed: ramp, bifurcation, eigen");
@@ -720,6 +770,7 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   ramp->add_option("--k22", r->k22, "Reduction factor on C22")->capture_default_str();
   ramp->add_option("-o,--output", r->output, "HDF5 output (default: <output.file stem>_ramp.h5)");
   ramp->add_flag("--no-plots", r->no_plots, "Do not draw plots");
+  add_overwrite_flag(ramp, r->overwrite);
   ramp->callback([&handler, r] { handler = [r] { return do_ramp(*r); }; });
 
   auto b = std::make_shared<BranchArgs>();
@@ -735,6 +786,7 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
                   "HDF5 output (default: <output.file stem>_bifurcation.h5)");
   bif->add_flag("--no-hopf", b->no_hopf, "Skip the eigenvalue (Hopf) speed");
   bif->add_flag("--no-plots", b->no_plots, "Do not draw plots");
+  add_overwrite_flag(bif, b->overwrite);
   bif->callback([&handler, b] { handler = [b] { return do_branch(*b); }; });
 
   auto e = std::make_shared<EigenArgs>();
@@ -742,11 +794,14 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("scene", e->scene, "Scene YAML file")->required();
   eig->add_option("--speed-min", e->speed_min, "[m/s]")->capture_default_str();
   eig->add_option("--speed-max", e->speed_max, "[m/s]")->capture_default_str();
-  eig->add_option("--points", e->points, "Speeds in the sweep")->capture_default_str();
+  eig->add_option("--points", e->points, "Speeds in the sweep")
+      ->check(count_in(2, scenarios::kMaxEigenPoints))
+      ->capture_default_str();
   eig->add_option("--k11", e->k11, "Reduction factor on C11")->capture_default_str();
   eig->add_option("--k22", e->k22, "Reduction factor on C22")->capture_default_str();
   eig->add_option("-o,--output", e->output, "HDF5 output (default: <output.file stem>_eig.h5)");
   eig->add_flag("--no-plots", e->no_plots, "Do not draw plots");
+  add_overwrite_flag(eig, e->overwrite);
   eig->callback([&handler, e] { handler = [e] { return do_eigen(*e); }; });
 
   auto k = std::make_shared<KijArgs>();
@@ -760,10 +815,13 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   kij->add_option("--step", k->branch.step, "Downward speed step [m/s]")->capture_default_str();
   kij->add_option("--bracket", k->branch.bracket, "Fold bracket width [m/s]")->capture_default_str();
   add_settle_options(kij, k->branch.settle);
-  kij->add_option("-j,--jobs", k->jobs, "Worker threads (one K per thread)")->capture_default_str();
+  kij->add_option("-j,--jobs", k->jobs, "Worker threads (one K per thread)")
+      ->check(count_in(1, kMaxJobs))
+      ->capture_default_str();
   kij->add_option("-o,--output", k->branch.output, "HDF5 output (default: <stem>_kij.h5)");
   kij->add_flag("--no-hopf", k->branch.no_hopf, "Skip the eigenvalue (Hopf) speeds");
   kij->add_flag("--no-plots", k->branch.no_plots, "Do not draw plots");
+  add_overwrite_flag(kij, k->branch.overwrite);
   kij->callback([&handler, k] { handler = [k] { return do_kij(*k); }; });
 
   auto s = std::make_shared<SweepArgs>();
@@ -773,19 +831,25 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   sw->add_option("scene", s->scene, "Scene YAML file")->required();
   sw->add_option("--speed-min", s->speed_min, "[m/s]")->required();
   sw->add_option("--speed-max", s->speed_max, "[m/s]")->required();
-  sw->add_option("--points", s->points, "Speeds between min and max")->capture_default_str();
+  sw->add_option("--points", s->points, "Speeds between min and max")
+      ->check(count_in(1, scenarios::kMaxEigenPoints))
+      ->capture_default_str();
   add_k_options(sw, s->k, s->coefficient);
   add_settle_options(sw, s->settle);
-  sw->add_option("-j,--jobs", s->jobs, "Worker threads per process")->capture_default_str();
+  sw->add_option("-j,--jobs", s->jobs, "Worker threads per process")
+      ->check(count_in(1, kMaxJobs))
+      ->capture_default_str();
   sw->add_option("-o,--output", s->output,
                  "HDF5 output (default: <output.file stem>_sweep.h5); finished points are kept "
                  "in <output>.points/ until the sweep completes");
   sw->add_option("--max-new-points", s->max_new_points,
                  "Compute at most this many new points per process, then stop (resumable; for "
-                 "batch-queue time limits)");
+                 "batch-queue time limits)")
+      ->check(count_in(0, std::numeric_limits<int>::max()));
   sw->add_flag("--restart", s->restart, "Forget finished points and start over");
   sw->add_flag("-q,--quiet", s->quiet, "No progress display");
   sw->add_flag("--no-plots", s->no_plots, "Do not draw plots");
+  add_overwrite_flag(sw, s->overwrite);
   sw->callback([&handler, s] { handler = [s] { return do_sweep(*s); }; });
 }
 

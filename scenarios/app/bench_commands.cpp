@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/scene.hpp"
@@ -128,6 +129,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
     double t_end = NAN, speed = NAN;
     std::string tangential;
     scenarios::WorkPrecisionOptions options;
+    bool overwrite = false;
   };
   auto wp = std::make_shared<WpArgs>();
   CLI::App* work = bench->add_subcommand(
@@ -137,6 +139,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       "of the integration, steps; names the cheapest setting within --target-error");
   work->add_option("scene", wp->scene, "Scene YAML file")->required();
   add_output_option(work, wp->output, "CSV file of the table (default: none)");
+  add_overwrite_flag(work, wp->overwrite);
   work->add_option("--t-end", wp->t_end, "Override simulation.t_end [s]");
   work->add_option("--speed", wp->speed, "Override simulation.speed [m/s]");
   work->add_option("--tangential", wp->tangential, "Override the tangential contact model");
@@ -177,6 +180,9 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
             scene, wp->options.settle + scene.simulation.t_end);
         if (!problem.empty()) throw std::invalid_argument(fmt::format("--settle: {}", problem));
       }
+      scenarios::OutputSet outputs({wp->overwrite, scenarios::scene_inputs(scene)});
+      scenarios::OutputFile* table =
+          wp->output.empty() ? nullptr : &outputs.claim(wp->output, "-o");
       const scenarios::WorkPrecisionReport r = scenarios::run_work_precision(scene, wp->options);
       fmt::print("work-precision: {} ({} s simulated at {} m/s); model setup {:.3f} CPU-s\n",
                  scene.name, r.t_end, scene.simulation.speed, r.setup_cpu_seconds);
@@ -214,8 +220,9 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       } else {
         fmt::print("no setting met {} error {:.1e}\n", r.metric, wp->options.target_error);
       }
-      if (!wp->output.empty()) {
-        scenarios::write_work_precision_csv(r, wp->output);
+      if (table != nullptr) {
+        scenarios::write_work_precision_csv(r, table->write_path());
+        table->commit();
         fmt::print("wrote {}\n", wp->output);
       }
       return kExitOk;

@@ -13,6 +13,7 @@
 namespace CLI {
 class App;
 class Option;
+class Validator;
 }
 
 namespace ferro::scenarios {
@@ -42,6 +43,27 @@ CLI::Option* add_output_option(CLI::App* cmd, std::string& target, const std::st
 /// The switch that skips pictures: --no-plots.
 void add_no_plots_flag(CLI::App* cmd, bool& target,
                        const std::vector<std::string>& old_names = {});
+/// The switch that lets a verb replace existing output files: --overwrite.
+void add_overwrite_flag(CLI::App* cmd, bool& target);
+
+// Strict option values. strict_values() gives every option of `app` and its subcommands the
+// checks that hold for all: a number option takes one whole finite number (no "nan", "inf",
+// "", "1x"), a text option a non-empty text. Options whose values have a range add it with
+// number_in() / count_in(); the message names the option, the allowed range and the value.
+void strict_values(CLI::App& app);
+/// A finite number within lo..hi (an infinite end: no bound on that side), ends open or closed.
+[[nodiscard]] CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open,
+                                       const std::string& unit);
+/// A whole number in lo..hi.
+[[nodiscard]] CLI::Validator count_in(long lo, long hi);
+
+/// Throws std::invalid_argument ("<what>: cannot write the plots in ...") unless files can be
+/// created in the folder `dir` (made for the test and removed again when missing).
+void check_plot_folder(const std::string& dir, const std::string& what);
+/// Most worker threads a verb takes (-j).
+inline constexpr long kMaxJobs = 1024;
+/// Exit status of the plotting scripts when python3-matplotlib or python3-h5py is missing.
+inline constexpr int kPlotsNeedPython = 3;
 /// A hidden alias of an option that takes a value.
 template <class T>
 void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target);

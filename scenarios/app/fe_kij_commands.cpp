@@ -21,7 +21,9 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "ferro/contact/mim/mim.hpp"
 #include "ferro/fe_contact/kij_sweep.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 #include "terminal.hpp"
@@ -83,7 +85,16 @@ FeKijConfig read_config(const std::string& path) {
     s.contact.normal_force = c.number_or("normal_force", s.contact.reference_force);
     s.contact.body = contact::Material::from_young(c.number("young_modulus"), c.number("poisson"));
     s.contact.friction = c.number("friction");
-    s.contact.elements_minor = static_cast<int>(c.integer_or("elements_minor", 24));
+    const long elements = c.integer_or("elements_minor", 24);
+    // Work bounded up front: the MIM grid of the largest patch of the sweep.
+    const int most = contact::mim::max_elements_minor(s.contact.reference_semi_axis_x,
+                                                      s.contact.reference_semi_axis_y);
+    if (elements < 8 || elements > most) {
+      c.fail("elements_minor",
+             fmt::format("must lie in 8..{} (MIM grids are capped at 2^18 elements), got {}",
+                         most, elements));
+    }
+    s.contact.elements_minor = static_cast<int>(elements);
     s.contact.margin = c.number_or("margin", 0.15);
     c.finish();
   }
@@ -136,7 +147,29 @@ FeKijConfig read_config(const std::string& path) {
   cfg.output = fs::path(out).is_absolute() ? out : (fs::path(path).parent_path() / out).string();
   cfg.plots = top.boolean_or("plots", true);
   top.finish();
-  s.validate(path);
+  // The spec's own checks, located at the key they name ("<section>.<key>: ...").
+  try {
+    s.validate("");
+  } catch (const scenarios::YamlInputError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    const auto colon = msg.find(": ");
+    std::string field = colon == std::string::npos ? std::string() : msg.substr(0, colon);
+    if (!field.empty() && field.front() == '.') field.erase(0, 1);
+    const auto dot = field.find('.');
+    std::string section = field.substr(0, dot);
+    if (section == "slope") section = "solver";
+    if (section == "curve_creepages") section = "curves";
+    const std::string key = dot == std::string::npos ? std::string() : field.substr(dot + 1);
+    const std::string text = colon == std::string::npos ? msg : msg.substr(colon + 2);
+    if (top.has(section) && top.yaml()[section].IsMap()) {
+      MapReader part = top.map(section);
+      const std::string leaf = key.substr(0, key.find_first_of(".["));
+      part.fail(!leaf.empty() && part.has(leaf) ? leaf : std::string(), text);
+    }
+    top.fail(top.has(section) ? section : std::string(), text);
+  }
   return cfg;
 }
 
@@ -234,9 +267,13 @@ void write_curves(const fs::path& dir, std::size_t i, const std::vector<double>&
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write creep curves", dir.string()));
 }
 
-int run_fe_kij(const std::string& config_path, bool restart) {
+int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
   const FeKijConfig cfg = read_config(config_path);
   const fe_contact::KijSweepSpec& spec = cfg.spec;
+  // The table is claimed before anything is computed: a path that would be refused is refused
+  // now, not after hours of finite elements.
+  scenarios::OutputSet outputs({overwrite, {config_path}});
+  scenarios::OutputFile& table_file = outputs.claim(cfg.output, "output");
   const fs::path work = cfg.output + ".d";
   if (restart && fs::exists(work)) fs::remove_all(work);
   fs::create_directories(work);
@@ -251,7 +288,6 @@ int run_fe_kij(const std::string& config_path, bool restart) {
     resumed += done[i] ? 1 : 0;
   }
   fmt::print("fe-kij: {} configurations ({} already done in {})\n", n, resumed, work.string());
-  InterruptGuard guard;
   Progress progress(static_cast<double>(n), stderr);
   const std::clock_t cpu0 = std::clock();
   const auto t0 = std::chrono::steady_clock::now();
@@ -344,7 +380,8 @@ int run_fe_kij(const std::string& config_path, bool restart) {
   prov["probe_spin_times_a"] = fmt::format("{:g}", spec.slope.probe_spin_times_a);
   if (!plastic) prov["range"] = "single-valued (elastic layer; no first-pass/shakedown range)";
   const contact::KijTable table = fe_contact::make_table(spec, k, prov, first_pass);
-  table.write_hdf5(cfg.output);
+  table.write_hdf5(table_file.write_path());
+  table_file.commit();
   fmt::print("fe-kij: wrote {} ({} configurations; this run {:.2f} s CPU, {:.1f} s wall)\n",
              cfg.output, n, cpu, wall);
   if (cfg.plots && !spec.curve_creepages.empty()) {
@@ -363,6 +400,7 @@ int run_fe_kij(const std::string& config_path, bool restart) {
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
   auto config = std::make_shared<std::string>();
   auto restart = std::make_shared<bool>(false);
+  auto overwrite = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand(
       "fe-kij",
       "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load, "
@@ -370,8 +408,9 @@ void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
       "an interrupted run");
   cmd->add_option("config", *config, "CONFIG.yaml")->required();
   cmd->add_flag("--restart", *restart, "discard the finished points of a previous run");
-  cmd->callback([&handler, config, restart] {
-    handler = [config, restart] { return run_fe_kij(*config, *restart); };
+  add_overwrite_flag(cmd, *overwrite);
+  cmd->callback([&handler, config, restart, overwrite] {
+    handler = [config, restart, overwrite] { return run_fe_kij(*config, *restart, *overwrite); };
   });
 }
 

@@ -32,6 +32,7 @@
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 #include "ferro/contact/io/text_writer.hpp"
 #include "ferro/scenarios/csv_batch.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
 
@@ -49,7 +50,16 @@ struct PairOptions {  // SI
   double section_step = 0.5e-3;
 };
 
+// Finer wheel sections than this resolve nothing the profiles' 0.05 mm grid does not, and cost
+// memory and time in proportion [m].
+constexpr double kFinestSectionStep = 1e-5;
+
 fc::WheelRailPair make_pair(const PairOptions& o) {
+  if (!(o.section_step >= kFinestSectionStep)) {
+    throw std::invalid_argument(fmt::format(
+        "--section-step: must be >= {} m (the profiles are resampled every 0.05 mm), got {}",
+        kFinestSectionStep, o.section_step));
+  }
   fc::WheelRailPairParams p;
   p.track_gauge = o.gauge;
   p.gauge_depth = o.gauge_depth;
@@ -152,7 +162,8 @@ std::string result_json(const fc::WheelRailPair& pair, const PoseResult& r) {
 }
 
 int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
-              const std::string& out_path, const PoseInput& defaults, double estar) {
+              const std::string& out_path, const PoseInput& defaults, double estar,
+              bool overwrite) {
   std::ifstream in(in_path);
   if (!in) throw std::invalid_argument(fmt::format("--batch: cannot open '{}'", in_path));
   scenarios::CsvBatchReader reader(in, in_path);
@@ -178,8 +189,14 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
         "header needs a 'y' [m] or 'y_mm' column (known: y, roll, yaw, height, load in SI; y_mm, "
         "roll_rad, yaw_rad, height_mm, load_n; other columns are copied to the output)"));
   }
+  std::optional<scenarios::OutputSet> outputs;
+  scenarios::OutputFile* claimed = nullptr;
+  if (out_path != "-") {
+    outputs.emplace(scenarios::OutputRules{overwrite, {in_path}});
+    claimed = &outputs->claim(out_path, "-o");
+  }
   std::optional<io::TextWriter> out_file;
-  if (out_path != "-") out_file.emplace(out_path);
+  if (claimed != nullptr) out_file.emplace(claimed->write_path());
   std::ostringstream out;  // one output row at a time
   const auto emit = [&] {
     if (out_file) {
@@ -208,7 +225,10 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
     for (const auto& p : r.points) out << echo << solved << point_csv(pair, r.pose, p) << "\n";
     emit();
   }
-  if (out_file) out_file->close();
+  if (out_file) {
+    out_file->close();
+    claimed->commit();
+  }
   std::cout.flush();
   return kExitOk;
 }
@@ -391,7 +411,9 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   add_output_option(search, *out, "batch output CSV ('-' = stdout)", {"--out"})
       ->capture_default_str();
 
-  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson, aliases] {
+  auto overwrite = std::make_shared<bool>(false);
+  add_overwrite_flag(search, *overwrite);
+  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson, aliases, overwrite] {
     for (const Alias& a : *aliases) {
       if (std::isnan(a.value)) continue;
       if (a.si->count() > 0) {
@@ -402,12 +424,12 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
     if (!std::isnan(pin->height) && !std::isnan(pin->load)) {
       throw CLI::ValidationError("--height", "give --height or --load, not both");
     }
-    handler = [po, pin, batch, out, shear, shear_mpa, poisson] {
+    handler = [po, pin, batch, out, shear, shear_mpa, poisson, overwrite] {
       const double g = std::isnan(*shear_mpa) ? *shear : *shear_mpa * 1e6;
       const double e = 2.0 * g * (1.0 + *poisson);
       const double estar = e / (2.0 * (1.0 - (*poisson) * (*poisson)));
       const fc::WheelRailPair pair = make_pair(*po);
-      if (!batch->empty()) return run_batch(pair, *batch, *out, *pin, estar);
+      if (!batch->empty()) return run_batch(pair, *batch, *out, *pin, estar, *overwrite);
       fmt::print("{}", result_json(pair, solve_pose(pair, *pin, estar)));
       return kExitOk;
     };

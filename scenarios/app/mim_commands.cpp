@@ -12,6 +12,7 @@
 
 #include "ferro/contact/mim/mim.hpp"
 #include "cli.hpp"
+#include "ferro/scenarios/output_file.hpp"
 
 namespace ferro::cli {
 
@@ -32,6 +33,7 @@ struct MimArgs {
   double poisson = 0.28;
   int elements = 40;
   std::string out;
+  bool overwrite = false;
 };
 
 // The value given under the SI name, else under the old non-SI one (scaled), else an error.
@@ -73,6 +75,8 @@ int run_mim(const MimArgs& args) {
     }
     throw std::invalid_argument(msg);
   }
+  scenarios::OutputSet outputs({args.overwrite, {}});
+  scenarios::OutputFile* fields = args.out.empty() ? nullptr : &outputs.claim(args.out, "-o");
   const auto t0 = std::chrono::steady_clock::now();
   const contact::mim::MimResult r = contact::mim::solve_hertz_rolling(in);
   const double ms =
@@ -93,8 +97,9 @@ int run_mim(const MimArgs& args) {
   if (r.patch_truncated) {
     fmt::print("warning: the pressure reaches the grid boundary (patch truncated)\n");
   }
-  if (!args.out.empty()) {
-    contact::mim::write_hdf5(r, args.out);
+  if (fields != nullptr) {
+    contact::mim::write_hdf5(r, fields->write_path());
+    fields->commit();
     fmt::print("fields written to {}\n", args.out);
   }
   return r.converged ? kExitOk : kExitRunFailure;
@@ -117,6 +122,7 @@ void add_mim_commands(CLI::App& app, VerbHandler& handler) {
     cmd->add_option("--elements", args->elements, "elements across the shorter axis (40)");
     add_output_option(cmd, args->out, "HDF5 file for the pressure, traction, slip fields",
                       {"--out"});
+    add_overwrite_flag(cmd, args->overwrite);
     add_hidden_alias(cmd, "--a-mm", args->a_mm);
     add_hidden_alias(cmd, "--b-mm", args->b_mm);
     add_hidden_alias(cmd, "--young-gpa", args->young_gpa);

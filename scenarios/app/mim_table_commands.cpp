@@ -17,6 +17,7 @@
 #include "ferro/contact/mim_table.hpp"
 #include "cli.hpp"
 #include "ferro/contact/io/text_writer.hpp"
+#include "ferro/scenarios/output_file.hpp"
 
 namespace ferro::cli {
 
@@ -45,12 +46,14 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
       ->capture_default_str();
   auto map_path = std::make_shared<std::string>();
   auto map_points = std::make_shared<int>(200);
+  auto overwrite = std::make_shared<bool>(false);
+  add_overwrite_flag(cmd, *overwrite);
   cmd->add_option("--error-map", *map_path,
                   "CSV of table-versus-direct MIM errors at random points (empty: none)");
   cmd->add_option("--error-map-points", *map_points, "points of the error map")
       ->capture_default_str();
-  cmd->callback([&handler, out, spec, map_path, map_points] {
-    handler = [out, spec, map_path, map_points] {
+  cmd->callback([&handler, out, spec, map_path, map_points, overwrite] {
+    handler = [out, spec, map_path, map_points, overwrite] {
       try {
         spec->validate();
       } catch (const std::invalid_argument& e) {
@@ -71,9 +74,15 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
             fmt::format("--error-map-points: must be >= 1, got {}", *map_points));
       }
       if (out->empty()) throw std::invalid_argument("contact mim-table: -o/--output is required");
+      // Claimed before the (long) build: a path that would be refused is refused now.
+      scenarios::OutputSet outputs({*overwrite, {}});
+      scenarios::OutputFile& file = outputs.claim(*out, "-o");
+      scenarios::OutputFile* map_file =
+          map_path->empty() ? nullptr : &outputs.claim(*map_path, "--error-map");
       const auto t0 = std::chrono::steady_clock::now();
       const contact::MimTable table = contact::MimTable::build(*spec);
-      table.write_hdf5(*out);
+      table.write_hdf5(file.write_path());
+      file.commit();
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       fmt::print("wrote {} ({} x {} x {} x {} nodes, {} elements, nu {}) in {:.1f} s\n", *out,
@@ -83,7 +92,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
       if (!map_path->empty()) {
         std::vector<contact::MimTableErrorPoint> map =
             contact::mim_table_error_map(table, *map_points, 1, spec->threads);
-        io::TextWriter csv(*map_path);
+        io::TextWriter csv(map_file->write_path());
         csv.write("ratio,xi_x,xi_y,phi,fx_table,fy_table,fx_mim,fy_mim,error_mu_fn\n");
         std::vector<double> err;
         for (const auto& e : map) {
@@ -93,6 +102,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler) {
           err.push_back(e.error);
         }
         csv.close();
+        map_file->commit();
         std::sort(err.begin(), err.end());
         double sum = 0.0;
         for (double v : err) sum += v;

@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/scene.hpp"
@@ -23,14 +24,14 @@ struct RunArgs {
   std::string scene, output, plot_dir, integrator, tangential, normal;
   std::vector<std::string> csv;
   double t_end = NAN, speed = NAN, pace = 0.0, rtol = NAN, atol = NAN, fixed_step = NAN;
-  bool no_plots = false, quiet = false;
+  bool no_plots = false, quiet = false, overwrite = false;
 };
 
 struct EigArgs {
   std::string scene, output, tangential;
   double speed_min = NAN, speed_max = NAN;
-  int points = 0;
-  bool no_plots = false;
+  int points = 0;  // 0: the scene's
+  bool no_plots = false, overwrite = false;
 };
 
 struct PlotArgs {
@@ -51,21 +52,48 @@ int make_plots(const std::string& mode, const std::string& h5,
     args.emplace_back("--signals");
     args.insert(args.end(), signals.begin(), signals.end());
   }
-  return scenarios::run_python_tool("ferroplot.py", args);
+  return scenarios::run_python_tool("ferroplot.py", args, [] { return InterruptGuard::stop_now(); });
+}
+
+// After make_plots() of a verb's results: prints where the plots are, or why there are none.
+// Returns the verb's exit code: an interruption ends the verb, a plotting failure does not (the
+// results are complete).
+int report_plots(int rc, const std::string& dir, const std::string& results) {
+  if (rc == scenarios::kProgramStopped) return 128 + InterruptGuard::signal_received();
+  if (rc == 0) {
+    fmt::print("  plots     {}/\n", dir);
+  } else if (rc == kPlotsNeedPython) {
+    fmt::print(stderr,
+               "ferrodyn: warning: no plots: python3 with matplotlib and h5py needed; the "
+               "results in {} are complete\n",
+               results);
+  } else {
+    fmt::print(stderr,
+               "ferrodyn: warning: plotting failed (exit status {}, see above); the results in {} "
+               "are complete\n",
+               rc, results);
+  }
+  return kExitOk;
 }
 
 }  // namespace
 
 void apply_run_overrides(Scene& scene, double t_end, double speed, const std::string& tangential) {
   if (!std::isnan(t_end)) {
-    if (!(t_end > 0.0))
-      throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", t_end));
+    if (!(t_end > 0.0) || !std::isfinite(t_end))
+      throw std::invalid_argument(fmt::format("--t-end: must be a finite number > 0 s, got {}", t_end));
     scene.simulation.t_end = t_end;
     (void)scenarios::output_sample_count(t_end, scene.output.interval, "--t-end");
   }
   if (!std::isnan(speed)) {
-    if (!(speed > 0.0))
-      throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", speed));
+    // A vehicle may stand still (the creep forces then vanish); the linear wheelset's
+    // equations divide by the speed.
+    const bool vehicle = scene.model.type == "vehicle";
+    if (!std::isfinite(speed) || (vehicle ? !(speed >= 0.0) : !(speed > 0.0))) {
+      throw std::invalid_argument(fmt::format("--speed: must be a finite number {} m/s for {} "
+                                              "scenes, got {}",
+                                              vehicle ? ">= 0" : "> 0", scene.model.type, speed));
+    }
     scene.simulation.speed = speed;
   }
   if (!tangential.empty()) scenarios::override_tangential(scene, tangential, "--tangential");
@@ -117,13 +145,18 @@ int do_run(const RunArgs& a) {
   }
   scenarios::RunOptions opt;
   opt.output_file = a.output;
+  opt.overwrite = a.overwrite;
   if (!(a.pace >= 0.0))
     throw std::invalid_argument(fmt::format("--pace: must be >= 0, got {}", a.pace));
   opt.pace = a.pace;
   if (!a.csv.empty()) opt.csv = a.csv;
+  const std::string output = a.output.empty() ? scene.output.file : a.output;
+  const std::string plot_dir = a.plot_dir.empty() ? default_plot_dir(output) : a.plot_dir;
+  if (!a.no_plots) check_plot_folder(plot_dir, a.plot_dir.empty() ? "plots" : "--plot-dir");
+  for (const auto& w : scenarios::scene_warnings(scene)) fmt::print(stderr, "ferrodyn: warning: {}\n", w);
   Progress progress(scene.simulation.t_end, stderr);
   if (!a.quiet) opt.progress = [&](double t) { progress.update(t); };
-  opt.should_stop = [] { return InterruptGuard::signal_received() != 0; };
+  opt.should_stop = [] { return InterruptGuard::stop_now(); };
   opt.stop_reason = "interrupted by signal";
   const auto s = scenarios::run_scene(scene, opt);
   progress.finish();
@@ -177,25 +210,21 @@ int do_run(const RunArgs& a) {
                s.peak_abs[i], s.final_values[i]);
   }
   fmt::print("  output    {}{}\n", s.output_file, s.csv_file.empty() ? "" : " and " + s.csv_file);
+  if (s.status == vehicle::IntegrationResult::Status::kInterrupted || sig != 0) {
+    std::fflush(stdout);
+    return sig != 0 ? 128 + sig : kExitInterrupted;
+  }
   if (!a.no_plots && s.samples > 1) {
-    const std::string dir = a.plot_dir.empty() ? default_plot_dir(s.output_file) : a.plot_dir;
     std::vector<std::string> signals = scene.output.plots;
     if (signals.empty()) {
       for (std::size_t i = 0; i < s.state_count; ++i) signals.push_back(s.channels[i].name);
     }
-    const int rc = make_plots("timeseries", s.output_file, signals, dir, "png,svg");
-    if (rc == 0) {
-      fmt::print("  plots     {}/\n", dir);
-    } else {
-      fmt::print(stderr,
-                 "ferrodyn: warning: plotting failed (python3 with matplotlib and h5py needed); "
-                 "the results in {} are complete\n",
-                 s.output_file);
-    }
+    std::fflush(stdout);
+    const int rc = report_plots(make_plots("timeseries", s.output_file, signals, plot_dir, "png,svg"),
+                                plot_dir, s.output_file);
+    if (rc != kExitOk) return rc;
   }
   std::fflush(stdout);
-  if (s.status == vehicle::IntegrationResult::Status::kInterrupted)
-    return sig != 0 ? 128 + sig : kExitInterrupted;
   if (s.status == vehicle::IntegrationResult::Status::kSolverFailure) {
     fmt::print(stderr, "ferrodyn: solver failure: {}\n", s.message);
     return kExitRunFailure;
@@ -215,6 +244,16 @@ int do_eig(const EigArgs& a) {
                     scene.eigen.speed_min, scene.eigen.speed_max));
   }
   if (scene.eigen.points < 2) throw std::invalid_argument("--points: must be >= 2");
+  // The output is claimed before the sweep: a path that would be refused is refused now.
+  const std::string out = a.output.empty()
+                              ? (fs::path(scene.output.file).parent_path() /
+                                 (fs::path(scene.output.file).stem().string() + "_eig.h5"))
+                                    .string()
+                              : a.output;
+  scenarios::OutputSet outputs({a.overwrite, scenarios::scene_inputs(scene)});
+  scenarios::OutputFile& file = outputs.claim(out, a.output.empty() ? "output" : "-o");
+  const std::string plot_dir = default_plot_dir(out);
+  if (!a.no_plots) check_plot_folder(plot_dir, "plots");
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn eig: {} ({}), {} speeds in [{:g}, {:g}] m/s\n", scene.name, scene.path,
              scene.eigen.points, scene.eigen.speed_min, scene.eigen.speed_max);
@@ -243,21 +282,12 @@ int do_eig(const EigArgs& a) {
   } else if (!r.closed_form_note.empty()) {
     fmt::print("  {}\n", r.closed_form_note);
   }
-  const std::string out = a.output.empty()
-                              ? (fs::path(scene.output.file).parent_path() /
-                                 (fs::path(scene.output.file).stem().string() + "_eig.h5"))
-                                    .string()
-                              : a.output;
-  scenarios::write_eigen_report(scene, r, out);
+  scenarios::write_eigen_report(scene, r, file.write_path());
+  file.commit();
   fmt::print("  output    {}\n", out);
   if (!a.no_plots) {
-    const std::string dir = default_plot_dir(out);
-    if (make_plots("eigen", out, {}, dir, "png,svg") == 0) {
-      fmt::print("  plots     {}/\n", dir);
-    } else {
-      fmt::print(stderr, "ferrodyn: warning: plotting failed; the results in {} are complete\n",
-                 out);
-    }
+    std::fflush(stdout);
+    return report_plots(make_plots("eigen", out, {}, plot_dir, "png,svg"), plot_dir, out);
   }
   return kExitOk;
 }
@@ -270,16 +300,22 @@ int do_plot(const PlotArgs& a) {
         fmt::format("--format: unknown '{}'; allowed: png, svg, png,svg", a.format));
   }
   const std::string dir = a.out_dir.empty() ? default_plot_dir(a.file) : a.out_dir;
+  check_plot_folder(dir, a.out_dir.empty() ? "plots" : "-o");
   const int rc = make_plots("auto", a.file, a.signals, dir, a.format);
+  if (rc == scenarios::kProgramStopped) return 128 + InterruptGuard::signal_received();
   if (rc == 2) return kExitBadInput;
-  if (rc != 0)
-    throw std::runtime_error("plotting failed (python3 with matplotlib and h5py needed)");
+  if (rc == kPlotsNeedPython)
+    throw std::runtime_error("plotting needs python3 with matplotlib and h5py");
+  if (rc != 0) throw std::runtime_error(fmt::format("plotting failed (exit status {})", rc));
   fmt::print("plots written to {}/\n", dir);
   return kExitOk;
 }
 
 int do_validate(const std::string& path) {
   const Scene s = scenarios::load_scene(path);
+  // Every check of `run` before its first step (the model built as `run` builds it).
+  scenarios::check_scene(s);
+  for (const auto& w : scenarios::scene_warnings(s)) fmt::print(stderr, "{}: warning: {}\n", path, w);
   fmt::print(
       "{}: valid scene '{}' (schema {}): model {}, track {}, integrator {}, t_end {} s, V = {} "
       "m/s\n",
@@ -298,26 +334,34 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
                   "HDF5 output file (default: the scene's output.file)");
   run->add_option("--csv", run_args->csv,
                   "Also write these signals to CSV ('all' for every signal)");
-  run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
-  run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
+  run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]")
+      ->check(number_in(0.0, INFINITY, true, true, "s"));
+  run->add_option("--speed", run_args->speed,
+                  "Override simulation.speed [m/s] (>= 0 for vehicle scenes, > 0 for the linear "
+                  "wheelset)")
+      ->check(number_in(0.0, INFINITY, false, true, "m/s"));
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
   run->add_option("--fixed-step", run_args->fixed_step,
                   "Override solver.fixed_step [s] (arkode_erk, arkode_dirk, odeint_bs3; 0: "
-                  "adaptive steps)");
-  run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]");
-  run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]");
+                  "adaptive steps)")
+      ->check(number_in(0.0, INFINITY, false, true, "s"));
+  run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]")
+      ->check(number_in(0.0, 1.0, true, true, ""));
+  run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]")
+      ->check(number_in(0.0, INFINITY, true, true, ""));
   run->add_option("--tangential", run_args->tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
   run->add_option("--normal", run_args->normal,
                   "Override the scene's normal contact model: hertz, semi_hertz (vehicle scenes)");
   run->add_option("--pace", run_args->pace,
-                  "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
+                  "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)")
+      ->check(number_in(0.0, INFINITY, false, true, ""));
   run->add_option("--plot-dir", run_args->plot_dir,
                   "Folder for the plots (default: <output>_plots)");
   add_no_plots_flag(run, run_args->no_plots);
   run->add_flag("-q,--quiet", run_args->quiet, "No progress display");
+  add_overwrite_flag(run, run_args->overwrite);
   run->callback([&handler, run_args] {
-    InterruptGuard::claim();
     handler = [run_args] { return do_run(*run_args); };
   });
 
@@ -327,12 +371,16 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("scene", eig_args->scene, "Scene YAML file")->required();
   eig->add_option("-o,--output", eig_args->output,
                   "HDF5 output (default: <output.file stem>_eig.h5)");
-  eig->add_option("--speed-min", eig_args->speed_min, "Lowest speed [m/s]");
-  eig->add_option("--speed-max", eig_args->speed_max, "Highest speed [m/s]");
-  eig->add_option("--points", eig_args->points, "Number of speeds in the sweep");
+  eig->add_option("--speed-min", eig_args->speed_min, "Lowest speed [m/s]")
+      ->check(number_in(0.0, INFINITY, true, true, "m/s"));
+  eig->add_option("--speed-max", eig_args->speed_max, "Highest speed [m/s]")
+      ->check(number_in(0.0, INFINITY, true, true, "m/s"));
+  eig->add_option("--points", eig_args->points, "Number of speeds in the sweep")
+      ->check(count_in(2, scenarios::kMaxEigenPoints));
   eig->add_option("--tangential", eig_args->tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
   add_no_plots_flag(eig, eig_args->no_plots);
+  add_overwrite_flag(eig, eig_args->overwrite);
   eig->callback([&handler, eig_args] { handler = [eig_args] { return do_eig(*eig_args); }; });
 
   auto plot_args = std::make_shared<PlotArgs>();

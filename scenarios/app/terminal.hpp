@@ -25,26 +25,28 @@ class Progress {
   bool drawn_ = false;
 };
 
-/// Installs SIGINT and SIGTERM handlers for its lifetime; the run polls signal_received().
-/// run_main installs one before anything else, so a signal that comes while a scene loads is
-/// kept for the run to see; a verb that does not poll calls release() to restore the default
-/// handlers (re-raising a signal received meanwhile).
+/// SIGINT and SIGTERM for the whole program, installed first thing in run_main. A stop request is
+/// honoured within kStopGrace seconds wherever the program is:
+///  - code that polls signal_received() and stops at once (a run between two integrator steps,
+///    plotting) calls acknowledge() (or polls stop_now()) and the verb ends in order;
+///  - otherwise (a computation that does not poll) a watchdog thread ends the program when the
+///    grace has passed: it removes the temporary files of unfinished outputs (output_file.hpp),
+///    says so on stderr and exits with 128 + signal. A second signal ends it so at once.
 class InterruptGuard {
  public:
+  static constexpr double kStopGrace = 0.4;  ///< [s]
   InterruptGuard();
   ~InterruptGuard();
-  /// Restores the previous handlers now; re-raises a signal received while installed.
-  void release();
-  /// Called by a verb that polls signal_received(), before run_main decides to release.
-  static void claim();
-  [[nodiscard]] static bool claimed();
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
+  /// The stop was seen and the program is stopping in order (no forced exit).
+  static void acknowledge();
   /// 0, or the number of the signal received.
   [[nodiscard]] static int signal_received();
+  /// signal_received() != 0, acknowledging it: for code that stops at once when it sees it.
+  [[nodiscard]] static bool stop_now();
 
  private:
-  bool installed_ = true;
   struct sigaction old_int_ {};
   struct sigaction old_term_ {};
 };

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/wheelset_contact.hpp"
@@ -52,8 +53,14 @@ void print_table(const std::vector<scenarios::WheelsetContact>& results) {
 }
 
 int run_wheelset_contact(const std::string& yaml, const std::string& out,
-                         const std::vector<int>& only, bool plot) {
+                         const std::vector<int>& only, bool plot, bool overwrite) {
   scenarios::WheelsetContactInput in = scenarios::load_wheelset_contact_file(yaml);
+  std::filesystem::path h5(out);
+  std::filesystem::path csv = h5;
+  csv.replace_extension(".csv");
+  scenarios::OutputSet outputs({overwrite, {yaml}});
+  scenarios::OutputFile& h5_file = outputs.claim(h5.string(), "-o");
+  scenarios::OutputFile& csv_file = outputs.claim(csv.string(), "-o (its CSV)");
   if (!only.empty()) {
     std::set<int> known;
     for (const auto& c : in.cases) known.insert(c.id);
@@ -72,10 +79,8 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
   const fc::WheelRailPair pair = scenarios::make_wheel_rail_pair(in.pair);
   const auto results = scenarios::solve_wheelset_contacts(pair, in);
   print_table(results);
-  std::filesystem::path h5(out);
-  std::filesystem::path csv = h5;
-  csv.replace_extension(".csv");
-  scenarios::write_wheelset_contacts(results, in, h5.string(), csv.string());
+  scenarios::write_wheelset_contacts(results, in, h5_file.write_path(), csv_file.write_path());
+  outputs.commit_all();
   fmt::print("wrote {}, {}\n", h5.string(), csv.string());
   if (plot) {
     if (scenarios::run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
@@ -97,6 +102,7 @@ void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler) {
   auto out = std::make_shared<std::string>("wheelset_contact.h5");
   auto only = std::make_shared<std::vector<int>>();
   auto no_plots = std::make_shared<bool>(false);
+  auto overwrite = std::make_shared<bool>(false);
   CLI::App* cmd = contact->add_subcommand(
       "wheelset",
       "Full contact of prescribed wheelset positions (pair file with cases, Manchester A-2.2 "
@@ -111,9 +117,10 @@ void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler) {
       ->capture_default_str();
   cmd->add_option("--cases", *only, "only these case ids (default: every case)")->delimiter(',');
   add_no_plots_flag(cmd, *no_plots);
-  cmd->callback([&handler, yaml, out, only, no_plots] {
-    handler = [yaml, out, only, no_plots] {
-      return run_wheelset_contact(*yaml, *out, *only, !*no_plots);
+  add_overwrite_flag(cmd, *overwrite);
+  cmd->callback([&handler, yaml, out, only, no_plots, overwrite] {
+    handler = [yaml, out, only, no_plots, overwrite] {
+      return run_wheelset_contact(*yaml, *out, *only, !*no_plots, *overwrite);
     };
   });
 }

@@ -56,7 +56,14 @@ void TimeSeriesWriter::write_rows(std::size_t rows) {
   buffer_t_.erase(buffer_t_.begin(), buffer_t_.begin() + static_cast<long>(rows));
   for (auto& b : buffer_) b.erase(b.begin(), b.begin() + static_cast<long>(rows));
   file_.set_attribute("/", "samples", written_);
+  file_.set_attribute("/", "t_reached", last_written_t_);
   file_.flush();
+}
+
+void TimeSeriesWriter::flush_if_due() {
+  if (buffer_t_.empty()) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (std::chrono::duration<double>(now - last_flush_).count() >= flush_seconds_) flush();
 }
 
 void TimeSeriesWriter::flush() {

@@ -118,8 +118,12 @@ vehicle::LinearisationAtSpeed linearisation_family(const Scene& scene) {
   };
 }
 
-std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& system) {
-  std::vector<double> x = equilibrium_state(scene, system);
+namespace {
+
+// Index of each `simulation.initial` state in the system's state order; throws YamlInputError at
+// the key of a name the model does not have.
+std::vector<std::size_t> initial_indices(const Scene& scene, const vehicle::OdeSystem& system) {
+  std::vector<std::size_t> out;
   const auto info = system.state_info();
   for (const auto& [name, value] : scene.simulation.initial) {
     std::size_t i = 0;
@@ -136,8 +140,22 @@ std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& 
                                        near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
                                        fmt::join(names, ", ")));
     }
-    x[i] += value;
+    out.push_back(i);
   }
+  return out;
+}
+
+}  // namespace
+
+void check_initial_state(const Scene& scene, const vehicle::OdeSystem& system) {
+  (void)initial_indices(scene, system);
+}
+
+std::vector<double> initial_state(const Scene& scene, const vehicle::OdeSystem& system) {
+  const auto index = initial_indices(scene, system);
+  std::vector<double> x = equilibrium_state(scene, system);
+  std::size_t k = 0;
+  for (const auto& [name, value] : scene.simulation.initial) x[index[k++]] += value;
   return x;
 }
 

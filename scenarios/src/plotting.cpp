@@ -4,7 +4,11 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
+#include <thread>
 #include <filesystem>
 #include <stdexcept>
 
@@ -26,7 +30,10 @@ std::string tool_script(const std::string& name) {
   }
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) places.push_back(exe.parent_path().parent_path() / "share" / "ferrodyn" / name);
+  // The program runs from <prefix>/libexec/ferrodyn/ (the `ferrodyn` command in bin/ starts it).
+  if (!ec) {
+    places.push_back(exe.parent_path().parent_path().parent_path() / "share" / "ferrodyn" / name);
+  }
   places.push_back(fs::path(FERRO_SOURCE_DIR) / "tools" / name);
   places.push_back(fs::path(FERRO_INSTALL_DATADIR) / name);
   std::string looked;
@@ -37,21 +44,33 @@ std::string tool_script(const std::string& name) {
   throw std::runtime_error(fmt::format("plotting script {} not found (looked in {})", name, looked));
 }
 
-int run_program(const std::vector<std::string>& argv) {
+int run_program(const std::vector<std::string>& argv, const std::function<bool()>& should_stop) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   pid_t pid = 0;
   if (posix_spawnp(&pid, args[0], nullptr, nullptr, args.data(), environ) != 0) return -1;
   int status = 0;
-  if (waitpid(pid, &status, 0) < 0) return -1;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, should_stop ? WNOHANG : 0);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) return -1;
+    if (should_stop && should_stop()) {
+      kill(pid, SIGTERM);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      return kProgramStopped;
+    }
+    if (done == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-int run_python_tool(const std::string& script, const std::vector<std::string>& args) {
+int run_python_tool(const std::string& script, const std::vector<std::string>& args,
+                    const std::function<bool()>& should_stop) {
   std::vector<std::string> argv = {python_program(), tool_script(script)};
   argv.insert(argv.end(), args.begin(), args.end());
-  return run_program(argv);
+  return run_program(argv, should_stop);
 }
 
 }  // namespace ferro::scenarios

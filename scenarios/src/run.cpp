@@ -15,6 +15,9 @@
 #include "ferro/contact/io/text_writer.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/scenarios/output_file.hpp"
+#include "ferro/scenarios/yaml_reader.hpp"
+#include "model_errors.hpp"
 
 namespace ferro::scenarios {
 
@@ -63,7 +66,8 @@ void set_status(H5File& file, const std::string& status, const std::string& mess
 }
 
 std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
-                                     const std::vector<vehicle::SignalInfo>& channels) {
+                                     const std::vector<vehicle::SignalInfo>& channels,
+                                     const std::string& where) {
   std::vector<std::string> out;
   for (const auto& name : asked) {
     if (name == "all") {
@@ -72,7 +76,7 @@ std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
     }
     const bool found = std::any_of(channels.begin(), channels.end(),
                                    [&](const auto& c) { return c.name == name; });
-    if (!found) throw std::invalid_argument(fmt::format("--csv: unknown signal '{}'", name));
+    if (!found) throw std::invalid_argument(fmt::format("{}: unknown signal '{}'", where, name));
     out.push_back(name);
   }
   return out;
@@ -135,59 +139,142 @@ std::string csv_path_for(const std::string& output) {
 
 }  // namespace
 
-RunSummary run_scene(const Scene& scene, const RunOptions& options) {
-  const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
-  const auto x0 = initial_state(scene, *system);
-  const auto states = system->state_info();
-  const auto derived = system->signal_info();
-  RunSummary summary;
-  summary.channels = states;
-  summary.channels.insert(summary.channels.end(), derived.begin(), derived.end());
-  summary.state_count = states.size();
+namespace {
+
+// What run_scene decides before its first step; every check of this is also what check_scene()
+// makes.
+struct RunPlan {
+  std::unique_ptr<vehicle::OdeSystem> system;
+  std::vector<vehicle::SignalInfo> channels;  // states then derived signals
+  std::size_t state_count = 0;
+  std::vector<std::size_t> csv_index;
+  std::unique_ptr<vehicle::Integrator> integrator;
+  std::string output_file, csv_file;
+};
+
+// The plan; errors as the model and the tables raise them (plan_run locates them).
+RunPlan plan_run_unlocated(const Scene& scene, const RunOptions& options) {
+  RunPlan plan;
+  plan.system = build_system(scene, scene.simulation.speed, build_resources(scene));
+  check_initial_state(scene, *plan.system);
+  const auto states = plan.system->state_info();
+  const auto derived = plan.system->signal_info();
+  plan.channels = states;
+  plan.channels.insert(plan.channels.end(), derived.begin(), derived.end());
+  plan.state_count = states.size();
+  // An initial perturbation beyond a state's bound would start the run diverged.
+  for (const auto& bound : plan.system->state_bounds()) {
+    const std::string& name = states[bound.index].name;
+    const auto it = scene.simulation.initial.find(name);
+    if (it == scene.simulation.initial.end() || std::abs(it->second) <= bound.limit) continue;
+    const auto at = scene.simulation.initial_position.find(name);
+    const auto [line, col] =
+        at == scene.simulation.initial_position.end() ? std::pair{0, 0} : at->second;
+    throw YamlInputError(scene.path, line, col, "simulation.initial." + name,
+                         fmt::format("{} {} lies beyond the bound +-{:.6g} {} of this state ({})",
+                                     it->second, states[bound.index].unit, bound.limit,
+                                     states[bound.index].unit, bound.reason));
+  }
   for (const auto& name : scene.output.plots) {
-    const bool found = std::any_of(summary.channels.begin(), summary.channels.end(),
+    const bool found = std::any_of(plan.channels.begin(), plan.channels.end(),
                                    [&](const auto& c) { return c.name == name; });
     if (!found) {
       std::vector<std::string> names;
-      for (const auto& c : summary.channels) names.push_back(c.name);
+      for (const auto& c : plan.channels) names.push_back(c.name);
       throw std::invalid_argument(fmt::format("output.plots: unknown signal '{}'; signals: {}",
                                               name, fmt::join(names, ", ")));
     }
   }
-  const std::size_t n_states = states.size();
+  (void)output_sample_count(scene.simulation.t_end, scene.output.interval);
+  plan.integrator = vehicle::make_integrator(scene.solver);
+  const auto csv_names = resolve_csv(options.csv.value_or(scene.output.csv), plan.channels,
+                                     options.csv ? "--csv" : "output.csv");
+  for (const auto& name : csv_names) {
+    for (std::size_t i = 0; i < plan.channels.size(); ++i)
+      if (plan.channels[i].name == name) plan.csv_index.push_back(i);
+  }
+  plan.output_file = options.output_file.empty() ? scene.output.file : options.output_file;
+  if (!plan.csv_index.empty()) plan.csv_file = csv_path_for(plan.output_file);
+  return plan;
+}
+
+RunPlan plan_run(const Scene& scene, const RunOptions& options) {
+  try {
+    return plan_run_unlocated(scene, options);
+  } catch (const std::invalid_argument&) {
+    detail::rethrow_located(scene, std::current_exception());
+  }
+}
+
+// The outputs of a run: the scene's inputs are never written, an existing file only with
+// options.overwrite.
+OutputSet run_outputs(const Scene& scene, const RunOptions& options) {
+  OutputRules rules;
+  rules.overwrite = options.overwrite;
+  rules.inputs = scene_inputs(scene);
+  return OutputSet(std::move(rules));
+}
+
+const char* output_option(const RunOptions& options) {
+  return options.output_file.empty() ? "output.file" : "-o";
+}
+
+}  // namespace
+
+void check_scene(const Scene& scene, const RunOptions& options) {
+  const RunPlan plan = plan_run(scene, options);
+  OutputRules rules;
+  rules.inputs = scene_inputs(scene);
+  rules.overwrite = true;  // whether the file exists is the run's business, not the scene's
+  OutputSet outputs(std::move(rules));
+  outputs.check(plan.output_file, output_option(options));
+}
+
+RunSummary run_scene(const Scene& scene, const RunOptions& options) {
+  // Everything that can be refused is refused before any file is touched.
+  const RunPlan plan = plan_run(scene, options);
+  const vehicle::OdeSystem& system = *plan.system;
+  RunSummary summary;
+  summary.channels = plan.channels;
+  summary.state_count = plan.state_count;
+  const std::size_t n_states = plan.state_count;
   const std::size_t n_channels = summary.channels.size();
   summary.peak_abs.assign(n_channels, 0.0);
   summary.final_values.assign(n_channels, 0.0);
-
   const double t_end = scene.simulation.t_end, interval = scene.output.interval;
   const std::uint64_t n_times = output_sample_count(t_end, interval);
   const std::uint64_t n_regular = static_cast<std::uint64_t>(std::floor(t_end / interval + 1e-9)) + 1;
-  auto integrator = vehicle::make_integrator(scene.solver);
-  const auto csv_names = resolve_csv(options.csv.value_or(scene.output.csv), summary.channels);
-  std::vector<std::size_t> csv_index;
-  for (const auto& name : csv_names) {
-    for (std::size_t i = 0; i < n_channels; ++i)
-      if (summary.channels[i].name == name) csv_index.push_back(i);
-  }
 
-  summary.output_file = options.output_file.empty() ? scene.output.file : options.output_file;
-  H5File file = H5File::create(summary.output_file);
+  OutputSet outputs = run_outputs(scene, options);
+  OutputFile& h5 = outputs.claim(plan.output_file, output_option(options));
+  OutputFile* csv_out = plan.csv_file.empty() ? nullptr : &outputs.claim(plan.csv_file, "--csv");
+  summary.output_file = h5.path();
+  summary.csv_file = plan.csv_file;
+
+  H5File file = H5File::create(h5.write_path());
   write_metadata(file, scene, "time_simulation");
+  const auto warnings = scene_warnings(scene);
+  file.set_attribute("/", "warning_count", static_cast<long>(warnings.size()));
+  file.set_attribute("/", "warnings", fmt::format("{}", fmt::join(warnings, "\n")));
   set_status(file, "running", "", 0.0);
+  file.set_attribute("/", "samples", 0L);
 
+  // From here every failure is recorded in the file, which is then renamed to its name.
   const auto wall_start = std::chrono::steady_clock::now();
   bool stopped_by_request = false;
+  const auto stop_requested = [&] { return options.should_stop && options.should_stop(); };
+  std::optional<TimeSeriesWriter> writer;
   try {
     std::optional<io::TextWriter> csv;
-    if (!csv_index.empty()) {
-      summary.csv_file = csv_path_for(summary.output_file);
+    if (csv_out != nullptr) {
       // The CSV leaves the HDF5 writer's reserve free, so the HDF5 file can always be closed.
-      csv.emplace(summary.csv_file, TimeSeriesWriter::kCloseReserve);
+      csv.emplace(csv_out->write_path(), TimeSeriesWriter::kCloseReserve);
       csv->write("time");
-      for (auto i : csv_index) csv->print(",{}", summary.channels[i].name);
+      for (auto i : plan.csv_index) csv->print(",{}", summary.channels[i].name);
       csv->write("\n");
     }
-    TimeSeriesWriter writer(file, summary.channels, scene.output.flush_seconds);
+    writer.emplace(file, summary.channels, scene.output.flush_seconds);
+    const std::vector<double> x0 = initial_state(scene, system);
     std::vector<double> row(n_channels);
     bool skip_first = false;  // each block after the first starts at the previous block's end
     const auto observer = [&](double t, std::span<const double> x) {
@@ -196,15 +283,15 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
         return true;
       }
       std::copy(x.begin(), x.end(), row.begin());
-      system->signals(t, x, std::span<double>(row).subspan(n_states));
-      writer.append(t, row);
-      summary.t_reached = t;
+      system.signals(t, x, std::span<double>(row).subspan(n_states));
+      writer->append(t, row);
+      summary.samples = writer->samples();
       for (std::size_t i = 0; i < n_channels; ++i)
         summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
       summary.final_values = row;
       if (csv) {
         csv->print("{:.10g}", t);
-        for (auto i : csv_index) csv->print(",{:.10g}", row[i]);
+        for (auto i : plan.csv_index) csv->print(",{:.10g}", row[i]);
         csv->write("\n");
       }
       if (options.progress) options.progress(t);
@@ -213,12 +300,30 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
                                     std::chrono::duration<double>(t / options.pace)),
                    options.should_stop);
       }
-      if (options.should_stop && options.should_stop()) {
+      if (stop_requested()) {
         stopped_by_request = true;
         return false;
       }
       return true;
     };
+    // Between two outputs the integrator polls this before every right-hand side and after
+    // every step: a stop request ends the run at once, and samples waiting in the buffer reach
+    // the file at least every flush_seconds however long the solver takes to the next output.
+    // A write failure here cannot cross the integrator: it stops the run and is thrown after.
+    std::exception_ptr write_failure;
+    plan.integrator->set_stop_request([&] {
+      try {
+        writer->flush_if_due();
+      } catch (...) {
+        write_failure = std::current_exception();
+        return true;
+      }
+      if (stop_requested()) {
+        stopped_by_request = true;
+        return true;
+      }
+      return false;
+    });
     // The output times go to the integrator block by block, so memory does not grow with the
     // number of samples; the integrator continues each block from the state the previous one
     // reached.
@@ -229,39 +334,50 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       const std::uint64_t last = std::min(n_times - 1, first + kBlock);
       const auto times = output_block(first, last, n_regular, t_end, interval);
       skip_first = first > 0;
-      auto part = integrator->integrate(*system, x, times, observer);
+      auto part = plan.integrator->integrate(system, x, times, observer);
       result.steps += part.steps;
       result.rhs_evaluations += part.rhs_evaluations;
       result.status = part.status;
       result.t_reached = part.t_reached;
       result.message = part.message;
       result.state = std::move(part.state);
+      if (write_failure) std::rethrow_exception(write_failure);
       if (result.status != vehicle::IntegrationResult::Status::kCompleted || last + 1 >= n_times)
         break;
       x = result.state;
       first = last;
     }
-    writer.flush();
+    writer->flush();
     if (csv) csv->close();
     summary.status = result.status;
     summary.status_text = vehicle::to_string(result.status);
-    summary.t_reached = result.t_reached;
+    // The file's t_reached is its last sample; the solver's own time (a stop or a failure
+    // between two outputs) goes into the message.
+    summary.t_reached = writer->last_written_time();
     summary.steps = result.steps;
     summary.rhs_evaluations = result.rhs_evaluations;
-    summary.samples = writer.samples();
+    summary.samples = writer->samples();
     summary.message = result.message;
-    if (stopped_by_request)
+    if (stopped_by_request || result.status == vehicle::IntegrationResult::Status::kInterrupted) {
       summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
+    }
     if (result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
       // Keep the state where the solver stopped beside the samples.
       file.write_vector("/failure/state", result.state, "SI (see /signals units)",
-                        "state at the failure time t_reached, in state order");
+                        "state where the solver stopped, at time t, in state order");
+      file.set_attribute("/failure/state", "t", result.t_reached);
     }
   } catch (const std::exception& e) {
-    // Record the failure in the file and close it; the original error is what the caller sees.
+    // Record the failure in the file, close it and give it its name; the original error is what
+    // the caller sees.
+    summary.t_reached = writer ? writer->last_written_time() : 0.0;
     try {
       set_status(file, "error", e.what(), summary.t_reached);
+    } catch (const std::exception&) {  // e.g. a full disk: the last flush stands
+    }
+    try {
       file.close();
+      h5.commit();
     } catch (const std::exception&) {
     }
     throw;
@@ -273,6 +389,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
   set_status(file, summary.status_text, summary.message, summary.t_reached);
   file.close();
+  outputs.commit_all();
   return summary;
 }
 

@@ -98,8 +98,7 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
   }
   sel.index = static_cast<int>(index);
   sel.frozen = m.string_list_or("frozen", {});
-  std::set<std::string> dofs(vehicle::kDofNames.begin(), vehicle::kDofNames.end());
-  dofs.insert("spin");
+  const std::set<std::string> dofs(vehicle::kDofNames.begin(), vehicle::kDofNames.end());
   for (const auto& f : sel.frozen) {
     const auto dot = f.find('.');
     const std::string body = dot == std::string::npos ? "" : f.substr(0, dot);
@@ -110,9 +109,16 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
       m.fail("frozen", fmt::format("unknown body '{}' in '{}'; bodies: {}", body, f,
                                    fmt::join(names, ", ")));
     }
+    if (dof == "spin") {
+      m.fail("frozen", fmt::format("'{}': the spin is not frozen here; a wheelset's spin "
+                                   "perturbation is a state only when its `dofs` in the vehicle "
+                                   "file list `spin` (leave it out there); allowed: x, y, z, roll, "
+                                   "pitch, yaw (optionally as body.dof)",
+                                   f));
+    }
     if (dofs.count(dof) == 0) {
       m.fail("frozen", fmt::format("unknown degree of freedom '{}' in '{}'; allowed: x, y, z, "
-                                   "roll, pitch, yaw, spin (optionally as body.dof)",
+                                   "roll, pitch, yaw (optionally as body.dof)",
                                    dof, f));
     }
   }
@@ -234,6 +240,10 @@ Scene load_scene(const std::string& path) {
       cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
       cr.k11 = c.number_or("k11", cr.k11);
       cr.k22 = c.number_or("k22", cr.k22);
+      // Reduction factors (docs/SCENES.md): (0, 1], as for vehicles.
+      for (const auto& [key, k] : {std::pair{"k11", cr.k11}, std::pair{"k22", cr.k22}}) {
+        if (!(k > 0.0 && k <= 1.0)) c.fail(key, fmt::format("must lie in (0, 1], got {}", k));
+      }
       read_material(c.map_or_empty("wheel"), cr.wheel);
       read_material(c.map_or_empty("rail"), cr.rail);
       c.finish();
@@ -348,13 +358,64 @@ Scene load_scene(const std::string& path) {
     if (!(scene.eigen.speed_min > 0.0)) e.fail("speed_min", "must be > 0 m/s");
     if (!(scene.eigen.speed_max > scene.eigen.speed_min))
       e.fail("speed_max", "must exceed speed_min");
-    if (scene.eigen.points < 2 || scene.eigen.points > 100000)
-      e.fail("points", "must lie in 2..100000");
+    if (scene.eigen.points < 2 || scene.eigen.points > kMaxEigenPoints)
+      e.fail("points", fmt::format("must lie in 2..{}", kMaxEigenPoints));
     e.finish();
     a.finish();
   }
   top.finish();
   return scene;
+}
+
+std::vector<std::string> scene_inputs(const Scene& scene) {
+  std::vector<std::string> files = {scene.path};
+  // Included files are marked in the scene text by load_scene.
+  const std::string marker = "\n# ---- included: ";
+  for (auto at = scene.text.find(marker); at != std::string::npos;
+       at = scene.text.find(marker, at + 1)) {
+    const auto begin = at + marker.size();
+    const auto end = scene.text.find(" ----\n", begin);
+    if (end != std::string::npos) files.push_back(scene.text.substr(begin, end - begin));
+  }
+  if (!scene.model.vehicle_file.empty()) files.push_back(scene.model.vehicle_file);
+  const auto& w = scene.model.vehicle.wheel_rail;
+  for (const std::string* f :
+       {&w.wheel_profile, &w.rail_profile, &w.imported_table, &w.table_file, &w.reduction_table}) {
+    if (!f->empty()) files.push_back(*f);
+  }
+  for (const auto& irregularity : scene.track.irregularities) {
+    if (!irregularity.measured_file.empty()) files.push_back(irregularity.measured_file);
+  }
+  return files;
+}
+
+std::vector<std::string> scene_warnings(const Scene& scene) {
+  std::vector<std::string> out;
+  if (scene.model.type != "vehicle") return out;
+  constexpr const char* kNoGauge =
+      "does not move the rails in the vehicle model (its contact geometry has no gauge input): "
+      "it has no effect on this run";
+  const auto& sections = scene.track.design.sections;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    if (sections[i].gauge_widening != 0.0) {
+      out.push_back(fmt::format("track.sections[{}].gauge_widening: {} m of gauge widening {}", i,
+                                sections[i].gauge_widening, kNoGauge));
+    }
+  }
+  for (std::size_t i = 0; i < scene.track.irregularities.size(); ++i) {
+    const auto& irr = scene.track.irregularities[i];
+    const auto& channels = irr.stochastic.channels;
+    const bool gauge = (irr.type == "stochastic" && irr.stochastic.amplitude_scale > 0.0 &&
+                        std::find(channels.begin(), channels.end(),
+                                  track::IrregularityChannel::kGauge) != channels.end()) ||
+                       (irr.type == "defect" &&
+                        irr.defect.channel == track::IrregularityChannel::kGauge);
+    if (gauge) {
+      out.push_back(fmt::format("track.irregularities[{}]: the gauge irregularity channel {}", i,
+                                kNoGauge));
+    }
+  }
+  return out;
 }
 
 void override_tangential(Scene& scene, const std::string& name, const std::string& flag) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "ferro/track/alignment.hpp"
@@ -27,6 +28,14 @@ track::SectionSpec read_section(MapReader& s) {
   out.length = s.number("length");
   if (out.kind == track::SectionKind::kCurve) {
     out.radius = s.number("radius");
+    // The tightest curves rail vehicles take (tramways) are about 15 m; below 10 m the radius
+    // is a slip of unit, not a track.
+    constexpr double kMinRadius = 10.0;  // [m]
+    if (!(std::abs(out.radius) >= kMinRadius) || !std::isfinite(out.radius)) {
+      s.fail("radius", fmt::format("must be finite with |radius| >= {} m (signed, + turning "
+                                   "left), got {}",
+                                   kMinRadius, out.radius));
+    }
     out.cant = s.number_or("cant", out.cant);
     if (s.has("cant_mm")) {
       if (s.has("cant")) s.fail("cant_mm", "give either cant [m] or cant_mm, not both");

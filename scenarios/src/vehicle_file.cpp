@@ -104,7 +104,8 @@ BodyBlock read_body(MapReader b, BodyKind kind) {
     dof_names = {"x", "y", "z", "roll", "yaw", "spin", "spin_perturbation"};
     defaults = {"y", "z", "roll", "yaw"};
   } else {
-    out.cg_height = b.number("cg_height");
+    // Above top of rail: a centre of mass at or below the rails is a sign slip.
+    out.cg_height = positive(b, "cg_height", "m (above top of rail)");
   }
   const auto dofs = b.string_list_or("dofs", defaults);
   for (const auto& d : dofs) {
@@ -292,10 +293,18 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   } else {
     r.allow("wheel_conical_tread");
   }
+  // Each value given must make sense, whichever geometry reads it.
   w.conicity = r.number_or("conicity", w.conicity);
-  w.contact_half_distance = r.number_or("contact_half_distance", w.contact_half_distance);
-  w.conical_curvature_a = r.number_or("conical_curvature_a", w.conical_curvature_a);
-  w.conical_curvature_b = r.number_or("conical_curvature_b", w.conical_curvature_b);
+  if (r.has("conicity") && !(w.conicity > 0.0 && w.conicity < 1.0))
+    r.fail("conicity", fmt::format("must lie in (0, 1), got {}", w.conicity));
+  const auto positive_if_given = [&](const char* key, double& field, const char* unit) {
+    field = r.number_or(key, field);
+    if (r.has(key) && !(field > 0.0))
+      r.fail(key, fmt::format("must be > 0 {}, got {}", unit, field));
+  };
+  positive_if_given("contact_half_distance", w.contact_half_distance, "m");
+  positive_if_given("conical_curvature_a", w.conical_curvature_a, "1/m");
+  positive_if_given("conical_curvature_b", w.conical_curvature_b, "1/m");
   w.friction = r.number_or("friction", w.friction);
   if (!(w.friction > 0.0 && w.friction <= 2.0))
     r.fail("friction", fmt::format("must lie in (0, 2], got {}", w.friction));
@@ -417,7 +426,8 @@ VehicleConfig read_vehicle(MapReader& r) {
   r.allow("schema_version");
   r.allow("description");
   v.gravity = r.number_or("gravity", kStandardGravity);
-  if (!(v.gravity >= 0.0)) r.fail("gravity", "must be >= 0 m/s^2");
+  if (!(v.gravity > 0.0) || !std::isfinite(v.gravity))
+    r.fail("gravity", fmt::format("must be a finite number > 0 m/s^2, got {}", v.gravity));
 
   const BodyBlock car = read_body(r.map("car_body"), BodyKind::car_body);
   const BodyBlock bogie = read_body(r.map("bogie_frame"), BodyKind::bogie_frame);
@@ -513,7 +523,7 @@ VehicleConfig read_vehicle(MapReader& r) {
       const Eigen::Vector3d k = axis_map(s2.map_or_empty("stiffness"), "N/m");
       const Eigen::Vector3d c = axis_map(s2.map_or_empty("damping"), "N s/m");
       const double semi = positive(g, "secondary_lateral_semi_spacing", "m");
-      const double height = g.number("secondary_height");
+      const double height = positive(g, "secondary_height", "m (above top of rail)");
       const bool preload = s2.boolean_or("static_preload", false);
       const double side_load = car.mass * v.gravity / 4.0;
       for (int b = 0; b < 2; ++b) {

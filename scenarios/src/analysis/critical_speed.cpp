@@ -23,6 +23,20 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
   if (o.observed >= x.size()) throw std::invalid_argument("ramp: observed state out of range");
   auto integrator = vehicle::make_integrator(o.solver);
   const double t_end = (o.speed_initial - o.speed_final) / o.deceleration;
+  // Work bounded up front: the pieces (a system each) and the samples kept in memory.
+  if (!(t_end / o.hold <= kMaxRampPieces)) {
+    throw std::invalid_argument(fmt::format(
+        "--hold: {} s pieces over the {:.6g} s ramp make {:.3g} pieces; at most {:.0e} (use "
+        "--hold of at least {:.3g} s)",
+        o.hold, t_end, t_end / o.hold, kMaxRampPieces, t_end / kMaxRampPieces));
+  }
+  if (!(t_end / o.output_interval <= kMaxRampSamples)) {
+    throw std::invalid_argument(fmt::format(
+        "--output-interval: {} s over the {:.6g} s ramp makes {:.3g} samples; at most {:.0e} "
+        "(use an interval of at least {:.3g} s)",
+        o.output_interval, t_end, t_end / o.output_interval, kMaxRampSamples,
+        t_end / kMaxRampSamples));
+  }
   for (double t0 = 0.0; t0 < t_end - 1e-12; t0 += o.hold) {
     const double t1 = std::min(t0 + o.hold, t_end);
     const double v = o.speed_initial - o.deceleration * 0.5 * (t0 + t1);

@@ -65,6 +65,15 @@ SlidingMean sliding_mean(const std::vector<double>& position, const std::vector<
   SlidingMean out;
   const double first_centre = position.front() + 0.5 * window;
   const double last_centre = position.back() - 0.5 * window;
+  // Work bounded up front: one mean per step along the track.
+  const double points = (last_centre - first_centre) / step + 1.0;
+  if (!(points <= kMaxSlidingMeanPoints)) {
+    throw std::invalid_argument(fmt::format(
+        "sliding mean: a step of {} m over the {:.6g} m the run covers makes {:.3g} means; at "
+        "most {:.0e} (--step of at least {:.3g} m)",
+        step, position.back() - position.front(), points, kMaxSlidingMeanPoints,
+        (last_centre - first_centre) / (kMaxSlidingMeanPoints - 1.0)));
+  }
   // Tolerance on the last centre: a run ending exactly on a step keeps that point.
   const double slack = 1e-9 * std::max(1.0, std::abs(last_centre));
   std::size_t first = 0;

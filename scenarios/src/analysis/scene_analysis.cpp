@@ -61,8 +61,17 @@ LateralStates lateral_states(const vehicle::OdeSystem& system) {
 
 std::vector<double> disturbed_state(const Scene& scene, const vehicle::OdeSystem& system,
                                     double lateral_offset) {
+  const std::size_t observed = lateral_states(system).index.front();
+  // An offset beyond the state's bound would start the run diverged.
+  for (const auto& bound : system.state_bounds()) {
+    if (bound.index == observed && !(std::abs(lateral_offset) <= bound.limit)) {
+      throw std::invalid_argument(fmt::format(
+          "--disturbance: {} m lies beyond the bound +-{:.6g} m of {} ({})", lateral_offset,
+          bound.limit, system.state_info()[observed].name, bound.reason));
+    }
+  }
   auto x = initial_state(scene, system);
-  x[lateral_states(system).index.front()] += lateral_offset;
+  x[observed] += lateral_offset;
   return x;
 }
 

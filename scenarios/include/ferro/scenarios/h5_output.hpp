@@ -3,7 +3,8 @@
 //  - H5File: the io layer's RAII file handle.
 //  - TimeSeriesWriter: chunked, extendible 1-D datasets /time and /signals/<name>, written in
 //    blocks and flushed to disk as the run goes, so a run stopped at any moment leaves every
-//    sample up to its last flush (and, on a clean stop, up to the stop) in a valid file. Before
+//    sample up to its last flush (and, on a clean stop, up to the stop) in a valid file whose
+//    root attributes `samples` and `t_reached` say how many and up to when. Before
 //    each block it checks the room left for the file (file system and RLIMIT_FSIZE): when the
 //    block does not fit it writes the samples that do, keeps a reserve for closing the file, and
 //    throws OutputFull naming the cause.
@@ -40,6 +41,11 @@ class TimeSeriesWriter {
   void append(double t, std::span<const double> values);
   /// Writes buffered samples and flushes the file. Throws OutputFull or io::Hdf5Error.
   void flush();
+  /// flush() when samples are buffered and `flush_seconds` of wall time have passed since the
+  /// last flush (for callers that wait long between two samples).
+  void flush_if_due();
+  /// Time of the last sample written to the file [s] (0 before the first).
+  [[nodiscard]] double last_written_time() const { return last_written_t_; }
   /// Samples written to the file so far.
   [[nodiscard]] long written() const { return written_; }
   /// Samples written or buffered.

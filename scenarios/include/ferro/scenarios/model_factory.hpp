@@ -50,5 +50,7 @@ struct ModelResources {
 /// Throws YamlInputError at the `initial` key for a name the model does not have.
 [[nodiscard]] std::vector<double> initial_state(const Scene& scene,
                                                 const vehicle::OdeSystem& system);
+/// The name checks of initial_state() without the equilibrium.
+void check_initial_state(const Scene& scene, const vehicle::OdeSystem& system);
 
 }  // namespace ferro::scenarios

@@ -17,8 +17,11 @@ namespace ferro::scenarios {
 struct RunOptions {
   std::string output_file;                      ///< overrides scene.output.file when not empty
   std::optional<std::vector<std::string>> csv;  ///< overrides scene.output.csv when set
+  bool overwrite = false;                       ///< replace existing output files
   std::function<void(double t)> progress;       ///< called at each output time
-  std::function<bool()> should_stop;            ///< polled at each output time; true stops the run
+  /// Polled before every right-hand side, after every integrator step and at each output time
+  /// (cheap: e.g. an atomic load); true stops the run at once.
+  std::function<bool()> should_stop;
   std::string stop_reason = "interrupted";      ///< status message prefix when should_stop fired
   /// Simulated seconds per wall-clock second (0 = as fast as possible). With pace 1 a run
   /// advances in real time, so it can be watched live.
@@ -29,7 +32,7 @@ struct RunSummary {
   vehicle::IntegrationResult::Status status = vehicle::IntegrationResult::Status::kCompleted;
   std::string status_text;  ///< completed | interrupted | solver_failure
   std::string message;      ///< cause of a failure or interruption
-  double t_reached = 0.0;   ///< [s]
+  double t_reached = 0.0;   ///< time of the last sample written [s]
   long samples = 0;
   double wall_seconds = 0.0;
   long steps = 0;
@@ -42,10 +45,17 @@ struct RunSummary {
   std::vector<double> final_values;           ///< per channel at t_reached (last sample)
 };
 
-/// Integrates the scene, writing samples as they come. Never throws for a solver failure or an
-/// interruption (the summary says which); throws for bad input or I/O failure after writing the
-/// status into the file when it was already open.
+/// Integrates the scene, writing samples as they come (output files: output_file.hpp; layout:
+/// docs/OUTPUT.md). Never throws for a solver failure or an interruption (the summary says
+/// which). Bad input (std::invalid_argument) is refused before any file is touched; a failure
+/// after the output file exists (static equilibrium, I/O) is recorded in it as status `error`
+/// before the exception leaves.
 RunSummary run_scene(const Scene& scene, const RunOptions& options = {});
+
+/// Every check run_scene makes before its first step, without writing anything: the model
+/// built through the same factory, the initial-state and signal names, the integrator
+/// settings, the output path against the scene's inputs. What `ferrodyn validate` runs.
+void check_scene(const Scene& scene, const RunOptions& options = {});
 
 struct EigenReport {
   std::vector<vehicle::SweepPoint> sweep;
@@ -60,6 +70,8 @@ struct EigenReport {
 /// that speed for vehicles); the Hopf speed by the scan on scene.eigen's points and bisection to
 /// kHopfRelTol.
 [[nodiscard]] EigenReport run_eigen(const Scene& scene);
+/// Most speeds an eigenvalue sweep takes (analysis.eigen.points, --points).
+inline constexpr int kMaxEigenPoints = 100000;
 /// Relative width the Hopf speed is bisected to [-].
 inline constexpr double kHopfRelTol = 1e-10;
 /// The Hopf speed in [v_min, v_max] (vehicle::critical_speed on linearisation_family(scene):

@@ -80,6 +80,16 @@ struct Scene {
 /// input, including values that fail the parameter structs' validate().
 [[nodiscard]] Scene load_scene(const std::string& path);
 
+/// Every file the scene reads: the scene itself, its included parts and vehicle file, profiles,
+/// contact and K_ij tables, measured irregularities. Outputs never replace any of them.
+[[nodiscard]] std::vector<std::string> scene_inputs(const Scene& scene);
+
+/// What a valid scene asks for that the model does not apply (each a sentence naming the key):
+/// `validate` and `run` print them, `run` writes them into its output (attribute `warnings`).
+/// Vehicle models: curve gauge widening and the gauge irregularity channel (the contact
+/// geometry has no gauge input; docs/SCENES.md).
+[[nodiscard]] std::vector<std::string> scene_warnings(const Scene& scene);
+
 /// For a vehicle scene on designed track: why the run of `t_end` seconds (the scene's speed,
 /// acceleration and start position) leaves the track, or empty when it stays on it. Scenes are
 /// checked at load; callers that change the speed or duration check again.

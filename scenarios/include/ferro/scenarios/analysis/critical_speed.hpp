@@ -23,6 +23,11 @@
 
 namespace ferro::scenarios::analysis {
 
+/// Most constant-speed pieces of a ramp (its duration / hold).
+inline constexpr double kMaxRampPieces = 1e6;
+/// Most samples a ramp keeps (its duration / output_interval).
+inline constexpr double kMaxRampSamples = 1e8;
+
 struct RampOptions {
   double speed_initial = 0.0;     ///< [m/s]
   double deceleration = 1.0;      ///< [m/s^2], > 0

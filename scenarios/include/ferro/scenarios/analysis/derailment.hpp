@@ -24,6 +24,9 @@ namespace ferro::scenarios::analysis {
 [[nodiscard]] double prudhomme_limit(double axle_load);
 
 /// A signal averaged over a window sliding along the track.
+/// Most means a sliding mean computes (the covered length / step).
+inline constexpr double kMaxSlidingMeanPoints = 1e7;
+
 struct SlidingMean {
   std::vector<double> position;  ///< window centres [m]
   std::vector<double> mean;      ///< window averages [signal unit]
