@@ -11,5 +11,6 @@ cmake -S "$source_dir/tests/install/consumer" -B "$scratch/consumer" -G Ninja \
 cmake --build "$scratch/consumer" > "$scratch/build.log"
 "$scratch/consumer/consumer"
 test -x "$scratch/prefix/bin/ferrodyn"
+test -x "$scratch/prefix/libexec/ferrodyn/ferrodyn"
 test -f "$scratch/prefix/share/ferrodyn/ferroplot.py"
 "$scratch/prefix/bin/ferrodyn" --version
