@@ -3,6 +3,7 @@
 // optionally, SIGINT and SIGTERM blocked from the start: how the tests put ferrodyn on a "full
 // disk" (RLIMIT_FSIZE), give it little memory (RLIMIT_AS), or deliver a signal before it could
 // possibly have installed a handler. Its stdout and stderr go to one pipe.
+#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -10,10 +11,12 @@
 #include <unistd.h>
 
 #include <array>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -30,6 +33,10 @@ class LimitedProcess {
                  bool block_stop_signals = false) {
     int fds[2];
     if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+    // Closed by the exec: the constructor returns once the child runs the program (a signal sent
+    // right after reaches the program, not the forked test process before its exec).
+    int started[2];
+    if (pipe2(started, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -44,6 +51,7 @@ class LimitedProcess {
     if (pid_ != 0 && block_stop_signals) pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     if (pid_ < 0) throw std::runtime_error("fork failed");
     if (pid_ == 0) {
+      close(started[0]);
       dup2(fds[1], 1);
       dup2(fds[1], 2);
       close(fds[0]);
@@ -56,6 +64,11 @@ class LimitedProcess {
       _exit(127);
     }
     close(fds[1]);
+    close(started[1]);
+    char byte = 0;
+    while (read(started[0], &byte, 1) < 0 && errno == EINTR) {
+    }
+    close(started[0]);
     out_ = fdopen(fds[0], "r");
   }
   ~LimitedProcess() {
@@ -85,6 +98,24 @@ class LimitedProcess {
     int status = 0;
     waitpid(pid_, &status, 0);
     pid_ = -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  /// wait(), but a program still running after `seconds` is killed (SIGKILL: 137).
+  int wait_for(double seconds) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    int status = 0;
+    while (waitpid(pid_, &status, WNOHANG) == 0) {
+      if (std::chrono::steady_clock::now() > until) {
+        kill(pid_, SIGKILL);
+        waitpid(pid_, &status, 0);
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    pid_ = -1;
+    std::string line;
+    while (read_line(line)) {
+    }
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
   /// Everything read so far.

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,13 @@
 extern char** environ;
 
 namespace ferro::test {
+
+/// The ferrodyn program the tests run: $FERRODYN_TEST_EXE when set (another build of it, e.g.
+/// to see a test fail on an older program), else the one built with the tests.
+inline std::string ferrodyn_exe() {
+  const char* other = std::getenv("FERRODYN_TEST_EXE");
+  return other != nullptr && *other != '\0' ? other : FERRODYN_EXE;
+}
 
 struct ProcessResult {
   int exit_code = -1;
@@ -27,9 +35,11 @@ inline std::string shell_quote(const std::string& s) {
   return out + "'";
 }
 
-/// Runs `args` (args[0] = program) through the shell, capturing stdout+stderr.
-inline ProcessResult run_capture(const std::vector<std::string>& args) {
+/// Runs `args` (args[0] = program) through the shell, capturing stdout+stderr. With
+/// `timeout_seconds` > 0 the program is ended (SIGKILL) after that long: exit code 137.
+inline ProcessResult run_capture(const std::vector<std::string>& args, double timeout_seconds = 0) {
   std::string cmd;
+  if (timeout_seconds > 0) cmd = "timeout -s KILL " + std::to_string(timeout_seconds) + " ";
   for (const auto& a : args) cmd += shell_quote(a) + " ";
   cmd += "2>&1";
   ProcessResult r;
