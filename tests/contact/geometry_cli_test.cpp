@@ -89,6 +89,7 @@ TEST(geometry_cli, batch_csv_in_csv_out) {
   const auto dir = std::filesystem::temp_directory_path();
   const std::string in = (dir / "ferro_geometry_batch_in.csv").string();
   const std::string out = (dir / "ferro_geometry_batch_out.csv").string();
+  std::filesystem::remove(out);  // an output is replaced only with --overwrite
   std::ofstream(in)
       << "case,y_mm,roll_rad,yaw_rad,load_n\n1,0,0,0,20000\n11,5.0,-0.0003554,0.012,20000\n";
   const CliRun r = run("geometry search " + kPair + " --batch " + in + " -o " + out);

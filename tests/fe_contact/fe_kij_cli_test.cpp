@@ -57,6 +57,7 @@ TEST(fe_kij_cli, table_matches_library_and_resumes) {
   const fs::path cfg = write_config("two.yaml", "layer_thickness: [0.0, 125.0e-6]");
   const std::string out = cfg.string() + ".h5";
   fs::remove_all(out + ".d");
+  fs::remove(out);  // a table is replaced only with --overwrite
   ASSERT_EQ(run(cfg.string()), 0);
   const ferro::contact::KijTable t = ferro::contact::KijTable::read_hdf5(out);
   EXPECT_EQ(t.provenance().count("solver_tolerance"), 1u);

@@ -124,17 +124,16 @@ TEST(RunFailure, csv_outputs_on_a_full_disk_fail_with_the_cause) {
   EXPECT_NE(geometry.output().find("File too large"), std::string::npos) << geometry.output();
 }
 
-TEST(RunFailure, a_csv_that_cannot_be_created_leaves_status_error) {
+TEST(RunFailure, a_csv_that_cannot_be_created_is_refused_before_anything_is_written) {
   const fs::path dir = scratch("csv_dir");
   fs::create_directories(dir / "out.csv");  // where the CSV should go: a folder
   const std::string out = (dir / "out.h5").string();
   const auto r = test::run_capture(
       {FERRODYN_EXE, "run", kMinimal, "-o", out, "--csv", "all", "--no-plots", "-q"});
-  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("out.csv"), std::string::npos) << r.output;
-  const H5File f = H5File::open_read(out);
-  EXPECT_EQ(f.string_attribute("/", "status"), "error");
-  EXPECT_NE(f.string_attribute("/", "status_message").find("out.csv"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out));
+  for (const auto& e : fs::directory_iterator(dir)) EXPECT_NE(e.path().extension(), ".part");
 }
 
 TEST(RunFailure, pace_answers_sigterm_at_once) {
@@ -143,8 +142,14 @@ TEST(RunFailure, pace_answers_sigterm_at_once) {
   // 1e-5 simulated seconds per wall second: 100 s of wall time between two 1 ms samples.
   test::LimitedProcess p(
       {FERRODYN_EXE, "run", kMinimal, "-o", out, "--pace", "1e-5", "--no-plots", "-q"}, {});
+  // The output is written under a temporary name (<out>.<pid>.part) until the run ends.
   const auto start = std::chrono::steady_clock::now();
-  while (!fs::exists(out) && std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+  const auto writing = [&] {
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".part") return true;
+    return false;
+  };
+  while (!writing() && std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const auto sent = std::chrono::steady_clock::now();
@@ -188,7 +193,10 @@ TEST(RunFailure, a_long_run_does_not_allocate_its_time_grid) {
                          limits);
   const auto start = std::chrono::steady_clock::now();
   while (std::chrono::steady_clock::now() - start < std::chrono::seconds(30)) {
-    if (fs::exists(out) && fs::file_size(out) > 200000) break;  // samples are being written
+    bool written = false;  // samples are being written into the temporary file
+    for (const auto& e : fs::directory_iterator(dir))
+      written = written || (e.path().extension() == ".part" && fs::file_size(e.path()) > 200000);
+    if (written) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   p.signal(SIGINT);
@@ -255,7 +263,8 @@ TEST(RunFailure, tolerance_overrides_are_applied_or_refused_naming_the_flag) {
   fs::create_directories(dir);
   const std::string out = (dir / "o.h5").string();
   const auto ok = test::run_capture({FERRODYN_EXE, "run", kHunting, "-o", out, "--t-end", "0.5",
-                                     "--rtol", "1e-3", "--atol", "1e-6", "--no-plots", "-q"});
+                                     "--rtol", "1e-3", "--atol", "1e-6", "--no-plots", "-q",
+                                     "--overwrite"});
   EXPECT_EQ(ok.exit_code, 0) << ok.output;
   EXPECT_NE(ok.output.find("(rtol 0.001, atol 1e-06)"), std::string::npos) << ok.output;
   for (const auto& [flag, value] : {std::pair<std::string, std::string>{"--rtol", "2"},
@@ -277,18 +286,19 @@ TEST(RunFailure, fixed_step_overrides_are_applied_or_refused_naming_the_flag) {
   fs::create_directories(dir);
   const std::string out = (dir / "o.h5").string();
   const auto bdf = test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end", "0.01",
-                                      "--integrator", "cvode_bdf", "--no-plots", "-q"});
+                                      "--integrator", "cvode_bdf", "--no-plots", "-q",
+                                      "--overwrite"});
   EXPECT_EQ(bdf.exit_code, 0) << bdf.output;
   EXPECT_NE(bdf.output.find("cvode_bdf (rtol"), std::string::npos) << bdf.output;
   const auto half = test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end", "0.01",
-                                       "--fixed-step", "5e-4", "--no-plots", "-q"});
+                                       "--fixed-step", "5e-4", "--no-plots", "-q", "--overwrite"});
   EXPECT_EQ(half.exit_code, 0) << half.output;
   EXPECT_NE(half.output.find("fixed step 0.0005 s, no error control): 20 steps"),
             std::string::npos)
       << half.output;
   const auto adaptive =
       test::run_capture({FERRODYN_EXE, "run", scene, "-o", out, "--t-end", "0.01", "--integrator",
-                         "arkode_erk", "--fixed-step", "0", "--no-plots", "-q"});
+                         "arkode_erk", "--fixed-step", "0", "--no-plots", "-q", "--overwrite"});
   EXPECT_EQ(adaptive.exit_code, 0) << adaptive.output;
   EXPECT_NE(adaptive.output.find("arkode_erk (rtol"), std::string::npos) << adaptive.output;
   const std::pair<std::vector<std::string>, std::string> refused[] = {

@@ -146,7 +146,7 @@ TEST(RunOutput, every_shipped_scene_runs) {
     EXPECT_EQ(r.exit_code, 0) << e.path() << "\n" << r.output;
     EXPECT_EQ(H5File::open_read(out).string_attribute("/", "status"), "completed") << e.path();
     std::vector<std::string> eig = {FERRODYN_EXE, "eig", e.path().string(), "-o",
-                                    temp_file("eig.h5"), "--no-plots"};
+                                    temp_file("eig.h5"), "--no-plots", "--overwrite"};
     if (vehicle_scene) eig.insert(eig.end(), {"--points", "3"});
     const auto ev = test::run_capture(eig);
     EXPECT_EQ(ev.exit_code, 0) << ev.output;
