@@ -1,0 +1,90 @@
+// What a run's file says of values the model cannot give (docs/OUTPUT.md): a wheel lifted off its
+// rail has no contact point, so its contact angle and position are NaN while its forces and
+// creepages are 0; and what a scene asks for that the model does not apply (gauge widening, the
+// gauge irregularity channel) is said as a warning and written into the file.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "ferro/scenarios/h5_output.hpp"
+#include "process.hpp"
+#include "scene_edits.hpp"
+
+namespace ferro::scenarios {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("ferro_file_contract_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  fs::remove(dir / name);
+  return (dir / name).string();
+}
+
+TEST(FileContract, a_lifted_wheel_has_no_contact_angle_and_no_forces) {
+  // The Manchester vehicle at 150 m/s in the 1200 m curve with 150 mm cant: the leading
+  // wheelset climbs the outer rail and lifts off at 0.5 s.
+  const std::string out = scratch("lifted.h5");
+  const auto r = test::run_capture({test::ferrodyn_exe(), "run",
+                                    "scenarios/scenes/manchester_curve_1200.yaml", "--speed", "150",
+                                    "--t-end", "0.52", "--no-plots", "-q", "-o", out});
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.output;
+  const H5File f = H5File::open_read(out);
+  std::size_t lifted = 0;
+  for (const std::string side : {"left", "right"}) {
+    const std::string w = "/signals/wheelset_1." + side + ".";
+    const auto points = f.read_vector(w + "points");
+    const auto angle = f.read_vector(w + "contact_angle");
+    const auto y = f.read_vector(w + "contact_y");
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (points[i] == 0.0) {
+        ++lifted;
+        EXPECT_TRUE(std::isnan(angle[i]) && std::isnan(y[i])) << side << " " << i;
+      } else {
+        EXPECT_TRUE(std::isfinite(angle[i]) && std::isfinite(y[i])) << side << " " << i;
+      }
+    }
+    for (const char* zero : {"Y", "Q", "normal_force", "creepage_x", "creepage_y", "spin"}) {
+      const auto v = f.read_vector(w + zero);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(v[i])) << zero << " " << i;
+        if (points[i] == 0.0) ASSERT_EQ(v[i], 0.0) << zero << " " << i;
+      }
+    }
+  }
+  EXPECT_GT(lifted, 0u) << "the wheelset did not lift: the case tests nothing";
+  for (const double v : f.read_vector("/signals/car_body.ay")) ASSERT_TRUE(std::isfinite(v));
+  // The contract is written down.
+  const std::string doc = test::text_of("docs/OUTPUT.md");
+  EXPECT_NE(doc.find("`contact_angle` and `contact_y` are NaN"), std::string::npos);
+}
+
+TEST(FileContract, what_the_vehicle_model_does_not_apply_is_said_and_recorded) {
+  // The ERRI scenes synthesise the gauge channel; widening a curve's gauge likewise moves no rail.
+  const std::string scene = test::edited_copy("scenarios/scenes/manchester_curve_1200.yaml",
+                                              "cant_mm: 150}", "cant_mm: 150, gauge_widening: 0.01}",
+                                              "widened.yaml");
+  const auto v = test::run_capture({test::ferrodyn_exe(), "validate", scene});
+  EXPECT_EQ(v.exit_code, 0) << v.output;
+  EXPECT_NE(v.output.find("warning: track.sections[2].gauge_widening"), std::string::npos)
+      << v.output;
+  const std::string out = scratch("erri.h5");
+  const auto r = test::run_capture({test::ferrodyn_exe(), "run",
+                                    "scenarios/scenes/manchester_straight_erri_fast.yaml",
+                                    "--t-end", "0.01", "--no-plots", "-q", "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: track.irregularities[0]: the gauge irregularity channel"),
+            std::string::npos)
+      << r.output;
+  const H5File f = H5File::open_read(out);
+  EXPECT_EQ(f.number_attribute("/", "warning_count"), 1.0);
+  EXPECT_NE(f.string_attribute("/", "warnings").find("gauge irregularity channel"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace ferro::scenarios
