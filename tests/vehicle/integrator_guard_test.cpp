@@ -129,7 +129,7 @@ TEST(StateBounds, the_vehicle_bounds_follow_its_track_and_wheel_geometry) {
   }
   EXPECT_EQ(wheelset_lateral, 4);
   // The static equilibrium lies well inside them.
-  const auto x = m.static_equilibrium();
+  const auto x = static_equilibrium(m);
   for (const StateBound& b : bounds) EXPECT_LT(std::abs(x[b.index]), 0.1 * b.limit);
 }
 
