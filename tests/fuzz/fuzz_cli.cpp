@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const ferro::scenarios::Scene hunting =
       ferro::scenarios::load_scene("scenarios/scenes/wheelset_hunting.yaml");
   static const ferro::scenarios::Scene vehicle =
-      ferro::scenarios::load_scene("scenarios/scenes/manchester_straight_erri_fast.yaml");
+      ferro::scenarios::load_scene("scenarios/scenes/manchester_straight_erri.yaml");
   const auto& verb = kVerbs[data[0] % kVerbs.size()];
   std::vector<std::string> args = {"ferrodyn"};
   args.insert(args.end(), verb.begin(), verb.end());

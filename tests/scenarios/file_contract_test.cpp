@@ -74,7 +74,7 @@ TEST(FileContract, what_the_vehicle_model_does_not_apply_is_said_and_recorded) {
       << v.output;
   const std::string out = scratch("erri.h5");
   const auto r = test::run_capture({test::ferrodyn_exe(), "run",
-                                    "scenarios/scenes/manchester_straight_erri_fast.yaml",
+                                    "scenarios/scenes/manchester_straight_erri.yaml",
                                     "--t-end", "0.01", "--no-plots", "-q", "-o", out});
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("warning: track.irregularities[0]: the gauge irregularity channel"),

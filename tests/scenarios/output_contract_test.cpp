@@ -24,7 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 const std::string kMinimal = "tests/scenarios/data/good_minimal.yaml";
-const std::string kErriFast = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+const std::string kErri = "scenarios/scenes/manchester_straight_erri.yaml";
 
 fs::path scratch(const std::string& name) {
   const fs::path dir =
@@ -214,7 +214,7 @@ TEST(OutputContract, a_failure_before_the_first_sample_leaves_a_file_saying_why)
     vehicle.replace(vehicle.find(rel), rel.size(), profiles + "/" + name);
   }
   std::ofstream(dir / "vehicles" / "heavy.yaml") << vehicle;
-  std::string scene = file_text(kErriFast);
+  std::string scene = file_text(kErri);
   const std::string ref = "../vehicles/manchester_vehicle1.yaml";
   ASSERT_NE(scene.find(ref), std::string::npos);
   scene.replace(scene.find(ref), ref.size(), "vehicles/heavy.yaml");

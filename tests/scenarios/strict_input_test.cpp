@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kMinimal = "tests/scenarios/data/good_minimal.yaml";
 const std::string kHunting = "scenarios/scenes/wheelset_hunting.yaml";
-const std::string kVehicle = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+const std::string kVehicle = "scenarios/scenes/manchester_straight_erri.yaml";
 // Refusals come before any work: well under this even on a loaded machine.
 constexpr double kRefusalSeconds = 30.0;
 

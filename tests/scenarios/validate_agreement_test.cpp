@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 const std::string M = "scenarios/vehicles/manchester_vehicle1.yaml";
 const std::string C = "scenarios/vehicles/cooperrider_wagon.yaml";
-const std::string EF = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+const std::string EF = "scenarios/scenes/manchester_straight_erri.yaml";
 const std::string TD = "scenarios/scenes/thesis_derailment.yaml";
 const std::string TT = "scenarios/parts/thesis_derailment_track.yaml";
 const std::string CS = "scenarios/scenes/cooperrider_straight.yaml";

@@ -39,7 +39,7 @@ JOBS = [
                                   "--pace", "2", "--no-plots", "-q"], "run"),
     ("run vehicle curve 150 m/s", ["run", "scenarios/scenes/manchester_curve_1200.yaml", "--speed",
                                    "150", "--no-plots", "-q"], "run"),
-    ("run vehicle with CSV", ["run", "scenarios/scenes/manchester_straight_erri_fast.yaml",
+    ("run vehicle with CSV", ["run", "scenarios/scenes/manchester_straight_erri.yaml",
                               "--pace", "2", "--csv", "all", "--no-plots", "-q"], "run"),
     ("eig vehicle", ["eig", "scenarios/scenes/thesis_critical_speed.yaml", "--points", "2000",
                      "--no-plots"], "analysis"),

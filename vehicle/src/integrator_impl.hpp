@@ -13,6 +13,7 @@ std::unique_ptr<Integrator> make_cvode(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_arkode_erk(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_arkode_dirk(const IntegratorSettings& settings);
 std::unique_ptr<Integrator> make_odeint(const IntegratorSettings& settings);
+std::unique_ptr<Integrator> make_bdf2(const IntegratorSettings& settings);
 
 /// What every adapter checks between right-hand sides and after each accepted step: the stop
 /// request, and the divergence guard (every state finite and within the system's
