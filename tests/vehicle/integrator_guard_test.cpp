@@ -40,7 +40,7 @@ IntegratorSettings settings_for(const std::string& method) {
   s.method = method;
   s.rtol = 1e-8;
   s.atol = 1e-10;
-  if (method == "odeint_bs3") s.fixed_step = 1e-3;
+  if (method == "odeint_bs3" || method == "bdf2") s.fixed_step = 1e-3;
   return s;
 }
 
@@ -94,7 +94,7 @@ TEST_P(EveryAdapter, a_stop_request_ends_the_run_at_a_completed_step) {
 INSTANTIATE_TEST_SUITE_P(Integrators, EveryAdapter,
                          ::testing::Values("cvode_bdf", "cvode_adams", "arkode_erk",
                                            "arkode_dirk", "odeint_dopri5", "odeint_rosenbrock4",
-                                           "odeint_bs3"));
+                                           "odeint_bs3", "bdf2"));
 
 TEST(StateBounds, the_vehicle_bounds_follow_its_track_and_wheel_geometry) {
   // The Manchester vehicle on conical wheels (gamma 0.1, e 0.75 m).

@@ -37,7 +37,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "integrator_impl.hpp"
@@ -63,6 +65,7 @@ class Bdf2 final : public Integrator {
   /// f(t, y) into out; throws Failure when the right-hand side refuses (a recoverable code
   /// makes the caller split the step).
   void rhs(double t, const Vector& y, Vector& out) {
+    if (monitor_->stop_requested()) throw StopRequested{};
     ++rhs_count_;
     const int code = system_->rhs(t, std::span<const double>(y.data(), n_),
                                   std::span<double>(out.data(), n_));
@@ -161,6 +164,7 @@ class Bdf2 final : public Integrator {
 
   IntegratorSettings s_;
   const OdeSystem* system_ = nullptr;
+  const StepMonitor* monitor_ = nullptr;  ///< stop request and divergence guard
   std::size_t n_ = 0;
   Vector atol_;  ///< atol per state (the system's tolerance scales)
   std::vector<std::vector<int>> pattern_, groups_;  ///< Jacobian sparsity and column groups
@@ -200,6 +204,8 @@ void Bdf2::step(double t, double h, const Vector& y_n, const Vector* y_nm1, cons
 IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const double> x0,
                                   const std::vector<double>& times, const Observer& observer) {
   system_ = &system;
+  const StepMonitor monitor(system, stop_);
+  monitor_ = &monitor;
   n_ = system.size();
   const auto n = static_cast<Eigen::Index>(n_);
   jacobian_.resize(n, n);
@@ -238,7 +244,20 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
       step(t_np1, h, y_n, k > 0 ? &y_nm1 : nullptr, k > 1 ? &y_nm2 : nullptr, y_np1, 0);
       ++jacobian_age_;
       ++result.steps;
-      if (!y_np1.allFinite()) throw Failure(fmt::format("the state became non-finite at t = {:.9g} s", t_np1));
+      // A step that leaves the bounds (or any non-finite state) ends the run with that state.
+      if (std::string cause = monitor.divergence(t_np1, std::span<const double>(y_np1.data(), n_));
+          !cause.empty()) {
+        result.status = IntegrationResult::Status::kSolverFailure;
+        result.message = fmt::format("bdf2 (fixed step {} s) at t = {:.9g} s (last output t = "
+                                     "{:.9g} s): {}",
+                                     h, t_np1, result.t_reached, cause);
+        result.t_reached = t_np1;
+        result.state.assign(y_np1.data(), y_np1.data() + n);
+        result.rhs_evaluations = rhs_count_;
+        result.jacobians = jacobians_;
+        result.newton_iterations = iterations_;
+        return result;
+      }
       // Outputs in (t_n, t_np1]: the step's end, or the quadratic through the last three
       // points (the line through the last two on the first step).
       while (next < times.size() && times[next] <= t_np1 + 1e-12 * h) {
@@ -263,7 +282,13 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
       std::swap(y_nm1, y_n);
       std::swap(y_n, y_np1);
       ++k;
+      if (monitor.stop_requested()) throw StopRequested{};
     }
+  } catch (const StopRequested&) {
+    // y_n is the state at the end of the last completed step.
+    result.status = IntegrationResult::Status::kInterrupted;
+    result.t_reached = t0 + static_cast<double>(k) * h;
+    result.state.assign(y_n.data(), y_n.data() + n);
   } catch (const std::exception& e) {
     result.status = IntegrationResult::Status::kSolverFailure;
     result.message = fmt::format("bdf2 (fixed step {} s) at t = {:.9g} s (last output t = {:.9g} s): {}",
