@@ -6,8 +6,9 @@ SIGINT or SIGTERM after a random delay in [0, MAX_DELAY] s, and checks what the 
 
   - exit code 128 + signal (130 for SIGINT, 143 for SIGTERM);
   - the stop within STOP_LIMIT s of the signal;
-  - every output file opens (h5py); a run's output says `interrupted`, and its `t_reached` and
-    `samples` agree with its /time dataset; an analysis stopped before its end leaves no output;
+  - every output file opens (h5py); a run leaves its output, which says `interrupted`, and its
+    `t_reached` and `samples` agree with its /time dataset; an analysis stopped before its end
+    leaves no output;
   - no temporary output (*.part) left behind.
 
   soak_interrupts.py --exe build/bin/ferrodyn [--trials 200] [--seed 1] [--max-delay 3]
@@ -106,6 +107,8 @@ def main():
             problems.append(f"exit {p.returncode}")
         if latency > STOP_LIMIT:
             problems.append(f"stopped {latency:.3f} s after the signal")
+        if kind == "run" and not os.path.exists(out):
+            problems.append("an interrupted run left no output")
         left = [f for f in os.listdir(folder) if f.endswith(".part")]
         if left:
             problems.append(f"temporary files left: {left}")
