@@ -393,26 +393,13 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
   std::vector<std::string> out;
   if (scene.model.type != "vehicle") return out;
   constexpr const char* kNoGauge =
-      "does not move the rails in the vehicle model (its contact geometry has no gauge input): "
-      "it has no effect on this run";
+      "does not move the rails in the vehicle model (the rails are placed at the design gauge, "
+      "moved only by the irregularities and the track's elasticity): it has no effect on this run";
   const auto& sections = scene.track.design.sections;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     if (sections[i].gauge_widening != 0.0) {
       out.push_back(fmt::format("track.sections[{}].gauge_widening: {} m of gauge widening {}", i,
                                 sections[i].gauge_widening, kNoGauge));
-    }
-  }
-  for (std::size_t i = 0; i < scene.track.irregularities.size(); ++i) {
-    const auto& irr = scene.track.irregularities[i];
-    const auto& channels = irr.stochastic.channels;
-    const bool gauge = (irr.type == "stochastic" && irr.stochastic.amplitude_scale > 0.0 &&
-                        std::find(channels.begin(), channels.end(),
-                                  track::IrregularityChannel::kGauge) != channels.end()) ||
-                       (irr.type == "defect" &&
-                        irr.defect.channel == track::IrregularityChannel::kGauge);
-    if (gauge) {
-      out.push_back(fmt::format("track.irregularities[{}]: the gauge irregularity channel {}", i,
-                                kNoGauge));
     }
   }
   return out;

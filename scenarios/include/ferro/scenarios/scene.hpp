@@ -86,8 +86,8 @@ struct Scene {
 
 /// What a valid scene asks for that the model does not apply (each a sentence naming the key):
 /// `validate` and `run` print them, `run` writes them into its output (attribute `warnings`).
-/// Vehicle models: curve gauge widening and the gauge irregularity channel (the contact
-/// geometry has no gauge input; docs/SCENES.md).
+/// Vehicle models: curve gauge widening (the rails are placed at the design gauge;
+/// docs/SCENES.md).
 [[nodiscard]] std::vector<std::string> scene_warnings(const Scene& scene);
 
 /// For a vehicle scene on designed track: why the run of `t_end` seconds (the scene's speed,
