@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cstddef>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <exception>
 #include <limits>
@@ -19,9 +19,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "ferro/contact/io/hdf5.hpp"
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::contact {
 

@@ -4,8 +4,6 @@
 // Known deviations: multilinear interpolation, clamped at the axis ends.
 #include "ferro/contact/reduction_factors.hpp"
 
-#include "ferro/contact/io/hdf5.hpp"
-
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -15,6 +13,8 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::contact {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace fc = ferro::contact;
 namespace fio = ferro::io;

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/scenarios/csv_batch.hpp"
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/wheelset_contact.hpp"
 
@@ -67,7 +67,7 @@ inline const std::vector<A22Reference>& a22_reference() {
     const std::string path =
         std::string(FERRO_SOURCE_DIR) + "/tests/data/manchester_a22_contact_reference.csv";
     std::ifstream f(path);
-    scenarios::CsvBatchReader csv(f, path);
+    io::CsvReader csv(f, path);
     std::vector<A22Reference> out;
     std::vector<std::string> cells;
     const auto& h = csv.header();

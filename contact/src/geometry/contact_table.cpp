@@ -7,14 +7,14 @@
 
 #include "ferro/contact/geometry/contact_table.hpp"
 
-#include "ferro/contact/io/hdf5.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::contact {
 namespace {

@@ -15,7 +15,7 @@
 #include <stdexcept>
 
 #include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::contact {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "ferro/contact/hertz.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
-#include "ferro/scenarios/csv_batch.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -77,7 +77,7 @@ EvalOutput evaluate_contact(const EvalInput& in, const fc::TangentialModel& mode
 void evaluate_contact_batch(std::istream& in, const std::string& input_name,
                             const EvalInput& defaults, const fc::ModelOptions& options,
                             fc::CoefficientSource source, std::ostream& out) {
-  CsvBatchReader reader(in, input_name);
+  io::CsvReader reader(in, input_name);
   const std::map<std::string, double EvalInput::*> numeric = {
       {"a", &EvalInput::a},
       {"b", &EvalInput::b},

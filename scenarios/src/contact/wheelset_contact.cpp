@@ -11,10 +11,10 @@
 #include <stdexcept>
 
 #include "ferro/contact/hertz.hpp"
-#include "ferro/contact/io/hdf5.hpp"
-#include "ferro/contact/io/text_writer.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "ferro/io/hdf5.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 
 namespace ferro::scenarios {

@@ -1,8 +1,8 @@
 #pragma once
 // The one HDF5 layer of ferrodyn (serial HDF5 1.10, C API underneath). Every HDF5 file the
 // program reads or writes goes through it: run outputs, analyses, contact tables, K_ij tables,
-// MIM tables and MIM solutions. It lives in the lowest layer that writes HDF5 (contact/), so every
-// folder above can use it; it depends on nothing else in the project.
+// MIM tables and MIM solutions. It lives in the bottom room io/, which every other folder may
+// use; it depends on nothing else in the project.
 //
 //  - H5File: RAII file handle. Every HDF5 call is checked; a failure throws io::Hdf5Error naming
 //    the operation, the object, the file and the cause reported by the system (e.g. "No space

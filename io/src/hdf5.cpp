@@ -2,7 +2,7 @@
 // from HDF5's error stack (the system's message when the file driver saw one).
 //
 // References: HDF5 1.10 C reference manual (H5F, H5D, H5A, H5E). Known deviations: none.
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -126,7 +126,9 @@ H5File H5File::open_read(const std::string& path) {
   return H5File(id, path);
 }
 
-H5File::H5File(H5File&& o) noexcept : id_(o.id_), path_(std::move(o.path_)) { o.id_ = -1; }
+H5File::H5File(H5File&& o) noexcept : id_(o.id_), path_(std::move(o.path_)) {
+  o.id_ = -1;
+}
 
 H5File& H5File::operator=(H5File&& o) noexcept {
   if (this != &o) {
@@ -225,9 +227,9 @@ void put_attribute(hid_t file, const std::string& path, const std::string& objec
   if (present < 0) fail(what, path);
   if (present > 0) check(H5Adelete(obj.get(), name.c_str()), what, path);
   Id space(check_id(H5Screate(H5S_SCALAR), what, path), H5Sclose);
-  Id attr(check_id(H5Acreate2(obj.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT,
-                              H5P_DEFAULT),
-                   what, path),
+  Id attr(check_id(
+              H5Acreate2(obj.get(), name.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+              what, path),
           H5Aclose);
   check(H5Awrite(attr.get(), mem_type, value), what, path);
 }
@@ -261,8 +263,8 @@ bool H5File::has_attribute(const std::string& object, const std::string& name) c
 
 std::string H5File::string_attribute(const std::string& object, const std::string& name) const {
   const std::string what = "read attribute " + object + "@" + name;
-  Id a(check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
-                what, path_),
+  Id a(check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), what,
+                path_),
        H5Aclose);
   Id ftype(check_id(H5Aget_type(a.get()), what, path_), H5Tclose);
   if (H5Tget_class(ftype.get()) != H5T_STRING || H5Tis_variable_str(ftype.get()) > 0) {
@@ -278,8 +280,8 @@ std::string H5File::string_attribute(const std::string& object, const std::strin
 
 double H5File::number_attribute(const std::string& object, const std::string& name) const {
   const std::string what = "read attribute " + object + "@" + name;
-  Id a(check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
-                what, path_),
+  Id a(check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), what,
+                path_),
        H5Aclose);
   double v = 0.0;
   check(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &v), what, path_);
@@ -288,8 +290,8 @@ double H5File::number_attribute(const std::string& object, const std::string& na
 
 long H5File::integer_attribute(const std::string& object, const std::string& name) const {
   const std::string what = "read attribute " + object + "@" + name;
-  Id a(check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT),
-                what, path_),
+  Id a(check_id(H5Aopen_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT), what,
+                path_),
        H5Aclose);
   Id ftype(check_id(H5Aget_type(a.get()), what, path_), H5Tclose);
   if (H5Tget_class(ftype.get()) != H5T_INTEGER) {
@@ -313,16 +315,17 @@ void write_dataset(hid_t file, const std::string& path, const std::string& datas
                                             what, path, count, product));
   }
   const std::vector<hsize_t> hdims(dims.begin(), dims.end());
-  Id space(check_id(hdims.empty() ? H5Screate(H5S_SCALAR)
-                                  : H5Screate_simple(static_cast<int>(hdims.size()),
-                                                     hdims.data(), nullptr),
+  Id space(check_id(hdims.empty()
+                        ? H5Screate(H5S_SCALAR)
+                        : H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr),
                     what, path),
            H5Sclose);
-  Id d(check_id(H5Dcreate2(file, dataset.c_str(), file_type, space.get(), H5P_DEFAULT,
-                           H5P_DEFAULT, H5P_DEFAULT),
+  Id d(check_id(H5Dcreate2(file, dataset.c_str(), file_type, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                           H5P_DEFAULT),
                 what, path),
        H5Dclose);
-  if (count > 0) check(H5Dwrite(d.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values), what, path);
+  if (count > 0)
+    check(H5Dwrite(d.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values), what, path);
 }
 
 }  // namespace
@@ -412,7 +415,9 @@ ExtendibleSeries H5File::create_series(const std::string& dataset, const std::st
   return series;
 }
 
-void H5File::flush() { check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush", path_); }
+void H5File::flush() {
+  check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush", path_);
+}
 
 ExtendibleSeries::ExtendibleSeries(ExtendibleSeries&& o) noexcept
     : id_(o.id_), name_(std::move(o.name_)), file_(std::move(o.file_)), size_(o.size_) {
@@ -447,8 +452,7 @@ void ExtendibleSeries::append(std::span<const double> values) {
     check(H5Sselect_hyperslab(fspace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr), what,
           file_);
     Id mspace(check_id(H5Screate_simple(1, count, nullptr), what, file_), H5Sclose);
-    check(H5Dwrite(id_, H5T_NATIVE_DOUBLE, mspace.get(), fspace.get(), H5P_DEFAULT,
-                   values.data()),
+    check(H5Dwrite(id_, H5T_NATIVE_DOUBLE, mspace.get(), fspace.get(), H5P_DEFAULT, values.data()),
           what, file_);
   };
   try {

@@ -1,7 +1,7 @@
 // Room left for an output file (see the header).
 //
 // References: POSIX statvfs(3), getrlimit(2). Known deviations: none.
-#include "ferro/contact/io/room.hpp"
+#include "ferro/io/room.hpp"
 
 #include <sys/resource.h>
 #include <sys/stat.h>

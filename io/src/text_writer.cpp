@@ -1,12 +1,12 @@
 // Checked text output (see the header).
 //
 // References: none (file output). Known deviations: none.
-#include "ferro/contact/io/text_writer.hpp"
-
-#include "ferro/contact/io/room.hpp"
+#include "ferro/io/text_writer.hpp"
 
 #include <cerrno>
 #include <cstring>
+
+#include "ferro/io/room.hpp"
 
 namespace ferro::io {
 
@@ -38,8 +38,8 @@ void TextWriter::write(std::string_view text) {
   if (reserve_ > 0 && unchecked_ >= kCheckEvery) {
     const Room room = room_for(path_);
     if (room.bytes < unchecked_ + reserve_) {
-      throw std::runtime_error(fmt::format("cannot write '{}': {} ({} bytes left)", path_,
-                                           room.limit, room.bytes));
+      throw std::runtime_error(
+          fmt::format("cannot write '{}': {} ({} bytes left)", path_, room.limit, room.bytes));
     }
     unchecked_ = 0;
   }
