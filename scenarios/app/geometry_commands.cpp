@@ -100,9 +100,9 @@ PoseResult solve_pose(const fc::WheelRailPair& pair, const PoseInput& in, double
 
 double lead_of(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
                const fc::ContactPoint& p) {
-  const double sgn = p.side == fc::Side::right ? 1.0 : -1.0;
-  const double Y = sgn * (pair.wheel_offset() + p.wheel_y);
-  return p.x + std::sin(pose.yaw) * std::cos(pose.roll) * Y;
+  // The point's distance ahead of its wheel section's centre, which sits Y along the axle.
+  const double Y = fc::side_sign(p.side) * (pair.wheel_offset() + p.wheel_y);
+  return p.x - fc::WheelsetFrame(pose, pair.params().nominal_radius).axle().x() * Y;
 }
 
 constexpr const char* kCsvPointHeader =

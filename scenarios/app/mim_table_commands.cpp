@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cli.hpp"
-#include "ferro/contact/mim_table.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
 #include "ferro/io/text_writer.hpp"
 
 namespace ferro::cli {

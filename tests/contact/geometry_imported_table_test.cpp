@@ -6,14 +6,14 @@
 
 #include <Eigen/Sparse>
 #include <algorithm>
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/imported_contact_table.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
 
 namespace fc = ferro::contact;
 

@@ -1,5 +1,7 @@
 // Tabulated MIM ("mim_table"): interpolated forces against direct MIM solves at off-node
 // points, symmetries, HDF5 round trip, registry.
+#include "ferro/contact/tangential/mim_table.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,9 +10,8 @@
 #include <random>
 #include <string>
 
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/mim_tangential_model.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/mim_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fc = ferro::contact;
 

@@ -12,9 +12,9 @@
 #include <sstream>
 #include <string>
 
-#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/contact/material.hpp"
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 #include "ferro/io/hdf5.hpp"
 
 namespace fs = std::filesystem;

@@ -30,10 +30,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ferro/contact/contact_patch.hpp"
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/vehicle/frames.hpp"
 #include "dynamics.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/normal/contact_patch.hpp"
+#include "ferro/vehicle/frames.hpp"
 
 namespace ferro::vehicle::detail {
 void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinematics& k,

@@ -2,8 +2,10 @@
 // through the one CSV reader (located errors), natural cubic spline per column, frame conversion,
 // normal-law state.
 //
-// References: see ImportedContactTable in contact_sources.hpp.
-// Known deviations: see ImportedContactTable in contact_sources.hpp.
+// References: see ImportedContactTable in imported_contact_table.hpp.
+// Known deviations: see ImportedContactTable in imported_contact_table.hpp.
+
+#include "ferro/contact/geometry/imported_contact_table.hpp"
 
 #include <fmt/format.h>
 
@@ -13,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
 #include "ferro/io/csv.hpp"
 #include "param_spline.hpp"
 
@@ -184,8 +185,8 @@ WheelRailContact ImportedContactTable::wheel_point(const WheelsetPose& pose, Sid
   return c;
 }
 
-void ImportedContactTable::contacts(const WheelsetPose& pose,
-                                    std::vector<WheelRailContact>& out) const {
+void ImportedContactTable::contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out,
+                                    ContactScratch& /*scratch*/) const {
   out.clear();
   for (const Side side : {Side::left, Side::right}) {
     const WheelRailContact c = wheel_point(pose, side);

@@ -85,8 +85,7 @@ SweepPointResult deserialize(const std::string& line, const std::string& where) 
   SweepPointResult r;
   r.index = count(0);
   r.point.speed = number(1);
-  r.point.k.k11 = number(2);
-  r.point.k.k22 = number(3);
+  r.point.k = contact::ReductionFactors::following_k22(number(2), number(3));
   r.outcome = outcome_from(cells[4], where);
   r.period = number(5);
   r.time = number(6);

@@ -20,10 +20,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/mim.hpp"
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/io/csv.hpp"
 #include "ferro/io/text_writer.hpp"
 
