@@ -16,6 +16,7 @@
 #include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/contact/normal/semi_hertz.hpp"
 #include "ferro/contact/tangential/tangential_model.hpp"
+#include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::vehicle::detail {
@@ -33,6 +34,9 @@ struct BodyData {
   std::array<int, 6> q{-1, -1, -1, -1, -1, -1};  ///< position state per DOF
   std::array<int, 6> v{-1, -1, -1, -1, -1, -1};  ///< rate state per DOF
   int spin = -1;                                 ///< spin perturbation state
+  /// Wheelsets on a flexible track: first state of the co-running track under it
+  /// (track::kTrackPositions positions, then their rates); -1 on a rigid track.
+  int track = -1;
   int block_begin = 0, block_end = 0;            ///< state range incl. series-damper states
 };
 
@@ -69,6 +73,9 @@ struct ModelData {
   std::vector<SignalInfo> states, signal_list;
   ContactMechanics contact;
   double nominal_rail_spacing = 1.5;
+  /// The co-running track under every contact wheelset (track structure `discrete`); empty on a
+  /// rigid track.
+  std::optional<track::CoRunningTrackParams> track;
 };
 
 /// Builds and validates the model data (std::invalid_argument naming the field).

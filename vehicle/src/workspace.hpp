@@ -16,6 +16,7 @@
 #include "ferro/contact/normal/semi_hertz.hpp"
 #include "ferro/track/kinematics.hpp"
 #include "ferro/track/track.hpp"
+#include "ferro/track/track_structure.hpp"
 
 namespace ferro::vehicle::detail {
 
@@ -56,6 +57,10 @@ struct Workspace {
   BodyKinematics track_frame;          ///< a suspension element's track-frame end
   WheelRailScratch wheel_rail;
   std::vector<WheelResult> wheels;     ///< signals: 2 per contact body
+  /// Per contact body, the wheels' loads on its left and right rail and the rails' pad forces
+  /// (flexible track).
+  std::vector<std::array<track::RailLoad, 2>> rail_loads;
+  std::vector<std::array<track::PadForce, 2>> pad_forces;
 };
 
 }  // namespace ferro::vehicle::detail

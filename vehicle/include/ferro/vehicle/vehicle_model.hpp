@@ -97,6 +97,7 @@
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/track/track.hpp"
+#include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
 
@@ -115,6 +116,8 @@ struct SpeedProfile {
 
 struct VehicleModelInputs {
   VehicleConfig config;
+  /// What the wheels run on: rigid rails, or a co-running discrete track under every wheelset.
+  track::TrackStructureSpec track_structure;
   ModelSelection selection;
   std::shared_ptr<const track::Track> track;                       ///< null: straight, perfect
   std::shared_ptr<const contact::ContactGeometrySource> geometry;  ///< required
