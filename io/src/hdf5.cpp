@@ -126,6 +126,15 @@ H5File H5File::open_read(const std::string& path) {
   return H5File(id, path);
 }
 
+H5File H5File::open_input(const std::string& path, const std::string& what) {
+  try {
+    return open_read(path);
+  } catch (const Hdf5Error& e) {
+    throw std::invalid_argument(
+        fmt::format("{}: cannot open the {} as an HDF5 file ({})", path, what, e.what()));
+  }
+}
+
 H5File::H5File(H5File&& o) noexcept : id_(o.id_), path_(std::move(o.path_)) {
   o.id_ = -1;
 }

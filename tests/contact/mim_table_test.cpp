@@ -138,8 +138,9 @@ TEST(mim_table, hdf5_round_trip_and_registry) {
   }
   const auto model = fc::make_tangential_model("mim_table", {{"table", path}});
   EXPECT_EQ(model->name(), "mim_table");
+  // A table that cannot be opened is bad input, as every table the user names.
   EXPECT_THROW((void)fc::make_tangential_model("mim_table", {{"table", path + ".missing"}}),
-               std::runtime_error);
+               std::invalid_argument);
   EXPECT_THROW((void)fc::make_tangential_model("mim_table", {{"tabel", path}}),
                std::invalid_argument);
   // nu of the problem must match the table's.

@@ -225,14 +225,7 @@ void ContactTable::save_hdf5(const std::string& path) const {
 }
 
 ContactTable ContactTable::load_hdf5(const std::string& path) {
-  const io::H5File file = [&] {
-    try {
-      return io::H5File::open_read(path);
-    } catch (const io::Hdf5Error& e) {
-      throw std::invalid_argument(fmt::format("{}: cannot open HDF5 contact table ({})", path,
-                                              e.what()));
-    }
-  }();
+  const io::H5File file = io::H5File::open_input(path, "contact table");
   const auto read = [&](const std::string& name, std::size_t expected) {
     if (!file.exists(name))
       throw std::invalid_argument(fmt::format("{}: dataset '{}' missing", path, name));

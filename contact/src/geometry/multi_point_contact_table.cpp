@@ -605,14 +605,7 @@ bool MultiPointContactTable::is_table_of_another_version(const std::string& path
 }
 
 MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path) {
-  const io::H5File file = [&] {
-    try {
-      return io::H5File::open_read(path);
-    } catch (const io::Hdf5Error& e) {
-      throw std::invalid_argument(
-          fmt::format("{}: cannot open as an HDF5 file ({})", path, e.what()));
-    }
-  }();
+  const io::H5File file = io::H5File::open_input(path, "multi-point contact table");
   const auto read_attribute = [&](const std::string& name) {
     if (!file.has_attribute("/", name)) {
       throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));

@@ -180,14 +180,7 @@ ReductionFactors KijTable::interpolate(const std::vector<double>& point,
 }
 
 KijTable KijTable::read_hdf5(const std::string& path) {
-  const io::H5File file = [&] {
-    try {
-      return io::H5File::open_read(path);
-    } catch (const io::Hdf5Error& e) {
-      throw std::invalid_argument(
-          fmt::format("{}: cannot open as an HDF5 file ({})", path, e.what()));
-    }
-  }();
+  const io::H5File file = io::H5File::open_input(path, "K_ij table");
   const auto dataset = [&](const std::string& name, io::Dims* dims) {
     if (!file.exists(name))
       throw std::invalid_argument(fmt::format("{}: missing dataset '{}'", path, name));

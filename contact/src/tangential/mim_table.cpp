@@ -320,7 +320,7 @@ void MimTable::write_hdf5(const std::string& path) const {
 }
 
 MimTable MimTable::read_hdf5(const std::string& path) {
-  const io::H5File file = io::H5File::open_read(path);
+  const io::H5File file = io::H5File::open_input(path, "MIM table");
   const auto attribute = [&](const char* name) {
     if (!file.has_attribute("/", name))
       throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));

@@ -36,6 +36,9 @@ class H5File {
   static H5File create(const std::string& path);
   /// Opens an existing file read-only. Throws Hdf5Error naming it.
   static H5File open_read(const std::string& path);
+  /// Opens an input the user named (a table, a cache) read-only: a file that cannot be opened is
+  /// bad input, std::invalid_argument "<path>: cannot open the <what> as an HDF5 file (<cause>)".
+  static H5File open_input(const std::string& path, const std::string& what);
 
   H5File(H5File&& other) noexcept;
   H5File& operator=(H5File&& other) noexcept;

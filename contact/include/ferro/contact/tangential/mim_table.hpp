@@ -76,8 +76,9 @@ class MimTable {
  public:
   /// Computes every node with the MIM (Hertzian gap, unit load, mu = 1, nu = spec.poisson).
   [[nodiscard]] static MimTable build(const MimTableSpec& spec);
-  /// Reads a table written by write_hdf5; throws std::invalid_argument naming the file and
-  /// dataset when the layout is wrong, std::runtime_error when the file cannot be read.
+  /// Reads a table written by write_hdf5; throws std::invalid_argument naming the file (and the
+  /// dataset) when it cannot be opened or its layout is wrong, io::Hdf5Error when a dataset
+  /// cannot be read.
   [[nodiscard]] static MimTable read_hdf5(const std::string& path);
   void write_hdf5(const std::string& path) const;
 
