@@ -83,19 +83,11 @@ std::span<const NormalModelEntry> normal_models() {
   return kNormalModels;
 }
 
-std::vector<std::string> normal_model_names() {
-  std::vector<std::string> names;
-  for (const NormalModelEntry& e : kNormalModels) names.emplace_back(e.name);
-  return names;
-}
+std::vector<std::string> normal_model_names() { return registry_names(normal_models()); }
 
 std::unique_ptr<NormalContactModel> make_normal_model(std::string_view name,
                                                       const ModelOptions& options) {
-  for (const NormalModelEntry& e : kNormalModels) {
-    if (e.name == name) return e.make(options);
-  }
-  throw std::invalid_argument(fmt::format("unknown normal contact model '{}'; allowed: {}", name,
-                                          fmt::join(normal_model_names(), ", ")));
+  return registry_entry(normal_models(), name, "normal").make(options);
 }
 
 }  // namespace ferro::contact

@@ -45,18 +45,12 @@ std::span<const TangentialModelEntry> tangential_models() {
 }
 
 std::vector<std::string> tangential_model_names() {
-  std::vector<std::string> names;
-  for (const TangentialModelEntry& e : kTangentialModels) names.emplace_back(e.name);
-  return names;
+  return registry_names(tangential_models());
 }
 
 std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
                                                        const ModelOptions& options) {
-  for (const TangentialModelEntry& e : kTangentialModels) {
-    if (e.name == name) return e.make(options);
-  }
-  throw std::invalid_argument(fmt::format("unknown tangential contact model '{}'; allowed: {}",
-                                          name, fmt::join(tangential_model_names(), ", ")));
+  return registry_entry(tangential_models(), name, "tangential").make(options);
 }
 
 }  // namespace ferro::contact

@@ -9,6 +9,7 @@
 
 #include <initializer_list>
 #include <map>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -46,6 +47,26 @@ template <class Value>
   }
   throw std::invalid_argument(fmt::format("{} option '{}': unknown value '{}'; allowed: {}", model,
                                           key, given, fmt::join(names, ", ")));
+}
+
+/// The names of a registry's entries (each with a `name`), in registry order.
+template <class Entry>
+[[nodiscard]] std::vector<std::string> registry_names(std::span<const Entry> entries) {
+  std::vector<std::string> names;
+  for (const Entry& e : entries) names.emplace_back(e.name);
+  return names;
+}
+
+/// The registry entry named `name`; throws std::invalid_argument "unknown <kind> contact model
+/// '<name>'; allowed: <names>".
+template <class Entry>
+[[nodiscard]] const Entry& registry_entry(std::span<const Entry> entries, std::string_view name,
+                                          std::string_view kind) {
+  for (const Entry& e : entries) {
+    if (e.name == name) return e;
+  }
+  throw std::invalid_argument(fmt::format("unknown {} contact model '{}'; allowed: {}", kind, name,
+                                          fmt::join(registry_names(entries), ", ")));
 }
 
 }  // namespace ferro::contact
