@@ -470,13 +470,6 @@ TangentialGridSolution solve_sliding(ComplianceOperator& op, const Field& pressu
   return solve(op, pressure, input.friction, q, false, options, workspace.gmres);
 }
 
-TangentialGridSolution solve_sliding(ComplianceOperator& op, const Field& pressure,
-                                     const SlidingInput& input,
-                                     const TangentialSolverOptions& options) {
-  TangentialWorkspace workspace;
-  return solve_sliding(op, pressure, input, options, workspace);
-}
-
 TangentialGridSolution solve_steady_rolling(ComplianceOperator& op, const Field& pressure,
                                             const RollingInput& input,
                                             const TangentialSolverOptions& options,

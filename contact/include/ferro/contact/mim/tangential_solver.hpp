@@ -119,10 +119,6 @@ struct TangentialWorkspace {
                                                    const SlidingInput& input,
                                                    const TangentialSolverOptions& options,
                                                    TangentialWorkspace& workspace);
-/// Same with a workspace of its own (allocated for this solve).
-[[nodiscard]] TangentialGridSolution solve_sliding(ComplianceOperator& op, const Field& pressure,
-                                                   const SlidingInput& input,
-                                                   const TangentialSolverOptions& options = {});
 
 /// Steady rolling problem on the pressure field `pressure` [Pa] from the normal solve.
 [[nodiscard]] TangentialGridSolution solve_steady_rolling(ComplianceOperator& op,
