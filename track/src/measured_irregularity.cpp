@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "ferro/io/csv.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::track {
 namespace {
@@ -160,23 +161,18 @@ IrregularitySample MeasuredIrregularity::at(double s) const {
     out.gauge = values_[3].back();
     return out;
   }
-  const auto it = std::upper_bound(s_.begin(), s_.end(), s);
-  const std::size_t j = static_cast<std::size_t>(std::distance(s_.begin(), it)) - 1;
+  const numerics::AxisCell cell = numerics::locate(s_, s);
+  const std::size_t j = cell.index;
   const double h = s_[j + 1] - s_[j];
-  const double tau = (s - s_[j]) / h;
-  const double t2 = tau * tau, t3 = t2 * tau;
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + tau, h01 = -2 * t3 + 3 * t2,
-               h11 = t3 - t2;
-  const double g00 = 6 * t2 - 6 * tau, g10 = 3 * t2 - 4 * tau + 1, g01 = -g00,
-               g11 = 3 * t2 - 2 * tau;
+  const numerics::HermiteBasis b(cell.t);
   constexpr std::array<IrregularityChannel, 4> kOrder = {
       IrregularityChannel::kLateral, IrregularityChannel::kVertical,
       IrregularityChannel::kCrossLevel, IrregularityChannel::kGauge};
   for (int c = 0; c < 4; ++c) {
     const auto& y = values_[c];
     const auto& m = slopes_[c];
-    const double v = h00 * y[j] + h10 * h * m[j] + h01 * y[j + 1] + h11 * h * m[j + 1];
-    const double dv = (g00 * y[j] + g01 * y[j + 1]) / h + g10 * m[j] + g11 * m[j + 1];
+    const double v = b.h00 * y[j] + b.h10 * h * m[j] + b.h01 * y[j + 1] + b.h11 * h * m[j + 1];
+    const double dv = (b.g00 * y[j] + b.g01 * y[j + 1]) / h + b.g10 * m[j] + b.g11 * m[j + 1];
     out.add(kOrder[c], v, dv);
   }
   return out;

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "ferro/io/csv.hpp"
-#include "param_spline.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -57,7 +57,7 @@ enum Column {
 struct ImportedContactTable::Data {
   std::vector<double> lateral;
   std::array<std::vector<double>, kColumns> values;
-  std::array<detail::CubicSpline1, kColumns> splines;
+  std::array<numerics::NaturalCubicSpline, kColumns> splines;
 };
 
 ImportedContactTable::ImportedContactTable(const std::string& csv_path) : path_(csv_path) {
@@ -109,7 +109,7 @@ ImportedContactTable::ImportedContactTable(const std::string& csv_path) : path_(
   }
   for (int c = 1; c < kColumns; ++c) {
     data->splines[static_cast<std::size_t>(c)] =
-        detail::CubicSpline1(data->lateral, data->values[static_cast<std::size_t>(c)]);
+        numerics::NaturalCubicSpline(data->lateral, data->values[static_cast<std::size_t>(c)]);
   }
   // The source tool's limit: the magnitude of the first value, applied to |y|, both wheels.
   limit_ = std::min(-data->lateral.front(), data->lateral.back());
@@ -131,7 +131,7 @@ double ImportedContactTable::column(int column, double y_file) const {
     throw std::invalid_argument(
         fmt::format("ImportedContactTable: column {} outside [1, {})", column, kColumns));
   }
-  const detail::CubicSpline1& s = data_->splines[static_cast<std::size_t>(column)];
+  const numerics::NaturalCubicSpline& s = data_->splines[static_cast<std::size_t>(column)];
   double f, df, ddf;
   s.eval(s.segment(y_file), y_file, f, df, ddf);
   return f;

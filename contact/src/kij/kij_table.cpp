@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "ferro/io/hdf5.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 
@@ -138,23 +139,20 @@ ReductionFactors KijTable::interpolate(const std::vector<double>& point,
   }
   for (std::size_t i = 0; i < n; ++i) {
     const auto& ax = axes_[i];
-    double v = point[i];
+    const double v = point[i];
     if (!std::isfinite(v)) {
       throw std::invalid_argument(
           fmt::format("K_ij table: axis '{}' value is not finite", names_[i]));
     }
     if (v < ax.front() || v > ax.back()) clamped = true;
-    v = std::clamp(v, ax.front(), ax.back());
     if (ax.size() == 1) {
       lower[i] = 0;
       weight[i] = 0.0;
       continue;
     }
-    std::size_t j =
-        static_cast<std::size_t>(std::upper_bound(ax.begin(), ax.end(), v) - ax.begin());
-    j = std::clamp<std::size_t>(j, 1, ax.size() - 1);
-    lower[i] = j - 1;
-    weight[i] = (v - ax[j - 1]) / (ax[j] - ax[j - 1]);
+    const numerics::AxisCell cell = numerics::locate(ax, v);
+    lower[i] = cell.index;
+    weight[i] = cell.t;
   }
   if (clamped) ++clamped_;
   ReductionFactors out{0.0, 0.0, 0.0, 0.0};
@@ -341,15 +339,10 @@ ReductionFactors KijPatchLookup::at(const ContactPatch& patch) const {
     const std::vector<double>& x = axes_[a];
     size[a] = x.size();
     const double v = pressure_axis_[a] ? patch.peak_pressure : patch.normal_force;
-    if (x.size() < 2 || !(v > x.front())) continue;
-    if (!(v < x.back())) {
-      cell[a] = x.size() - 2;
-      frac[a] = 1.0;
-      continue;
-    }
-    const auto it = std::upper_bound(x.begin(), x.end(), v);
-    cell[a] = static_cast<std::size_t>(it - x.begin()) - 1;
-    frac[a] = (v - x[cell[a]]) / (x[cell[a] + 1] - x[cell[a]]);
+    if (x.size() < 2) continue;
+    const numerics::AxisCell c = numerics::locate(x, v);
+    cell[a] = c.index;
+    frac[a] = c.t;
   }
   std::array<double, 4> k{0.0, 0.0, 0.0, 0.0};
   for (int c = 0; c < 4; ++c) {

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "ferro/contact/normal/hertz.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -25,11 +26,8 @@ constexpr double kPi = std::numbers::pi;
 double relative_gap(const NormalProblem& p, double z_min, double y) {
   const auto& ys = p.gap_y;
   if (y < ys.front() || y > ys.back()) return INFINITY;
-  const auto it = std::upper_bound(ys.begin(), ys.end(), y);
-  const std::size_t j = it == ys.end() ? ys.size() - 1 : static_cast<std::size_t>(it - ys.begin());
-  const std::size_t i = j - 1;
-  const double w = (y - ys[i]) / (ys[j] - ys[i]);
-  return (1.0 - w) * p.gap_z[i] + w * p.gap_z[j] - z_min;
+  const numerics::AxisCell c = numerics::locate(ys, y);
+  return (1.0 - c.t) * p.gap_z[c.index] + c.t * p.gap_z[c.index + 1] - z_min;
 }
 
 struct StripGrid {

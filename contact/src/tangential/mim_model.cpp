@@ -15,6 +15,7 @@
 #include "ferro/contact/mim/grid.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 
@@ -48,13 +49,7 @@ void check_unit_reduction(const ReductionFactors& k) {
 
 // Linear interpolation of the lateral gap samples (clamped at the ends).
 double lateral_gap(const NormalProblem& g, double y) {
-  const auto& ys = g.gap_y;
-  if (y <= ys.front()) return g.gap_z.front();
-  if (y >= ys.back()) return g.gap_z.back();
-  const auto it = std::upper_bound(ys.begin(), ys.end(), y);
-  const std::size_t i = static_cast<std::size_t>(it - ys.begin()) - 1;
-  const double t = (y - ys[i]) / (ys[i + 1] - ys[i]);
-  return g.gap_z[i] + t * (g.gap_z[i + 1] - g.gap_z[i]);
+  return numerics::interpolate_linear(g.gap_y, g.gap_z, y);
 }
 
 // Full gap of a non-elliptic patch: z = A x^2 + z(y_center + y) on a grid centred on the patch

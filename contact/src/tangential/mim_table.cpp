@@ -22,6 +22,7 @@
 #include "ferro/contact/mim/mim.hpp"
 #include "ferro/contact/tangential/kalker_coefficients.hpp"
 #include "ferro/io/hdf5.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 
@@ -56,11 +57,11 @@ struct AxisWeights {
 
 AxisWeights axis_weights(const std::vector<double>& t, double q) {
   const int n = static_cast<int>(t.size());
-  q = std::clamp(q, t.front(), t.back());
-  int i = static_cast<int>(std::upper_bound(t.begin(), t.end(), q) - t.begin()) - 1;
-  i = std::clamp(i, 0, n - 2);
+  const numerics::AxisCell cell = numerics::locate(t, q);
+  const int i = static_cast<int>(cell.index);
   const double h = t[i + 1] - t[i];
-  const double u = (q - t[i]) / h;
+  const double u = cell.t;
+  // Cubic Hermite value weights, factored (numerics::HermiteBasis holds the expanded form).
   const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u);
   const double h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
   // Derivative at node j as coefficients on nodes (j0, j0+1, j0+2).
@@ -383,16 +384,9 @@ MimTableValue MimTable::at(double ratio, MimTablePoint p) const {
   // Outside the box: scale the creepage vector down onto it (spin in psi at the query a/b, its
   // scale interpolated linearly in log a/b between the ratio nodes).
   const AxisWeights wr = axis_weights(log_ratio_, std::log(ratio));
-  double psi_scale = 0.0;
-  {
-    const double lr = std::clamp(std::log(ratio), log_ratio_.front(), log_ratio_.back());
-    const auto it = std::upper_bound(log_ratio_.begin(), log_ratio_.end(), lr);
-    const std::size_t i = std::min<std::size_t>(
-        static_cast<std::size_t>(std::max<std::ptrdiff_t>(it - log_ratio_.begin() - 1, 0)),
-        log_ratio_.size() - 2);
-    const double t = (lr - log_ratio_[i]) / (log_ratio_[i + 1] - log_ratio_[i]);
-    psi_scale = spin_scale_[i] + t * (spin_scale_[i + 1] - spin_scale_[i]);
-  }
+  const numerics::AxisCell ratio_cell = numerics::locate(log_ratio_, std::log(ratio));
+  const double psi_scale = numerics::lerp(spin_scale_[ratio_cell.index],
+                                          spin_scale_[ratio_cell.index + 1], ratio_cell.t);
   const double psi = p.spin * psi_scale;
   const double over = std::max({p.xi_x / spec_.xi_x.back(), p.xi_y / spec_.xi_y.back(),
                                 psi / spec_.spin.back(), psi / spec_.spin.front()});
