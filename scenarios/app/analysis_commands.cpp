@@ -30,6 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace an = scenarios::analysis;
+namespace fc = ferro::contact;
 using scenarios::Scene;
 
 std::string sibling(const std::string& file, const std::string& suffix) {
@@ -159,7 +160,8 @@ struct RampArgs {
 };
 
 int do_ramp(const RampArgs& a) {
-  const Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
+  const Scene scene = an::with_reduction(scenarios::load_scene(a.scene),
+                                         fc::ReductionFactors::following_k22(a.k11, a.k22));
   an::RampOptions o;
   o.speed_initial = a.speed_initial;
   o.deceleration = a.deceleration;
@@ -245,7 +247,7 @@ an::BranchOptions branch_options(const Scene& scene, const BranchArgs& a) {
   return o;
 }
 
-an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reduction& k,
+an::KijRow run_branch(const Scene& base, const BranchArgs& a, const fc::ReductionFactors& k,
                       bool with_hopf, std::vector<std::string>* names, bool progress) {
   const Scene scene = an::with_reduction(base, k);
   auto o = branch_options(scene, a);
@@ -321,7 +323,8 @@ int do_branch(const BranchArgs& a) {
              scene.path, a.settle.k11, a.settle.k22);
   std::vector<std::string> names;
   const auto row =
-      run_branch(scene, a, {a.settle.k11, a.settle.k22}, !a.no_hopf, &names, true);
+      run_branch(scene, a, fc::ReductionFactors::following_k22(a.settle.k11, a.settle.k22),
+                 !a.no_hopf, &names, true);
   print_branch(row, names);
   const Scene reduced = an::with_reduction(scene, row.k);
   const std::string out =
@@ -343,7 +346,8 @@ struct EigenArgs {
 };
 
 int do_eigen(const EigenArgs& a) {
-  Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
+  Scene scene = an::with_reduction(scenarios::load_scene(a.scene),
+                                   fc::ReductionFactors::following_k22(a.k11, a.k22));
   if (!(a.speed_min > 0.0 && a.speed_max > a.speed_min) || a.points < 2)
     throw std::invalid_argument("--speed-min/--speed-max/--points: need 0 < min < max, points >= 2");
   scene.eigen.speed_min = a.speed_min;
@@ -379,12 +383,13 @@ int do_kij(const KijArgs& a) {
   if (a.coefficient != "both" && a.coefficient != "k11" && a.coefficient != "k22")
     throw std::invalid_argument(
         fmt::format("--coefficient: unknown '{}'; allowed: both, k11, k22", a.coefficient));
-  std::vector<an::Reduction> ks;
+  std::vector<fc::ReductionFactors> ks;
   for (double k : a.k) {
-    an::Reduction r{a.branch.settle.k11, a.branch.settle.k22};
-    if (a.coefficient == "both") r = an::Reduction::uniform(k);
+    fc::ReductionFactors r =
+        fc::ReductionFactors::following_k22(a.branch.settle.k11, a.branch.settle.k22);
+    if (a.coefficient == "both") r = fc::ReductionFactors::uniform(k);
     if (a.coefficient == "k11") r.k11 = k;
-    if (a.coefficient == "k22") r.k22 = k;
+    if (a.coefficient == "k22") r = fc::ReductionFactors::following_k22(r.k11, k);
     ks.push_back(r);
   }
   (void)branch_options(scene, a.branch);  // validate before starting
@@ -530,10 +535,10 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   const auto settle = settle_options(scene, a.settle);
   std::vector<an::SweepPoint> points;
   for (double k : a.k) {
-    an::Reduction r{a.settle.k11, a.settle.k22};
-    if (a.coefficient == "both") r = an::Reduction::uniform(k);
+    fc::ReductionFactors r = fc::ReductionFactors::following_k22(a.settle.k11, a.settle.k22);
+    if (a.coefficient == "both") r = fc::ReductionFactors::uniform(k);
     if (a.coefficient == "k11") r.k11 = k;
-    if (a.coefficient == "k22") r.k22 = k;
+    if (a.coefficient == "k22") r = fc::ReductionFactors::following_k22(r.k11, k);
     (void)an::with_reduction(scene, r);  // validates the factors
     for (int i = 0; i < a.points; ++i) {
       const double v = a.points == 1 ? a.speed_min

@@ -7,6 +7,7 @@
 // std::runtime_error for a failed run -> exit code 1. Handlers return their own exit code.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ using VerbHandler = std::function<int()>;
 /// scene's value), validated with option-named messages.
 void apply_run_overrides(scenarios::Scene& scene, double t_end, double speed,
                          const std::string& tangential);
+
+/// What the environment gives a tangential model the command line names (the program reads the
+/// environment, the library never does): mim_table without a "table" option gets
+/// table = $FERRO_MIM_TABLE when that is set. Other models: `options` unchanged.
+[[nodiscard]] std::map<std::string, std::string> with_environment_options(
+    const std::string& model, std::map<std::string, std::string> options = {});
 
 /// Exit codes of the ferrodyn program.
 inline constexpr int kExitOk = 0;

@@ -68,7 +68,10 @@ void apply_run_overrides(Scene& scene, double t_end, double speed, const std::st
       throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", speed));
     scene.simulation.speed = speed;
   }
-  if (!tangential.empty()) scenarios::override_tangential(scene, tangential, "--tangential");
+  if (!tangential.empty()) {
+    scenarios::override_tangential(scene, tangential, "--tangential",
+                                   with_environment_options(tangential));
+  }
   if (!std::isnan(t_end) || !std::isnan(speed)) {
     const std::string problem = scenarios::track_extent_problem(scene, scene.simulation.t_end);
     if (!problem.empty()) {
@@ -205,7 +208,10 @@ int do_run(const RunArgs& a) {
 
 int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
-  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
+  if (!a.tangential.empty()) {
+    scenarios::override_tangential(scene, a.tangential, "--tangential",
+                                   with_environment_options(a.tangential));
+  }
   if (!std::isnan(a.speed_min)) scene.eigen.speed_min = a.speed_min;
   if (!std::isnan(a.speed_max)) scene.eigen.speed_max = a.speed_max;
   if (a.points > 0) scene.eigen.points = a.points;

@@ -12,7 +12,7 @@
 #include <optional>
 #include <thread>
 
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "located.hpp"
 #include "yaml_values.hpp"
 
@@ -326,10 +326,11 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   }
   if (r.has("reduction")) {
     MapReader k = r.map("reduction");
-    const char* names[] = {"k11", "k22", "k23", "k33"};
-    for (int i = 0; i < 4; ++i) {
-      w.reduction[static_cast<std::size_t>(i)] = k.number_or(names[i], 1.0);
-    }
+    const std::pair<const char*, double*> factors[] = {{"k11", &w.reduction.k11},
+                                                       {"k22", &w.reduction.k22},
+                                                       {"k23", &w.reduction.k23},
+                                                       {"k33", &w.reduction.k33}};
+    for (const auto& [name, value] : factors) *value = k.number_or(name, 1.0);
     k.finish();
   } else {
     r.allow("reduction");

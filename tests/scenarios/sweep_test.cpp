@@ -52,7 +52,7 @@ TEST(SweepJournal, RecordsExactlyAndRefusesAnotherSweep) {
   fs::remove_all(dir);
   SweepPointResult r;
   r.index = 7;
-  r.point = {38.123456789012345, {0.9, 0.7}};
+  r.point = {38.123456789012345, contact::ReductionFactors::following_k22(0.9, 0.7)};
   r.outcome = Oscillation::kSteady;
   r.amplitude = {1.0 / 3.0, 2e-7, NAN};
   r.period = 0.4567891234567891;
@@ -66,7 +66,7 @@ TEST(SweepJournal, RecordsExactlyAndRefusesAnotherSweep) {
   ASSERT_EQ(loaded.size(), 1u);
   const auto& l = loaded.at(7);
   EXPECT_EQ(l.point.speed, r.point.speed);  // exact: 17 significant digits
-  EXPECT_EQ(l.point.k.k22, 0.7);
+  EXPECT_EQ(l.point.k, r.point.k);          // K23 and K33 follow K22 as they did when run
   EXPECT_EQ(l.amplitude[0], r.amplitude[0]);
   EXPECT_TRUE(std::isnan(l.amplitude[2]));
   EXPECT_EQ(l.period, r.period);

@@ -35,8 +35,8 @@ void write_ramp(const Scene& scene, const RampResult& r, const RampOptions& o,
   f.set_attribute("/ramp", "threshold", o.threshold);
   f.set_attribute("/ramp", "deceleration", o.deceleration);
   f.set_attribute("/ramp", "speed_initial", o.speed_initial);
-  f.set_attribute("/ramp", "k11", scene.contact.creep.k11);
-  f.set_attribute("/ramp", "k22", scene.contact.creep.k22);
+  f.set_attribute("/ramp", "k11", scene.contact.creep.reduction.k11);
+  f.set_attribute("/ramp", "k22", scene.contact.creep.reduction.k22);
   f.set_attribute("/", "status", std::string(r.completed ? "completed" : "solver_failure"));
   f.set_attribute("/", "status_message", r.message);
 }
@@ -82,8 +82,8 @@ void write_branch(const Scene& scene, const BranchResult& b,
   f.set_attribute("/branch", "amplitude_squared_zero", b.amplitude_squared_zero);
   f.set_attribute("/branch", "supercritical", static_cast<long>(b.supercritical));
   f.set_attribute("/branch", "hopf_speed", hopf_speed.value_or(NAN));
-  f.set_attribute("/branch", "k11", scene.contact.creep.k11);
-  f.set_attribute("/branch", "k22", scene.contact.creep.k22);
+  f.set_attribute("/branch", "k11", scene.contact.creep.reduction.k11);
+  f.set_attribute("/branch", "k22", scene.contact.creep.reduction.k22);
   f.set_attribute("/", "status", std::string("completed"));
 }
 

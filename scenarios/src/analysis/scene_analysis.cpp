@@ -9,17 +9,14 @@
 
 namespace ferro::scenarios::analysis {
 
-Scene with_reduction(Scene scene, const Reduction& k) {
-  const double k23 = std::isnan(k.k23) ? k.k22 : k.k23;
-  const double k33 = std::isnan(k.k33) ? k.k22 : k.k33;
+Scene with_reduction(Scene scene, const contact::ReductionFactors& k) {
   for (const auto& [name, v] : {std::pair{"k11", k.k11}, std::pair{"k22", k.k22},
-                                std::pair{"k23", k23}, std::pair{"k33", k33}}) {
+                                std::pair{"k23", k.k23}, std::pair{"k33", k.k33}}) {
     if (!(v > 0.0 && v <= 1.0))
       throw std::invalid_argument(fmt::format("reduction factor {} = {}: allowed (0, 1]", name, v));
   }
-  scene.contact.creep.k11 = k.k11;
-  scene.contact.creep.k22 = k.k22;
-  scene.model.vehicle.wheel_rail.reduction = {k.k11, k.k22, k23, k33};
+  scene.contact.creep.reduction = k;
+  scene.model.vehicle.wheel_rail.reduction = k;
   return scene;
 }
 

@@ -5,15 +5,17 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/run.hpp"
@@ -65,22 +67,35 @@ std::string serialize(const SweepPointResult& r) {
 }
 
 SweepPointResult deserialize(const std::string& line, const std::string& where) {
-  std::istringstream in(line);
+  const std::vector<std::string> cells = io::split_cells(line, io::CsvFormat::blanks());
+  const auto malformed = [&](const char* what) {
+    return std::invalid_argument(fmt::format("{}: {} sweep record", where, what));
+  };
+  const auto number = [&](std::size_t i) {
+    const std::optional<double> v = io::parse_number(cells[i]);
+    if (!v) throw malformed("malformed");
+    return *v;
+  };
+  const auto count = [&](std::size_t i) {
+    const double v = number(i);
+    if (!(v >= 0.0 && v <= 1e15 && v == std::floor(v))) throw malformed("malformed");
+    return static_cast<std::size_t>(v);
+  };
+  if (cells.size() < 10) throw malformed("malformed");
   SweepPointResult r;
-  std::string outcome, period;
-  std::size_t n = 0;
-  in >> r.index >> r.point.speed >> r.point.k.k11 >> r.point.k.k22 >> outcome >> period >>
-      r.time >> r.rhs_evaluations >> r.cpu_seconds >> n;
-  if (!in || n > 1000) throw std::invalid_argument(fmt::format("{}: malformed sweep record", where));
-  r.period = period == "nan" ? NAN : std::stod(period);
-  r.outcome = outcome_from(outcome, where);
+  r.index = count(0);
+  r.point.speed = number(1);
+  r.point.k = contact::ReductionFactors::following_k22(number(2), number(3));
+  r.outcome = outcome_from(cells[4], where);
+  r.period = number(5);
+  r.time = number(6);
+  r.rhs_evaluations = static_cast<long>(count(7));
+  r.cpu_seconds = number(8);
+  const std::size_t n = count(9);
+  if (n > 1000) throw malformed("malformed");
+  if (cells.size() != 10 + n) throw malformed("truncated");
   r.amplitude.resize(n);
-  for (auto& a : r.amplitude) {
-    std::string tok;
-    in >> tok;
-    if (!in) throw std::invalid_argument(fmt::format("{}: truncated sweep record", where));
-    a = tok == "nan" ? NAN : std::stod(tok);
-  }
+  for (std::size_t i = 0; i < n; ++i) r.amplitude[i] = number(10 + i);
   return r;
 }
 
@@ -131,9 +146,10 @@ std::map<std::size_t, SweepPointResult> SweepJournal::load() const {
   for (const auto& e : fs::directory_iterator(folder_)) {
     const auto name = e.path().filename().string();
     if (name.rfind("point_", 0) != 0 || e.path().extension() != ".txt") continue;
-    std::ifstream in(e.path());
+    io::CsvReader record =
+        io::CsvReader::open(e.path().string(), io::CsvFormat::blanks(), "sweep record");
     std::string line;
-    std::getline(in, line);
+    if (!record.next_line(line)) throw std::invalid_argument(record.located("empty sweep record"));
     auto r = deserialize(line, e.path().string());
     out[r.index] = std::move(r);
   }

@@ -24,7 +24,7 @@ void write_branch(const Scene& scene, const BranchResult& b,
 
 /// One row of a reduction-factor study.
 struct KijRow {
-  Reduction k;
+  contact::ReductionFactors k;
   BranchResult branch;
   std::optional<double> hopf_speed;  ///< [m/s]
 };

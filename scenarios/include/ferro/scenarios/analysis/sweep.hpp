@@ -20,7 +20,7 @@ namespace ferro::scenarios::analysis {
 
 struct SweepPoint {
   double speed = 0.0;  ///< [m/s]
-  Reduction k;
+  contact::ReductionFactors k;
 };
 
 struct SweepPointResult {
