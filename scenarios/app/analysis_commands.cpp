@@ -372,12 +372,7 @@ int do_eigen(const EigenArgs& a) {
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.k11, a.k22);
-  if (r.critical_speed) {
-    fmt::print("  Hopf speed (least damped mode crosses zero): {:.4f} m/s = {:.2f} km/h\n",
-               *r.critical_speed, *r.critical_speed * 3.6);
-  } else {
-    fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", a.speed_min, a.speed_max);
-  }
+  print_eigen_report(scene, r, 16);
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_eig.h5") : a.output;
   scenarios::write_eigen_report(scene, r, out);
   fmt::print("  output    {}\n", out);
@@ -715,6 +710,88 @@ void add_k_options(CLI::App* c, std::vector<double>& k, std::string& coefficient
 }
 
 }  // namespace
+
+void print_eigen_report(const Scene& scene, const scenarios::EigenReport& r,
+                        std::size_t max_rows) {
+  using vehicle::ModeClass;
+  const auto cell = [](const vehicle::Mode& m) {
+    return std::isnan(m.damping_ratio) ? fmt::format("{:>10} {:>8}", "-", "-")
+                                       : fmt::format("{:>+10.5f} {:>8.3f}", m.damping_ratio,
+                                                     m.frequency_hz);
+  };
+  const bool classified = !r.sweep.empty() && r.sweep.front().least_damped.kind !=
+                                                  ModeClass::unclassified;
+  const std::size_t stride = std::max<std::size_t>(1, (r.sweep.size() + max_rows - 1) / max_rows);
+  if (classified) {
+    // Classes other than hunting and contact only where the model has such modes.
+    std::vector<ModeClass> shown = {ModeClass::hunting, ModeClass::contact};
+    for (const auto c : {ModeClass::longitudinal, ModeClass::body, ModeClass::track}) {
+      for (const auto& p : r.sweep) {
+        if (!std::isnan(p.of(c).damping_ratio)) {
+          shown.push_back(c);
+          break;
+        }
+      }
+    }
+    fmt::print("  hunting mode (followed down from the highest speed by its shape) and the least "
+               "damped mode of each other class: damping ratio, frequency [Hz]; shapes as "
+               "kinetic-energy shares\n");
+    fmt::print("  {:>8} {:>8}", "V [m/s]", "V [km/h]");
+    for (const auto c : shown) fmt::print(" | {:<19}", vehicle::to_string(c));
+    fmt::print(" | hunting mode shape\n");
+    for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
+      const auto& p = r.sweep[i];
+      fmt::print("  {:>8.3f} {:>8.2f}", p.speed, p.speed * 3.6);
+      for (const auto c : shown) fmt::print(" | {}", cell(c == ModeClass::hunting ? p.hunting : p.of(c)));
+      fmt::print(" | {}{}\n", p.hunting.shape(),
+                 p.hunting_correlation < vehicle::kShapeTracked
+                     ? " (branch lost above: least damped hunting-class mode)"
+                     : "");
+    }
+  } else {
+    fmt::print("  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
+               "freq [Hz]");
+    for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
+      const auto& p = r.sweep[i];
+      fmt::print("  {:>10.3f} {:>10.2f} {:>+14.5f} {:>12.4f}\n", p.speed, p.speed * 3.6,
+                 p.least_damped.damping_ratio, p.least_damped.frequency_hz);
+    }
+  }
+  if (r.critical_speed) {
+    fmt::print("  Hopf speed ({} mode crosses zero damping): {:.6f} m/s = {:.3f} km/h\n",
+               classified ? "a hunting" : "the least damped", *r.critical_speed,
+               *r.critical_speed * 3.6);
+  } else {
+    fmt::print("  no {}critical speed in [{:g}, {:g}] m/s\n", classified ? "hunting " : "",
+               scene.eigen.speed_min, scene.eigen.speed_max);
+  }
+  if (classified) {
+    // Other classes that are unstable somewhere: reported, not taken for hunting.
+    for (const auto c : {ModeClass::contact, ModeClass::longitudinal, ModeClass::body,
+                         ModeClass::track}) {
+      for (const auto& p : r.sweep) {
+        if (p.of(c).damping_ratio <= -vehicle::kNeutralDamping) {
+          fmt::print("  note      a {} mode is unstable at {:.3f} m/s ({:.3f} Hz, damping {:+.5f}, "
+                     "{})\n",
+                     vehicle::to_string(c), p.speed, p.of(c).frequency_hz, p.of(c).damping_ratio,
+                     p.of(c).shape());
+          break;
+        }
+      }
+    }
+    if (!r.modes_at_scene_speed.empty()) {
+      fmt::print("  modes at the scene's speed {:.3f} m/s, least damped first (up to 12):\n",
+                 scene.simulation.speed);
+      std::size_t shown = 0;
+      for (const auto& m : r.modes_at_scene_speed) {
+        if (m.eigenvalue.imag() < 0.0) continue;  // one of each complex pair
+        fmt::print("    {:<12} {:>+10.5f} {:>9.3f} Hz  {}\n", vehicle::to_string(m.kind),
+                   m.damping_ratio, m.frequency_hz, m.shape());
+        if (++shown == 12) break;
+      }
+    }
+  }
+}
 
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   auto d = std::make_shared<DerailArgs>();

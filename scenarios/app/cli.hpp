@@ -17,6 +17,7 @@ class Option;
 
 namespace ferro::scenarios {
 struct Scene;
+struct EigenReport;
 }
 
 namespace ferro::cli {
@@ -27,6 +28,13 @@ using VerbHandler = std::function<int()>;
 /// scene's value), validated with option-named messages.
 void apply_run_overrides(scenarios::Scene& scene, double t_end, double speed,
                          const std::string& tangential);
+
+/// The eigenvalue sweep as `eig` and `critical-speed eigen` print it: per speed (at most
+/// `max_rows`, evenly strided) the least damped hunting mode (damping ratio, frequency, shape)
+/// and the least damped mode of each other class apart; the Hopf speed (a hunting mode
+/// crossing zero); the least damped modes at the scene's own speed.
+void print_eigen_report(const scenarios::Scene& scene, const scenarios::EigenReport& report,
+                        std::size_t max_rows);
 
 /// Exit codes of the ferrodyn program.
 inline constexpr int kExitOk = 0;

@@ -59,6 +59,35 @@ LateralStates lateral_states(const vehicle::OdeSystem& system) {
   return out;
 }
 
+vehicle::ModeShapeInput mode_shapes(const Scene& scene, const vehicle::OdeSystem& system) {
+  const auto mass = [&scene](const std::string& body, const std::string& dof) -> double {
+    if (scene.model.type == "suspended_wheelset") {
+      if (body != "wheelset") return NAN;
+      if (dof == "y") return scene.model.wheelset.mass;
+      if (dof == "yaw") return scene.model.wheelset.yaw_inertia;
+      return NAN;
+    }
+    for (const auto& b : scene.model.vehicle.bodies) {
+      if (b.name != body) continue;
+      if (dof == "x" || dof == "y" || dof == "z") return b.mass;
+      if (dof == "roll") return b.inertia[0];
+      if (dof == "pitch" || dof == "spin") return b.inertia[1];
+      if (dof == "yaw") return b.inertia[2];
+    }
+    return NAN;
+  };
+  return vehicle::mode_shape_input(system.state_info(), mass);
+}
+
+vehicle::LinearisationAtSpeed with_mode_shapes(const Scene& scene,
+                                               vehicle::LinearisationAtSpeed family) {
+  return [scene, family = std::move(family)](double v) {
+    auto lin = family(v);
+    lin.shapes = mode_shapes(scene, *lin.system);
+    return lin;
+  };
+}
+
 std::vector<double> disturbed_state(const Scene& scene, const vehicle::OdeSystem& system,
                                     double lateral_offset) {
   auto x = initial_state(scene, system);
