@@ -184,8 +184,13 @@ std::unique_ptr<TangentialModel> make_tangential_model(std::string_view name,
       {"chopaya", SaturationLaw::kChopaya}};
   for (const auto& [law_name, law] : laws) {
     if (name == law_name) {
-      check_option_keys(name, options, {"coefficients"});
-      return std::make_unique<SaturatedCreepModel>(law, source);
+      check_option_keys(name, options, {"coefficients", "spin_moment"});
+      const std::string spin = option_string(options, "spin_moment", "true");
+      if (spin != "true" && spin != "false") {
+        throw std::invalid_argument(fmt::format(
+            "{} option 'spin_moment': unknown value '{}'; allowed: true, false", name, spin));
+      }
+      return std::make_unique<SaturatedCreepModel>(law, source, spin == "true");
     }
   }
   if (name == "polach") {

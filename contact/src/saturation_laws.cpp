@@ -95,6 +95,7 @@ TangentialSolution SaturatedCreepModel::solve(const TangentialProblem& problem) 
     const double u = saturation_ratio(law_, std::hypot(creep.force_x, creep.force_y) / limit);
     out.moment_z = saturated_spin_moment(k, cr, factor, limit, u);
   }
+  if (!spin_moment_) out.moment_z = 0.0;
   return out;
 }
 

@@ -45,13 +45,17 @@ enum class SaturationLaw { kNone, kLinear, kVermeulenJohnson, kShenHedrickElkins
 
 class SaturatedCreepModel final : public TangentialModel {
  public:
-  SaturatedCreepModel(SaturationLaw law, CoefficientSource source) : law_(law), source_(source) {}
+  /// `spin_moment` false: no moment about the contact normal (a source model that neglects it,
+  /// as DYTSI's Shen-Hedrick-Elkins law does); the forces are unchanged.
+  SaturatedCreepModel(SaturationLaw law, CoefficientSource source, bool spin_moment = true)
+      : law_(law), source_(source), spin_moment_(spin_moment) {}
   [[nodiscard]] std::string_view name() const override;
   [[nodiscard]] TangentialSolution solve(const TangentialProblem& problem) const override;
 
  private:
   SaturationLaw law_;
   CoefficientSource source_;
+  bool spin_moment_ = true;
 };
 
 }  // namespace ferro::contact

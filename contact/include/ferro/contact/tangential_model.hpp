@@ -77,7 +77,8 @@ class TangentialModel {
 [[nodiscard]] std::vector<std::string> tangential_model_names();
 
 /// Creates a model. Common option: "coefficients" = kalker_table (default) | voco_fit.
-/// polach: "k_a", "k_s" (default 1), "friction_ratio" (A, default 1), "friction_decay" (B [s/m],
+/// linear_saturated, vermeulen_johnson, shen_hedrick_elkins, chopaya: "spin_moment" = true
+/// (default) | false (no moment about the contact normal). polach: "k_a", "k_s" (default 1), "friction_ratio" (A, default 1), "friction_decay" (B [s/m],
 /// default 0). fastsim: "mx", "my" (default 20, 20),
 /// "flexibility" = three (default) | weighted | adaptive, "stiffening" (adaptive, default 0.05),
 /// "bound" = parabolic (default) | elliptic. fastrip: "mx", "my" (default 12, 12),
