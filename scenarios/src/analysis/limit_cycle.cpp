@@ -405,9 +405,13 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
   r.message = fmt::format("not settled after {} s", options.max_time);
   r.fits.assign(m, AmplitudeEquation{});
   std::vector<Oscillation> heading(m, Oscillation::kDecaying);
+  const double largest =
+      *std::max_element(last_segment_amplitude.begin(), last_segment_amplitude.end());
   for (std::size_t j = 0; j < m; ++j) {
     const double a = last_segment_amplitude[j];
-    if (!(a >= options.zero_amplitude)) {
+    // A state at rest, or negligible beside the largest oscillation (a motion the others force
+    // on it), does not decide: its trend is noise on the scale of the vehicle's oscillation.
+    if (!(a >= options.zero_amplitude) || a < kNegligibleShare * largest) {
       heading[j] = Oscillation::kDecayed;
       continue;
     }

@@ -133,7 +133,8 @@ struct SettleResult {
 /// leaves max_amplitude; decayed when every observed amplitude is below zero_amplitude; steady
 /// when the largest oscillation (the holder) has converged within the segment and agrees with
 /// its own amplitude of the segment before, and every other observed state has converged too
-/// or is below 1 % of the holder's amplitude (a dying transient); at the time limit, each observed state is
+/// or is below 1 % of the holder's amplitude (a dying transient); at the time limit, each
+/// observed state not negligible beside the largest (1 %: a motion the others force on it) is
 /// classified by its fitted amplitude equation (or trend) and the system takes the most
 /// sustained of them. So a vehicle whose rear bogie keeps hunting while the front one decays
 /// is sustained, held by a rear wheelset. Throws std::invalid_argument for bad options, and
