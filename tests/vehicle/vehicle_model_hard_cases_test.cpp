@@ -56,11 +56,13 @@ std::shared_ptr<track::Track> straight_with(std::shared_ptr<const track::Irregul
 struct SimRun {
   IntegrationResult result;
   double max_abs_lateral = 0.0;      // largest |y| of any wheelset [m]
+  double late_abs_lateral = 0.0;     // largest |y| of any wheelset over the last 0.5 s [m]
   double min_wheel_normal = 1e300;   // smallest wheel normal force seen [N]
   double max_wheel_normal = 0.0;
 };
 
 SimRun simulate(const VehicleModel& m, std::vector<double> x0, double t_end) {
+  constexpr double kLateWindow = 0.5;  // [s]
   IntegratorSettings s;
   s.method = "cvode_bdf";
   s.rtol = 1e-6;
@@ -85,8 +87,9 @@ SimRun simulate(const VehicleModel& m, std::vector<double> x0, double t_end) {
     for (std::size_t w = 1; w <= 4; ++w) {
       const int iy = m.state_index("wheelset_" + std::to_string(w), Dof::y);
       if (iy >= 0) {
-        run.max_abs_lateral =
-            std::max(run.max_abs_lateral, std::abs(x[static_cast<std::size_t>(iy)]));
+        const double y = std::abs(x[static_cast<std::size_t>(iy)]);
+        run.max_abs_lateral = std::max(run.max_abs_lateral, y);
+        if (t >= t_end - kLateWindow) run.late_abs_lateral = std::max(run.late_abs_lateral, y);
       }
     }
     return true;
@@ -130,8 +133,10 @@ TEST(VehicleModelHardCases, wheelset_dropped_onto_the_rails_lands_and_settles) {
 
 TEST(VehicleModelHardCases, severe_twist_lifts_a_wheel_without_stalling) {
   // Cross-level defect of 100 mm over 5 m (twist up to 63 mm/m, far beyond EN 14363's limits)
-  // under the leading bogie at 10 m/s. Conical wheels have no flange: the lateral bound is the
-  // cone's own (the cross-level tilts the wheelsets and gravity pushes them sideways).
+  // under the leading bogie at 10 m/s. Conical wheels have no flange, so nothing but the creep
+  // forces bounds the lateral motion: the cross-level tilts the wheelsets, gravity pushes them
+  // sideways (the leading bogie's wheelsets swing out by about 50 mm), and once the defect has
+  // passed (at 0.8 s) the creep forces must bring them back: the swing decays.
   track::IsolatedDefectSpec d;
   d.channel = track::IrregularityChannel::kCrossLevel;
   d.amplitude = 0.100;
@@ -144,7 +149,12 @@ TEST(VehicleModelHardCases, severe_twist_lifts_a_wheel_without_stalling) {
   const SimRun r = simulate(m, static_equilibrium(m), 2.0);
   ASSERT_EQ(r.result.status, IntegrationResult::Status::kCompleted) << r.result.message;
   EXPECT_EQ(r.min_wheel_normal, 0.0);  // a wheel lifted
-  EXPECT_LT(r.max_abs_lateral, 5.0 * kFlangeway);
+  EXPECT_GT(r.max_abs_lateral, kFlangeway);  // the defect threw the bogie sideways
+  // Decaying, not running away: over the last 0.5 s (0.7 s after the defect has passed) the
+  // lateral excursion is below half the peak. Far below the Hopf speed the kinematic
+  // oscillation is damped by the creep forces (measured: 50 mm peak, 21 mm in the last 0.5 s);
+  // a runaway keeps or grows its amplitude.
+  EXPECT_LT(r.late_abs_lateral, 0.5 * r.max_abs_lateral);
 }
 
 TEST(VehicleModelHardCases, low_and_high_friction_through_an_alignment_defect) {
