@@ -18,6 +18,7 @@
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/run.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -118,6 +119,55 @@ TEST(ManchesterModes, hunting_mode_at_every_speed_and_contact_modes_apart) {
               f_bounce, f_roll, bounce, roll);
   EXPECT_EQ(bounce, 4);
   EXPECT_EQ(roll, 4);
+}
+
+// On the co-running flexible track (track::TrackStructureSpec discrete: a rail body per side and
+// a sleeper under every wheelset) the model gains 36 track positions (rails on their pads,
+// sleepers on the ballast). Their modes must be classed as track modes and never taken for
+// hunting, and a hunting mode must still be found beside them: lateral, carried by the
+// wheelsets' lateral/yaw motion with the frames, at a few Hz.
+TEST(ManchesterModes, track_modes_are_their_own_class_on_a_flexible_track) {
+  const Scene s = manchester();
+  const double v = 80.0;
+  const auto resources = build_resources(s);
+  vehicle::VehicleModelInputs in;
+  in.config = s.model.vehicle;
+  in.selection = s.model.selection;
+  in.track = resources.track;
+  in.geometry = resources.geometry;
+  in.speed.initial = v;
+  in.track_structure.kind = track::TrackStructureSpec::Kind::discrete;
+  const vehicle::VehicleModel model(std::move(in));
+  const auto x_eq = vehicle::static_equilibrium(model, 0.0);
+  const auto shapes = analysis::mode_shapes(s, model);
+  const auto modes = vehicle::linear_modes(model, 0.0, x_eq, shapes);
+  int track_modes = 0;
+  const vehicle::Mode* hunting = nullptr;
+  const vehicle::Mode* least_damped_track = nullptr;
+  for (const auto& m : modes) {
+    const double track_share = m.participation[static_cast<std::size_t>(DofGroup::track)];
+    if (track_share >= vehicle::kDominantShare) {
+      EXPECT_EQ(m.kind, ModeClass::track) << m.frequency_hz << " Hz";
+    }
+    if (m.kind == ModeClass::track) {
+      ++track_modes;
+      if (least_damped_track == nullptr) least_damped_track = &m;
+    }
+    if (hunting == nullptr && m.kind == ModeClass::hunting && m.frequency_hz > 1.0)
+      hunting = &m;
+  }
+  ASSERT_NE(hunting, nullptr);
+  ASSERT_NE(least_damped_track, nullptr);
+  std::printf("[ figures  ] V %.0f on the flexible track: least damped hunting mode %+.5f %.3f Hz "
+              "(%s); %d track modes, the least damped %+.5f %.1f Hz (%s)\n",
+              v, hunting->damping_ratio, hunting->frequency_hz, hunting->shape().c_str(),
+              track_modes, least_damped_track->damping_ratio, least_damped_track->frequency_hz,
+              least_damped_track->shape().c_str());
+  // 4 wheelsets x 9 track positions: at least 36 modes (a complex pair counts twice).
+  EXPECT_GE(track_modes, 36);
+  EXPECT_LT(hunting->frequency_hz, 10.0);
+  EXPECT_GT(hunting->participation[static_cast<std::size_t>(DofGroup::wheelset_lateral_yaw)], 0.3);
+  EXPECT_LT(hunting->participation[static_cast<std::size_t>(DofGroup::track)], 0.1);
 }
 
 }  // namespace

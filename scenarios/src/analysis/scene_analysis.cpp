@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "ferro/scenarios/model_factory.hpp"
+#include "ferro/track/track_structure.hpp"
+#include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::scenarios::analysis {
 
@@ -60,7 +63,26 @@ LateralStates lateral_states(const vehicle::OdeSystem& system) {
 }
 
 vehicle::ModeShapeInput mode_shapes(const Scene& scene, const vehicle::OdeSystem& system) {
-  const auto mass = [&scene](const std::string& body, const std::string& dof) -> double {
+  // The co-running track's lumped masses, when the model runs on a flexible track.
+  std::optional<track::CoRunningTrackParams> track_masses;
+  if (const auto* model = dynamic_cast<const vehicle::VehicleModel*>(&system)) {
+    const auto& in = model->inputs();
+    if (in.track_structure.flexible()) {
+      const double spacing = in.track ? in.track->alignment().design().rail_spacing : 1.5;
+      track_masses = track::co_running_equivalent(in.track_structure.ballasted, spacing);
+    }
+  }
+  const auto mass = [&scene, &track_masses](const std::string& body,
+                                            const std::string& dof) -> double {
+    if (body.rfind("track.", 0) == 0) {
+      // "track.<wheelset>.<left_rail | right_rail | sleeper>", dof y, z or roll.
+      if (!track_masses) return NAN;
+      const bool rail = body.ends_with("_rail");
+      if (dof == "y") return rail ? track_masses->rail_mass_lateral : track_masses->sleeper_mass_lateral;
+      if (dof == "z") return rail ? track_masses->rail_mass_vertical : track_masses->sleeper_mass_vertical;
+      if (dof == "roll") return rail ? track_masses->rail_roll_inertia : track_masses->sleeper_roll_inertia;
+      return NAN;
+    }
     if (scene.model.type == "suspended_wheelset") {
       if (body != "wheelset") return NAN;
       if (dof == "y") return scene.model.wheelset.mass;

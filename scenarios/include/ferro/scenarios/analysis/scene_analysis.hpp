@@ -43,8 +43,9 @@ struct LateralStates {
 /// Shape input of the modes of a scene's system (vehicle::ModeShapeInput): each velocity state's
 /// generalised mass from the scene's model description (a vehicle's bodies: mass for x, y, z,
 /// the inertia about the axis for roll, pitch, yaw, the wheelset's spin inertia for its spin
-/// perturbation; the suspended wheelset's mass and yaw inertia); states the description does
-/// not weigh take vehicle::mode_shape_input()'s fallback.
+/// perturbation; the suspended wheelset's mass and yaw inertia; on a flexible track the
+/// co-running track's rail and sleeper masses and roll inertias, track::co_running_equivalent);
+/// states the description does not weigh take vehicle::mode_shape_input()'s fallback.
 [[nodiscard]] vehicle::ModeShapeInput mode_shapes(const Scene& scene,
                                                   const vehicle::OdeSystem& system);
 
