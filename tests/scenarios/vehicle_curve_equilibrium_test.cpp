@@ -28,7 +28,7 @@ constexpr double kRailSpacing = 1.5;  // [m], cant -> cant angle (track.rail_spa
 // 10.8 m / R (18 mrad at 600 m, 72 mrad at 150 m), so the wheels' longitudinal creep forces
 // leak into the lateral sum by that angle times their size. With the wheelsets free to spin
 // and every bogie frame and wheelset free lengthwise (the vehicle file's default) those forces
-// are small: measured 7.5e-6 of the weight at 19.8 m/s in the 600 m curve, 3.0e-5 at rest in
+// are small: measured 7.3e-6 of the weight at 19.8 m/s in the 600 m curve, 3.6e-5 at rest in
 // the 150 m one (with the spin held: 6.9e-4 at 19.8 m/s; with x held: 3.2e-3 in the 150 m
 // curve).
 constexpr double kStaticSumTol = 1e-3;
