@@ -162,7 +162,7 @@ TEST_F(SweepCli, SerialThreadsResumeAndMpiAgree) {
 TEST_F(SweepCli, ManchesterVehicleThreadsAndMpiAgreeWithSerial) {
   // The whole Manchester vehicle of the thesis setup (bogie frames and wheelsets free
   // lengthwise, wheelsets free to spin, multi-point contact table, chopaya, discrete track, bdf2
-  // at 1 ms): a short version of the 60-speed sweep, one speed below the Hopf speed (71.2 m/s)
+  // at 1 ms): a short version of the 60-speed sweep, one speed below the Hopf speed (72.8 m/s)
   // and one well above it (the hunting mode grows slowly near it), each 2 s from the 6 mm
   // offset. Every point is an
   // independent run with the same inputs, so threads and ranks must give the serial numbers
