@@ -110,13 +110,19 @@ BodyBlock read_body(MapReader b, BodyKind kind) {
     out.inertia[2] = in.number("yaw");
     in.finish();
   }
+  // Default degrees of freedom: every body free but the car body's x (the vehicle's
+  // longitudinal position, neutral: nothing holds it lengthwise) and the wheelset's pitch (its
+  // rotation about the axle is the spin). Bogie frames and wheelsets move lengthwise on the
+  // secondary and primary longitudinal suspension, and the wheelsets' spin speed is free, so
+  // longitudinal creep forces pass through the suspension instead of into a constraint.
   std::vector<std::string> dof_names = {"x", "y", "z", "roll", "pitch", "yaw"};
   std::vector<std::string> defaults = {"y", "z", "roll", "pitch", "yaw"};
+  if (kind == BodyKind::bogie_frame) defaults = {"x", "y", "z", "roll", "pitch", "yaw"};
   if (kind == BodyKind::wheelset) {
     out.rolling_radius = b.number("nominal_rolling_radius");
     out.flange_back_distance = b.number_or("flange_back_distance", out.flange_back_distance);
     dof_names = {"x", "y", "z", "roll", "yaw", "spin", "spin_perturbation"};
-    defaults = {"y", "z", "roll", "yaw"};
+    defaults = {"x", "y", "z", "roll", "yaw", "spin"};
   } else {
     out.cg_height = b.number("cg_height");
   }

@@ -36,7 +36,7 @@ TEST(WheelsetCriticalSpeed, RampEnvelopePeaksAtHopfSpeed) {
   o.solver = s.solver;
   const auto family = speed_family(s);
   const auto probe = family(o.speed_initial);
-  o.observed = lateral_states(*probe).index.front();
+  o.observed = lateral_states(*probe).index;
   const auto x0 = disturbed_state(s, *probe, 1e-4);
   const auto r = ramp_down(family, x0, o);
   ASSERT_TRUE(r.completed) << r.message;

@@ -80,7 +80,9 @@ std::array<RailPlacement, 2> place_rails(const ModelData& m, const BodyData& bod
   const double spacing = k.frame.rail_spacing > 0.0 ? k.frame.rail_spacing : m.nominal_rail_spacing;
   const double level_ratio = std::clamp(irr.cross_level / spacing, -1.0, 1.0);
   const double pair_roll = -std::asin(level_ratio);
-  const Eigen::Vector3d rails_origin(0.0, irr.lateral, irr.vertical);
+  // The rails' section under the wheelset: at its own longitudinal position (a wheelset free
+  // to move lengthwise carries its contact points with it).
+  const Eigen::Vector3d rails_origin(k.u.x(), irr.lateral, irr.vertical);
   std::array<RailPlacement, 2> rails;
   for (int side = 0; side < 2; ++side) {
     RailPlacement& r = rails[static_cast<std::size_t>(side)];

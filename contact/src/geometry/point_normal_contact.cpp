@@ -47,6 +47,9 @@ ContactPatch hertz_patch_from_penetration(const WheelRailContact& c, double cont
     p = elliptic_patch(c.ref_semi_axis_a * root, c.ref_semi_axis_b * root,
                        c.ref_normal_force * ratio * root, c.curvature_a, c.curvature_b);
     p.approach = c.penetration;
+    p.c11 = c.c11;  // the source's own coefficients, when it gives them (NaN otherwise)
+    p.c22 = c.c22;
+    p.c23 = c.c23;
     return p;
   }
   const HertzSolution h =

@@ -2,6 +2,8 @@
 // known deviations.
 #include "ferro/contact/tangential/saturation_laws.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -95,14 +97,20 @@ TangentialSolution SaturatedCreepModel::solve(const TangentialProblem& problem) 
     const double u = saturation_ratio(law_, std::hypot(creep.force_x, creep.force_y) / limit);
     out.moment_z = saturated_spin_moment(k, cr, factor, limit, u);
   }
+  if (!spin_moment_) out.moment_z = 0.0;
   return out;
 }
 
 std::unique_ptr<TangentialModel> SaturatedCreepModel::from_options(SaturationLaw law,
                                                                    const ModelOptions& options) {
   const SaturatedCreepModel probe(law, CoefficientSource::kKalkerTable);
-  check_option_keys(probe.name(), options, {"coefficients"});
-  return std::make_unique<SaturatedCreepModel>(law, coefficients_option(options));
+  check_option_keys(probe.name(), options, {"coefficients", "spin_moment"});
+  const std::string spin = option_string(options, "spin_moment", "true");
+  if (spin != "true" && spin != "false") {
+    throw std::invalid_argument(fmt::format(
+        "{} option 'spin_moment': unknown value '{}'; allowed: true, false", probe.name(), spin));
+  }
+  return std::make_unique<SaturatedCreepModel>(law, coefficients_option(options), spin == "true");
 }
 
 }  // namespace ferro::contact

@@ -2,7 +2,8 @@
 // "kalker_linear" (the registry is in registry.cpp).
 //
 // References: Toumi (2016) eqs. (38)-(40), (156).
-// Known deviations: none.
+// Known deviations: none. C11, C22, C23 a contact source gives with the patch (imported tables)
+// take the place of the ones computed from a/b.
 #include "ferro/contact/tangential/tangential_model.hpp"
 
 #include <fmt/format.h>
@@ -73,6 +74,10 @@ LinearCreepStiffness linear_creep_stiffness(const TangentialProblem& problem,
         "coefficients=voco_fit needs the patch curvatures A and B (curvature_x, curvature_y)");
   }
   k.c = kalker_coefficients(source, k.a, k.b, std::min(m.poisson, 0.5), ratio);
+  // Coefficients the contact source gives with the patch replace the computed ones.
+  if (std::isfinite(p.c11)) k.c.c11 = p.c11;
+  if (std::isfinite(p.c22)) k.c.c22 = p.c22;
+  if (std::isfinite(p.c23)) k.c.c23 = p.c23;
   k.c.c11 *= problem.reduction.k11;
   k.c.c22 *= problem.reduction.k22;
   k.c.c23 *= problem.reduction.k23;

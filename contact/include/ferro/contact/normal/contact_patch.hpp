@@ -35,6 +35,10 @@ struct ContactPatch {
   double curvature_y = kNaN;       ///< B [1/m] (equivalent value for semi-Hertz patches)
   double y_center = 0.0;           ///< lateral position of the patch centre in the gap frame [m]
   std::vector<PatchStrip> strips;  ///< empty for an elliptic (Hertz) patch
+  /// Kalker's coefficients C11, C22, C23 [-] when the contact source gives them with the point
+  /// (a one-point table imported from another tool carries the ones its author computed); NaN:
+  /// from a/b and the Poisson ratio (Kalker's table or the chosen fits). C33 always from a/b.
+  double c11 = kNaN, c22 = kNaN, c23 = kNaN;
 
   [[nodiscard]] bool elliptic() const { return strips.empty(); }
   /// Throws std::invalid_argument naming the field when a, b, F_n are not positive/finite.

@@ -44,18 +44,23 @@ enum class SaturationLaw { kNone, kLinear, kVermeulenJohnson, kShenHedrickElkins
                                            double creep_utilisation);
 
 /// Kalker's linear theory saturated by a law: the models "linear_saturated",
-/// "vermeulen_johnson", "shen_hedrick_elkins", "chopaya". Option: "coefficients".
+/// "vermeulen_johnson", "shen_hedrick_elkins", "chopaya". Options: "coefficients", "spin_moment"
+/// = true (default) | false.
 class SaturatedCreepModel final : public TangentialModel {
  public:
   static std::unique_ptr<TangentialModel> from_options(SaturationLaw law,
                                                        const ModelOptions& options);
-  SaturatedCreepModel(SaturationLaw law, CoefficientSource source) : law_(law), source_(source) {}
+  /// `spin_moment` false: no moment about the contact normal (a source model that neglects it,
+  /// as DYTSI's Shen-Hedrick-Elkins law does); the forces are unchanged.
+  SaturatedCreepModel(SaturationLaw law, CoefficientSource source, bool spin_moment = true)
+      : law_(law), source_(source), spin_moment_(spin_moment) {}
   [[nodiscard]] std::string_view name() const override;
   [[nodiscard]] TangentialSolution solve(const TangentialProblem& problem) const override;
 
  private:
   SaturationLaw law_;
   CoefficientSource source_;
+  bool spin_moment_ = true;
 };
 
 }  // namespace ferro::contact

@@ -31,6 +31,20 @@ struct LateralStates {
 };
 [[nodiscard]] LateralStates lateral_states(const vehicle::OdeSystem& system);
 
+/// Shape input of the modes of a scene's system (vehicle::ModeShapeInput): each velocity state's
+/// generalised mass from the scene's model description (a vehicle's bodies: mass for x, y, z,
+/// the inertia about the axis for roll, pitch, yaw, the wheelset's spin inertia for its spin
+/// perturbation; the suspended wheelset's mass and yaw inertia; on a flexible track the
+/// co-running track's rail and sleeper masses and roll inertias, track::co_running_equivalent);
+/// states the description does not weigh take vehicle::mode_shape_input()'s fallback.
+[[nodiscard]] vehicle::ModeShapeInput mode_shapes(const Scene& scene,
+                                                  const vehicle::OdeSystem& system);
+
+/// The family with the shape input of each speed's system attached: its modes come classified
+/// and vehicle::critical_speed looks at the hunting modes.
+[[nodiscard]] vehicle::LinearisationAtSpeed with_mode_shapes(const Scene& scene,
+                                                             vehicle::LinearisationAtSpeed family);
+
 /// The scene's initial state, plus `lateral_offset` [m] added to the leading wheelset's lateral
 /// displacement.
 [[nodiscard]] std::vector<double> disturbed_state(const Scene& scene,
