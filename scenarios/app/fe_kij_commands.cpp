@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/fe_contact/kij_sweep.hpp"
 #include "ferro/scenarios/plotting.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
