@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "ferro/contact/io/text_writer.hpp"
+#include "ferro/scenarios/analysis/run_context.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 
@@ -48,6 +49,7 @@ void write_metadata(H5File& file, const Scene& scene, const std::string& kind) {
     file.set_attribute("/", "contact_geometry", w.geometry);
     file.set_attribute("/", "tangential_model", w.tangential_model);
     file.set_attribute("/", "acceleration", scene.simulation.acceleration);
+    analysis::write_run_context(file, analysis::run_context(scene));
   }
   file.set_attribute("/", "units",
                      std::string("SI: m, s, kg, N, rad; each dataset has a 'unit' attribute"));

@@ -80,13 +80,13 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
                                     file.string()));
     }
     model.vehicle_file = file.string();
-    model.vehicle = load_vehicle_file(model.vehicle_file);
+    model.vehicle = load_vehicle_file(model.vehicle_file, &model.category);
     keep.push_back(load_yaml_file(model.vehicle_file));
     scene.text += fmt::format("\n# ---- included: {} ----\n{}", model.vehicle_file,
                               keep.back().text);
   } else {
     MapReader v = m.map("vehicle");
-    model.vehicle = read_vehicle(v);
+    model.vehicle = read_vehicle(v, &model.category);
   }
   auto& sel = model.selection;
   sel.scope = m.string_or("scope", sel.scope, {"vehicle", "bogie", "wheelset"});
@@ -351,6 +351,9 @@ Scene load_scene(const std::string& path) {
     if (scene.eigen.points < 2 || scene.eigen.points > 100000)
       e.fail("points", "must lie in 2..100000");
     e.finish();
+    MapReader as = a.map_or_empty("assessment");
+    scene.assessment.twist_test = as.boolean_or("twist_test", scene.assessment.twist_test);
+    as.finish();
     a.finish();
   }
   top.finish();

@@ -28,6 +28,9 @@ struct ModelConfig {
   /// (vehicle file, then the scene's contact and track parts).
   vehicle::VehicleConfig vehicle;
   vehicle::ModelSelection selection;  ///< type vehicle
+  /// type vehicle: the vehicle file's `category` (coach | locomotive | power_car | wagon; ""
+  /// when not given), on which the assessment's limits depend.
+  std::string category;
 };
 
 struct ContactConfig {
@@ -61,6 +64,12 @@ struct EigenConfig {
   int points = 150;          ///< speeds in the sweep
 };
 
+/// How `ferrodyn assess` treats a run of the scene.
+struct AssessmentConfig {
+  /// The run is the standard's twist test: the wheel unloading dQ/Q0 is assessed too.
+  bool twist_test = false;
+};
+
 struct Scene {
   std::string path;  ///< scene file
   std::string text;  ///< scene text followed by each included file's text
@@ -74,6 +83,7 @@ struct Scene {
   vehicle::IntegratorSettings solver;
   OutputConfig output;
   EigenConfig eigen;
+  AssessmentConfig assessment;
 };
 
 /// Loads and validates a scene. Throws YamlInputError (file:line:col: key: message) for any bad

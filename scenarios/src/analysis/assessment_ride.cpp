@@ -1,0 +1,128 @@
+// Ride part of the assessment: car-body floor accelerations (0.4-10 Hz running-behaviour values,
+// quasi-static lateral acceleration), EN 12299 N_MV and Sperling's Wz at the standard floor
+// positions (above each bogie centre and mid-body). See assessment.hpp.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "assessment_detail.hpp"
+#include "ferro/scenarios/analysis/ride_comfort.hpp"
+
+namespace ferro::scenarios::analysis::detail {
+
+namespace {
+
+struct FloorPoint {
+  std::string name;  // "floor above bogie_1", "floor centre", ...
+  double dx = 0.0;   // from the car body's centre of mass, along the car [m]
+};
+
+// Floor accelerations (accelerometer readings, gravity removed) at (dx, dy) of the car body,
+// from its rigid motion: the measured lateral specific force at the centre of mass plus the
+// lever-arm terms of the angular accelerations (rates differentiated), the track frame's yaw
+// acceleration V^2 dkappa/ds + dV/dt kappa included.
+struct FloorMotion {
+  std::vector<double> ay_cg, z_acc, x_acc, roll_acc, pitch_acc, yaw_acc;
+};
+
+FloorMotion floor_motion(const RunSignals& run, const RunContext& c, const RunBody& car) {
+  FloorMotion m;
+  m.ay_cg = run.get("car_body.ay");
+  m.z_acc = derivative(run.time, run.get_or_zero("car_body.z_dot"));
+  m.x_acc = derivative(run.time, run.get_or_zero("car_body.x_dot"));
+  m.roll_acc = derivative(run.time, run.get_or_zero("car_body.roll_dot"));
+  m.pitch_acc = derivative(run.time, run.get_or_zero("car_body.pitch_dot"));
+  m.yaw_acc = derivative(run.time, run.get_or_zero("car_body.yaw_dot"));
+  const auto v_dot = derivative(run.time, run.speed);
+  for (std::size_t i = 0; i < run.n(); ++i) {
+    const auto [kappa, dkappa] = curvature(c.sections, run.position[i] + car.rest_x);
+    m.yaw_acc[i] += run.speed[i] * run.speed[i] * dkappa + v_dot[i] * kappa;
+    m.x_acc[i] += v_dot[i];
+  }
+  return m;
+}
+
+}  // namespace
+
+void assess_ride(Assessment& a, const RunSignals& run, const RunContext& c,
+                 const AssessmentOptions& o) {
+  const RunBody* car = nullptr;
+  for (const auto& b : c.bodies)
+    if (b.kind == "car_body") car = &b;
+  if (car == nullptr || !run.has("car_body.ay")) {
+    a.notes.push_back("ride: the run has no car body (model scope bogie or wheelset): not assessed");
+    return;
+  }
+  std::vector<FloorPoint> points;
+  std::vector<const RunBody*> bogies;
+  for (const auto& b : c.bodies)
+    if (b.kind == "bogie_frame") bogies.push_back(&b);
+  std::sort(bogies.begin(), bogies.end(),
+            [](const RunBody* l, const RunBody* r) { return l->rest_x > r->rest_x; });
+  if (!bogies.empty())
+    points.push_back({fmt::format("floor above {}", bogies.front()->name),
+                      bogies.front()->rest_x - car->rest_x});
+  points.push_back({"floor centre", 0.0});
+  if (bogies.size() > 1)
+    points.push_back({fmt::format("floor above {}", bogies.back()->name),
+                      bogies.back()->rest_x - car->rest_x});
+
+  const FloorMotion m = floor_motion(run, c, *car);
+  a.accelerations_derived = true;
+  const auto band = zero_phase_bandpass(o.filter_order, o.ride_low, o.ride_high, run.sample_rate);
+  const auto lp = zero_phase_lowpass(o.filter_order, o.lowpass, run.sample_rate);
+  const std::string group = "ride";
+  const std::string band_text = fmt::format("{:g}-{:g} Hz", o.ride_low, o.ride_high);
+  for (const auto& p : points) {
+    const std::size_t n = run.n();
+    std::vector<double> ay(n), ax(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      ay[i] = m.ay_cg[i] + p.dx * m.yaw_acc[i];
+      ax[i] = m.x_acc[i];
+    }
+    const auto vertical = [&](double dy) {
+      std::vector<double> az(n);
+      for (std::size_t i = 0; i < n; ++i)
+        az[i] = m.z_acc[i] + dy * m.roll_acc[i] - p.dx * m.pitch_acc[i];
+      return az;
+    };
+    const auto pos = shifted(run.position, car->rest_x + p.dx);
+    const auto ay_band = band(ay);
+    add_rows(a, group, fmt::format("lateral acc. {} (0.15/99.85 %)", band_text), p.name, "m/s^2",
+             pos, ay_band, Statistic::extreme, nullptr);
+    add_rows(a, group, fmt::format("lateral acc. {} rms", band_text), p.name, "m/s^2", pos,
+             ay_band, Statistic::rms, nullptr);
+    add_rows(a, group, "lateral acc. qst (50 %, 20 Hz)", p.name, "m/s^2", pos, lp(ay),
+             Statistic::median_abs, nullptr, true);
+    a.signals.push_back({"car body lateral acc.", p.name, "m/s^2",
+                         fmt::format("floor lateral acceleration, {}", band_text), pos, ay_band,
+                         std::numeric_limits<double>::quiet_NaN()});
+    for (double dy : {0.0, o.floor_offset, -o.floor_offset}) {
+      if (dy != 0.0 && !(o.floor_offset > 0.0)) continue;
+      const std::string item = dy == 0.0 ? p.name : fmt::format("{}, y {:+g} m", p.name, dy);
+      const auto az_band = band(vertical(dy));
+      add_rows(a, group, fmt::format("vertical acc. {} (0.15/99.85 %)", band_text), item,
+               "m/s^2", pos, az_band, Statistic::extreme, nullptr);
+      add_rows(a, group, fmt::format("vertical acc. {} rms", band_text), item, "m/s^2", pos,
+               az_band, Statistic::rms, nullptr);
+      a.signals.push_back({"car body vertical acc.", item, "m/s^2",
+                           fmt::format("floor vertical acceleration, {}", band_text), pos,
+                           az_band, std::numeric_limits<double>::quiet_NaN()});
+    }
+    // Comfort over the whole run.
+    const auto az = vertical(0.0);
+    const ComfortIndex ci = comfort_index(ax, ay, az, run.sample_rate);
+    add_run_row(a, group, fmt::format("N_MV ({}{})", comfort_class(ci.n_mv),
+                                      ci.short_record
+                                          ? fmt::format(", {} blocks of 5 s", ci.block_rms_x.size())
+                                          : ""),
+                p.name, "-", ci.n_mv);
+    add_run_row(a, group, "Sperling Wz lateral", p.name, "-",
+                sperling_index(ay, run.sample_rate, true));
+    add_run_row(a, group, "Sperling Wz vertical", p.name, "-",
+                sperling_index(az, run.sample_rate, false));
+  }
+}
+
+}  // namespace ferro::scenarios::analysis::detail
