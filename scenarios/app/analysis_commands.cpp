@@ -107,9 +107,13 @@ int do_assess(const AssessArgs& a) {
   for (std::size_t i = 0; i < r.sections.size(); ++i)
     fmt::print("{}{} [{:.1f}, {:.1f}) m", i ? "; " : "", r.sections[i].name,
                r.sections[i].start, r.sections[i].end);
-  fmt::print("\n  f0 = {:.2f} Hz ({}), Nadal mu = {:g}{}\n", r.f0,
-             r.f0_from_spectrum ? "peak of the sum-Y spectrum" : "given", r.mu,
-             r.twist_test ? ", twist test" : "");
+  if (std::isnan(r.f0)) {
+    fmt::print("\n  stability not assessed (see the notes)");
+  } else {
+    fmt::print("\n  f0 = {:.2f} Hz ({})", r.f0,
+               r.f0_from_spectrum ? "peak of the sum-Y spectrum" : "given");
+  }
+  fmt::print(", Nadal mu = {:g}{}\n", r.mu, r.twist_test ? ", twist test" : "");
   // One line per quantity and item: its worst section (largest value / limit, else value), or
   // every row with --all.
   std::vector<const an::AssessmentRow*> shown;
@@ -130,6 +134,13 @@ int do_assess(const AssessArgs& a) {
       *it = &row;
     }
   }
+  const std::vector<std::string> groups = {"running safety", "track loading", "twist test",
+                                           "stability", "ride"};
+  const auto rank = [&](const an::AssessmentRow* x) {
+    return std::find(groups.begin(), groups.end(), x->group) - groups.begin();
+  };
+  std::stable_sort(shown.begin(), shown.end(),
+                   [&](const auto* l, const auto* r) { return rank(l) < rank(r); });
   std::string group;
   for (const auto* row : shown) {
     if (row->group != group) {

@@ -165,8 +165,10 @@ void add_rows(Assessment& a, const std::string& group, const std::string& quanti
         r.value = r.stats.rms;
         break;
     }
-    r.max_abs = r.stats.max_abs;
-    r.position = r.stats.max_abs_position;
+    // Where the statistic's extreme is: the largest value for a one-sided statistic, the
+    // largest magnitude otherwise.
+    r.max_abs = statistic == Statistic::high ? r.stats.max : r.stats.max_abs;
+    r.position = statistic == Statistic::high ? r.stats.max_position : r.stats.max_abs_position;
     r.limit = limit ? limit(sec) : std::numeric_limits<double>::quiet_NaN();
     r.verdict = std::isnan(r.limit) || !judged ? Verdict::info
                 : r.value <= r.limit ? Verdict::pass
@@ -193,20 +195,30 @@ void add_run_row(Assessment& a, const std::string& group, const std::string& qua
   a.rows.push_back(std::move(r));
 }
 
-std::pair<double, double> curvature(const std::vector<TrackSection>& sections, double s) {
+DesignPoint design_point(const std::vector<TrackSection>& sections, double rail_spacing,
+                         double s) {
   const auto kappa = [](const TrackSection& t) {
     return t.kind == "curve" && t.radius != 0.0 ? 1.0 / t.radius : 0.0;
   };
+  const auto cant = [](const TrackSection& t) { return t.kind == "curve" ? t.cant : 0.0; };
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const auto& t = sections[i];
     if (s < t.start || s >= t.end) continue;
-    if (t.kind != "transition") return {kappa(t), 0.0};
-    const double k0 = i > 0 ? kappa(sections[i - 1]) : 0.0;
-    const double k1 = i + 1 < sections.size() ? kappa(sections[i + 1]) : 0.0;
-    const double slope = (k1 - k0) / (t.end - t.start);
-    return {k0 + slope * (s - t.start), slope};
+    double k = kappa(t), c = cant(t), dc = 0.0;
+    if (t.kind == "transition") {
+      const double len = t.end - t.start, u = (s - t.start) / len;
+      const double k0 = i > 0 ? kappa(sections[i - 1]) : 0.0;
+      const double k1 = i + 1 < sections.size() ? kappa(sections[i + 1]) : 0.0;
+      const double c0 = i > 0 ? cant(sections[i - 1]) : 0.0;
+      const double c1 = i + 1 < sections.size() ? cant(sections[i + 1]) : 0.0;
+      k = k0 + u * (k1 - k0);
+      c = c0 + u * (c1 - c0);
+      dc = (c1 - c0) / len;
+    }
+    const double phi = std::asin(std::clamp(c / rail_spacing, -1.0, 1.0));
+    return {k, phi, dc / (rail_spacing * std::cos(phi))};
   }
-  return {0.0, 0.0};
+  return {};
 }
 
 }  // namespace detail
@@ -287,17 +299,17 @@ void assess_wheels(Assessment& a, const detail::RunSignals& run, const Assessmen
       const double lim = o.y_over_q_limit;
       detail::add_rows(a, "running safety", "Y/Q 2 m", item, "-", ratio_2m.position,
                        ratio_2m.mean, Statistic::extreme, [&](const TrackSection&) { return lim; });
-      // Nadal's limit for the flange angle reached, as information.
+      // Nadal's limit for the flange angle reached, as information (flange contact only).
       double flange = o.flange_angle;
       if (!(flange > 0.0))
         for (double g : angle) flange = std::max(flange, std::abs(g));
-      const double nadal = flange > 0.0 && flange < M_PI / 2 && std::tan(flange) > a.mu
-                               ? nadal_limit(flange, a.mu)
-                               : std::numeric_limits<double>::quiet_NaN();
-      detail::add_rows(a, "running safety", fmt::format("Y/Q 2 m against Nadal ({:.1f} deg)",
-                                                        flange * 180.0 / M_PI),
-                       item, "-", ratio_2m.position, ratio_2m.mean, Statistic::extreme,
-                       [&](const TrackSection&) { return nadal; }, false, false);
+      if (flange >= o.nadal_min_angle && flange < M_PI / 2 && std::tan(flange) > a.mu) {
+        const double nadal = nadal_limit(flange, a.mu);
+        detail::add_rows(a, "running safety",
+                         fmt::format("Y/Q 2 m against Nadal ({:.1f} deg)", flange * 180.0 / M_PI),
+                         item, "-", ratio_2m.position, ratio_2m.mean, Statistic::extreme,
+                         [&](const TrackSection&) { return nadal; }, false, false);
+      }
       a.signals.push_back(signal_of("Y/Q 2 m", item, "-",
                                     "2 m sliding mean of Y/Q (20 Hz low-passed Y and Q)",
                                     ratio_2m.position, ratio_2m.mean, lim));
@@ -376,6 +388,15 @@ void assess_stability(Assessment& a, const detail::RunSignals& run, const RunCon
     }
     a.f0 = dominant_frequency(total, o.f0_min, o.f0_max);
     a.f0_from_spectrum = true;
+    if (std::isnan(a.f0))
+      throw std::invalid_argument(fmt::format(
+          "{}: the spectrum has no bin in {:g}-{:g} Hz (run too short): give --f0", run.path,
+          o.f0_min, o.f0_max));
+    if (a.f0 <= o.f0_min + total.df || a.f0 >= o.f0_max - total.df)
+      a.notes.push_back(fmt::format(
+          "stability: the sum-Y spectrum has no peak inside {:g}-{:g} Hz (largest at the band's "
+          "edge, {:.2f} Hz): no hunting; the band around it is assessed all the same",
+          o.f0_min, o.f0_max, a.f0));
   } else {
     a.f0 = o.f0;
     a.f0_from_spectrum = false;

@@ -69,8 +69,12 @@ void add_rows(Assessment& a, const std::string& group, const std::string& quanti
 void assess_ride(Assessment& a, const RunSignals& run, const RunContext& context,
                  const AssessmentOptions& options);
 
-/// Curvature of the design track at s [1/m] and its derivative along s [1/m^2].
-[[nodiscard]] std::pair<double, double> curvature(const std::vector<TrackSection>& sections,
-                                                  double s);
+/// The design track at arc length s: curvature [1/m], cant angle [rad] and its slope [rad/m]
+/// (linear curvature and cant in transitions, EN 13803).
+struct DesignPoint {
+  double curvature = 0.0, cant_angle = 0.0, d_cant_angle = 0.0;
+};
+[[nodiscard]] DesignPoint design_point(const std::vector<TrackSection>& sections,
+                                       double rail_spacing, double s);
 
 }  // namespace ferro::scenarios::analysis::detail

@@ -20,8 +20,8 @@ struct FloorPoint {
 
 // Floor accelerations (accelerometer readings, gravity removed) at (dx, dy) of the car body,
 // from its rigid motion: the measured lateral specific force at the centre of mass plus the
-// lever-arm terms of the angular accelerations (rates differentiated), the track frame's yaw
-// acceleration V^2 dkappa/ds + dV/dt kappa included.
+// lever-arm terms of the absolute angular accelerations (the rates relative to the track frame
+// plus the frame's, V (-dphi/ds, -kappa sin phi, kappa cos phi), differentiated).
 struct FloorMotion {
   std::vector<double> ay_cg, z_acc, x_acc, roll_acc, pitch_acc, yaw_acc;
 };
@@ -30,16 +30,22 @@ FloorMotion floor_motion(const RunSignals& run, const RunContext& c, const RunBo
   FloorMotion m;
   m.ay_cg = run.get("car_body.ay");
   m.z_acc = derivative(run.time, run.get_or_zero("car_body.z_dot"));
-  m.x_acc = derivative(run.time, run.get_or_zero("car_body.x_dot"));
-  m.roll_acc = derivative(run.time, run.get_or_zero("car_body.roll_dot"));
-  m.pitch_acc = derivative(run.time, run.get_or_zero("car_body.pitch_dot"));
-  m.yaw_acc = derivative(run.time, run.get_or_zero("car_body.yaw_dot"));
-  const auto v_dot = derivative(run.time, run.speed);
+  auto x_rate = run.get_or_zero("car_body.x_dot");
+  auto roll = run.get_or_zero("car_body.roll_dot");
+  auto pitch = run.get_or_zero("car_body.pitch_dot");
+  auto yaw = run.get_or_zero("car_body.yaw_dot");
   for (std::size_t i = 0; i < run.n(); ++i) {
-    const auto [kappa, dkappa] = curvature(c.sections, run.position[i] + car.rest_x);
-    m.yaw_acc[i] += run.speed[i] * run.speed[i] * dkappa + v_dot[i] * kappa;
-    m.x_acc[i] += v_dot[i];
+    const auto d = design_point(c.sections, c.rail_spacing, run.position[i] + car.rest_x);
+    const double v = run.speed[i];
+    roll[i] -= v * d.d_cant_angle;
+    pitch[i] -= v * d.curvature * std::sin(d.cant_angle);
+    yaw[i] += v * d.curvature * std::cos(d.cant_angle);
+    x_rate[i] += v;
   }
+  m.x_acc = derivative(run.time, x_rate);
+  m.roll_acc = derivative(run.time, roll);
+  m.pitch_acc = derivative(run.time, pitch);
+  m.yaw_acc = derivative(run.time, yaw);
   return m;
 }
 

@@ -99,6 +99,7 @@ RunContext run_context(const Scene& scene) {
                         b.position.z(), loads[i]});
   }
   if (scene.track.type == "design") {
+    c.rail_spacing = scene.track.design.rail_spacing;
     double s = scene.track.design.start_s;
     int k = 0;
     for (const auto& sec : scene.track.design.sections) {
@@ -147,6 +148,7 @@ void write_run_context(io::H5File& file, const RunContext& c) {
                     "static axle load P0 of each wheelset (0 for other bodies): weights passed "
                     "down the suspension by the lever rule");
   file.ensure_group("/track");
+  file.set_attribute("/track", "rail_spacing", c.rail_spacing);
   if (!c.sections.empty()) {
     std::vector<std::string> kinds_s, names_s;
     std::vector<double> start, end, radius, cant;
@@ -190,6 +192,8 @@ RunContext read_run_context(const io::H5File& file) {
                                             file.path(), names.size(), mass.size()));
   for (std::size_t i = 0; i < names.size(); ++i)
     c.bodies.push_back({names[i], kinds[i], mass[i], x[i], y[i], z[i], load[i]});
+  if (file.has_attribute("/track", "rail_spacing"))
+    c.rail_spacing = file.number_attribute("/track", "rail_spacing");
   if (file.has_attribute("/track", "section_kinds")) {
     const auto kinds_s = split(file.string_attribute("/track", "section_kinds"));
     const auto names_s = split(file.string_attribute("/track", "section_names"));

@@ -109,11 +109,16 @@ SectionStatistics section_statistics(const std::vector<double>& position,
       st.max_abs = std::abs(values[i]);
       st.max_abs_position = position[i];
     }
+    if (values[i] > st.max || in.size() == 1) {
+      st.max = values[i];
+      st.max_position = position[i];
+    }
   }
   st.samples = in.size();
   if (in.empty()) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     st.p_low = st.p_median = st.p_high = st.max_abs = st.max_abs_position = st.rms = nan;
+    st.max = st.max_position = nan;
     return st;
   }
   double sq = 0.0;

@@ -26,6 +26,7 @@
 //   motion (rate states differentiated by central differences, plus the measured car_body.ay
 //   and the track frame's yaw acceleration).
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -66,7 +67,10 @@ struct AssessmentOptions {
   double stability_step = 10.0;    ///< [m]
   double stability_half_band = 2.0;  ///< f0 +- this [Hz]
   double f0 = kNaN;                ///< instability frequency [Hz]; NaN: from the run's spectrum
-  double f0_min = 1.0, f0_max = 12.0;  ///< band searched for f0 [Hz]
+  double f0_min = 2.0, f0_max = 12.0;  ///< band searched for f0 (bogie hunting) [Hz]
+  /// Nadal's limit is shown for wheels whose largest contact angle reaches this (flange
+  /// contact) [rad].
+  double nadal_min_angle = 45.0 * M_PI / 180.0;
   double ride_low = 0.4, ride_high = 10.0;  ///< car-body band [Hz]
   double floor_offset = 1.0;       ///< lateral offset of the vertical floor points [m]
   double section_length = 0.0;     ///< > 0: windows of this length replace the scene's sections
@@ -88,7 +92,9 @@ struct AssessmentRow {
   std::string unit;      ///< of value, limit, statistics ("-", "N", "m/s^2")
   double value = 0.0;    ///< the statistic compared with the limit
   double limit = std::numeric_limits<double>::quiet_NaN();  ///< NaN: none
-  double max_abs = 0.0;  ///< largest |processed value| in the section
+  /// Largest |processed value| in the section (the largest value for one-sided statistics:
+  /// Q max, dQ/Q0).
+  double max_abs = 0.0;
   double position = 0.0;  ///< where that is, at the item concerned [m]
   SectionStatistics stats;  ///< 0.15 / 50 / 99.85 % of the processed signal
   Verdict verdict = Verdict::info;
@@ -110,7 +116,8 @@ struct Assessment {
   double alpha = 1.0;         ///< track-shift factor [-]
   double mu = 0.0;            ///< in Nadal's limit
   double sample_rate = 0.0;   ///< of the run's output [Hz]
-  double f0 = 0.0;            ///< instability frequency used [Hz]
+  double f0 = std::numeric_limits<double>::quiet_NaN();  ///< instability frequency [Hz]; NaN:
+                                                         ///< stability not assessed
   bool f0_from_spectrum = true;
   bool twist_test = false;
   bool accelerations_derived = true;  ///< floor/bogie accelerations derived from rigid motion

@@ -33,6 +33,7 @@ struct RunContext {
   std::vector<RunBody> bodies;
   /// The designed track's sections (empty: straight track without sections).
   std::vector<TrackSection> sections;
+  double rail_spacing = 1.5;  ///< distance the cant is measured over [m]
   bool twist_test = false;  ///< the scene says the run is the twist test
   [[nodiscard]] const RunBody* body(const std::string& name) const;
 };

@@ -61,6 +61,8 @@ struct SectionStatistics {
   double max_abs = 0.0;         ///< largest |value|
   double max_abs_position = 0.0;  ///< where [m]
   double rms = 0.0;             ///< root mean square of the values
+  double max = 0.0;             ///< largest value
+  double max_position = 0.0;    ///< where [m]
   /// max(|p_low|, |p_high|): the value the standards compare with a symmetric limit.
   [[nodiscard]] double extreme() const;
 };
