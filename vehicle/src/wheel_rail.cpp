@@ -33,13 +33,12 @@
 #include "ferro/contact/contact_patch.hpp"
 #include "ferro/contact/geometry/contact_sources.hpp"
 #include "ferro/vehicle/frames.hpp"
-#include "vehicle_model_impl.hpp"
+#include "dynamics.hpp"
 
-namespace ferro::vehicle {
-void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, BodyKinematics& k,
-                      WheelResult* left_right) {
-  thread_local std::vector<contact::WheelRailContact> points;
-  if (points.capacity() < 32) points.reserve(32);
+namespace ferro::vehicle::detail {
+void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinematics& k,
+                      WheelRailScratch& scratch, WheelResult* left_right) {
+  std::vector<contact::WheelRailContact>& points = scratch.points;
 
   const track::IrregularitySample& irr = k.irregularity;
   const double spacing = k.frame.rail_spacing > 0.0 ? k.frame.rail_spacing
@@ -93,7 +92,6 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
   }
 
   const contact::WheelsetPose pose = to_contact_pose(rel);
-  thread_local contact::SemiHertzScratch semi_hertz_scratch;
   for (const contact::WheelRailContact& c : points) {
     // Normal contact: one Hertz patch from the point's curvatures, or the semi-Hertz patches of
     // the profiles' gap around the point (usually one).
@@ -101,13 +99,13 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
     contact::ContactPatch* patches = &hertz_patch;
     std::size_t patch_count = 1;
     double point_normal_force = 0.0;
-    if (model.semi_hertz_pair == nullptr) {
-      hertz_patch = contact::hertz_patch_from_penetration(c, model.contact_modulus);
+    if (model.contact.semi_hertz_pair == nullptr) {
+      hertz_patch = contact::hertz_patch_from_penetration(c, model.contact.contact_modulus);
       point_normal_force = hertz_patch.normal_force;
     } else {
       contact::NormalSolution& semi = contact::semi_hertz_patches_from_penetration(
-          *model.semi_hertz_pair, pose, c, model.material, model.semi_hertz_options,
-          semi_hertz_scratch);
+          *model.contact.semi_hertz_pair, pose, c, model.contact.material, model.contact.semi_hertz_options,
+          scratch.semi_hertz);
       patches = semi.patches.data();
       patch_count = semi.patches.size();
       for (std::size_t i = 0; i < patch_count; ++i) point_normal_force += patches[i].normal_force;
@@ -144,8 +142,8 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
     problem.creepage.lateral = slip.dot(t2) / rolling_speed;
     problem.creepage.spin = omega.dot(n) / rolling_speed;
     problem.friction = model.in.config.wheel_rail.friction;
-    problem.body1 = model.material;
-    problem.body2 = model.material;
+    problem.body1 = model.contact.material;
+    problem.body2 = model.contact.material;
     problem.rolling_speed = rolling_speed;
 
     double normal_force = 0.0;
@@ -159,8 +157,8 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
       }
       problem.patch = &patch;
       problem.reduction =
-          model.reduction_table ? model.reduction_table->at(patch) : model.reduction;
-      const contact::TangentialSolution tang = model.tangential->solve(problem);
+          model.contact.reduction_table ? model.contact.reduction_table->at(patch) : model.contact.reduction;
+      const contact::TangentialSolution tang = model.contact.tangential->solve(problem);
 
       const Eigen::Vector3d force =
           patch.normal_force * n + tang.force_x * t1 + tang.force_y * t2;
@@ -196,4 +194,4 @@ void apply_wheel_rail(const VehicleModel::Impl& model, const BodyData& body, Bod
   }
 }
 
-}  // namespace ferro::vehicle
+}  // namespace ferro::vehicle::detail
