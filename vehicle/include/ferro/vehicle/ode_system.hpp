@@ -40,6 +40,12 @@ class OdeSystem {
   /// Optional half-bandwidths of the Jacobian (upper, lower) for banded linear solvers;
   /// {-1, -1} when unknown (dense).
   [[nodiscard]] virtual std::pair<int, int> jacobian_bandwidth() const { return {-1, -1}; }
+  /// Output states, increasing: filters of the system's own quantities integrated with it (a
+  /// low-pass of a force before the output grid samples it). No derivative of another state
+  /// depends on them, and theirs are affine in them with a constant matrix. The adaptive
+  /// SUNDIALS integrators leave them out of the error test, and the dense Newton solver solves
+  /// them after the other states by substitution. Default: none.
+  [[nodiscard]] virtual std::vector<std::size_t> output_states() const { return {}; }
 };
 
 /// Central-difference Jacobian J = df/dx at (t, x), row-major size() x size(). Step per state:
