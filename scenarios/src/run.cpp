@@ -138,7 +138,7 @@ std::string csv_path_for(const std::string& output) {
 }  // namespace
 
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
-  const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
+  const auto system = build_run_system(scene, scene.simulation.speed, build_resources(scene));
   const auto x0 = initial_state(scene, *system);
   const auto states = system->state_info();
   const auto derived = system->signal_info();

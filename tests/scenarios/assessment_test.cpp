@@ -214,7 +214,7 @@ TEST(Assessment, CategoryTwistTestAndLimits) {
   // Nadal for the left wheel at 70 deg, mu 0.5, information only.
   bool nadal_seen = false;
   for (const auto& r : a.rows) {
-    if (r.item != "wheelset_1.left" || r.quantity.rfind("Y/Q 2 m against Nadal", 0) != 0) continue;
+    if (r.item != "wheelset_1.left" || r.quantity != "Y/Q 2 m against Nadal") continue;
     nadal_seen = true;
     EXPECT_NEAR(r.limit, nadal_limit(70.0 * kDeg, 0.5), 1e-9);
     EXPECT_EQ(r.verdict, Verdict::info);
@@ -256,7 +256,7 @@ TEST(Assessment, FloorAccelerationOfAYawingCarBody) {
   run.signals["car_body.yaw_dot"] = [&](double t) { return 0.01 * std::sin(w * t); };
   const auto path = run.write("ferro_assess_floor.h5");
   const auto a = assess_run(path, {});
-  const auto* s = find_signal(a, "car body lateral acc.", "floor above bogie_1");
+  const auto* s = find_signal(a, "car body lateral acc.", "floor_front");
   ASSERT_NE(s, nullptr);
   // Least-squares fit of a cos(w t) + b sin(w t) over 4-16 s (away from the filter's edges).
   double cc = 0, cs = 0, ss = 0, yc = 0, ys = 0;
@@ -287,7 +287,7 @@ TEST(Assessment, FloorAccelerationOfAYawingCarBody) {
   // Comfort rows exist for the point (their values: ride_comfort_test).
   bool nmv = false;
   for (const auto& r : a.rows)
-    nmv = nmv || (r.item == "floor above bogie_1" && r.quantity.rfind("N_MV", 0) == 0);
+    nmv = nmv || (r.item == "floor_front" && r.quantity.rfind("N_MV", 0) == 0);
   EXPECT_TRUE(nmv);
   std::filesystem::remove(path);
 }

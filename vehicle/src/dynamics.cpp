@@ -6,6 +6,8 @@
 
 #include "dynamics.hpp"
 
+#include "output_signals.hpp"
+
 #include <cmath>
 
 namespace ferro::vehicle::detail {
@@ -102,6 +104,12 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
   const double s_ref = m.in.start_position + m.in.speed.distance(t);
 
   body_kinematics(m, ws, s_ref, speed, rate, x);
+  // The output filters read the wheel forces of every right-hand side.
+  WheelResult* wheels = outputs.wheels;
+  if (wheels == nullptr && m.output_filter.order > 0 && !xdot.empty()) {
+    ws.wheels.assign(2 * m.contact_bodies.size(), WheelResult{});
+    wheels = ws.wheels.data();
+  }
   for (const ElementData& e : m.elements) {
     if (e.a < 0) frame_at(m, s_ref + e.spec.point_a.x(), speed, rate, ws.track_frame, false);
     apply_element(m, e, ws.kin, ws.track_frame, x, xdot);
@@ -109,7 +117,7 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
   for (std::size_t w = 0; w < m.contact_bodies.size(); ++w) {
     const auto i = static_cast<std::size_t>(m.contact_bodies[w]);
     apply_wheel_rail(m, m.bodies[i], ws.kin[i], ws.wheel_rail,
-                     outputs.wheels != nullptr ? outputs.wheels + 2 * w : nullptr);
+                     wheels != nullptr ? wheels + 2 * w : nullptr);
   }
   if (outputs.car_body_ay != nullptr && m.car_body >= 0) {
     const BodyData& b = m.bodies[static_cast<std::size_t>(m.car_body)];
@@ -117,7 +125,10 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
     *outputs.car_body_ay = b.dynamic ? (k.attitude.transpose() * k.force).y() / b.mass
                                      : std::numeric_limits<double>::quiet_NaN();
   }
-  if (!xdot.empty()) equations_of_motion(m, ws, rate, xdot);
+  if (!xdot.empty()) {
+    equations_of_motion(m, ws, rate, xdot);
+    output_filter_rates(m, ws, wheels, x, xdot);
+  }
 }
 
 }  // namespace ferro::vehicle::detail

@@ -11,6 +11,7 @@
 
 #include "ferro/contact/geometry/contact_sources.hpp"
 #include "model_data.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle::detail {
 
@@ -156,6 +157,7 @@ void lay_out_states(ModelData& m, const std::vector<int>& position_of,
       const int host = a_in ? e.a : e.b;
       if (host == static_cast<int>(i) && (a_in || b_in)) e.state = next++;
     }
+    next = lay_out_output_filters(m, i, next);
     b.block_end = next;
   }
   m.n_states = static_cast<std::size_t>(next);
@@ -219,6 +221,7 @@ std::shared_ptr<const ModelData> build_model_data(VehicleModelInputs inputs) {
   ModelData& m = *data;
   m.in = std::move(inputs);
   const std::vector<int> position_of = order_bodies(m);
+  resolve_output_signals(m);
   // Elements (validated against the config's indices, stored with model indices).
   for (const SuspensionElementSpec& s : m.in.config.elements) {
     ElementData e;

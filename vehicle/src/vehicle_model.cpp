@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "dynamics.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle {
 
@@ -65,6 +66,10 @@ void VehicleModel::signals(double t, std::span<const double> x, std::span<double
 
 std::pair<int, int> VehicleModel::jacobian_bandwidth() const {
   return detail::jacobian_bandwidth(*data_);
+}
+
+std::vector<std::size_t> VehicleModel::output_states() const {
+  return detail::output_state_indices(*data_);
 }
 
 std::vector<double> VehicleModel::rest_state() const {

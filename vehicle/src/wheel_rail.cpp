@@ -34,6 +34,7 @@
 #include "ferro/contact/geometry/contact_sources.hpp"
 #include "ferro/vehicle/frames.hpp"
 #include "dynamics.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle::detail {
 void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinematics& k,
@@ -60,6 +61,7 @@ void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinemati
   rel.roll = k.angles.x() - rail_roll;
   rel.yaw = k.angles.z() - irr.d_lateral;
   model.in.geometry->contacts(to_contact_pose(rel), points);
+  if (left_right != nullptr) record_pose(left_right, rel);
 
   const Eigen::Vector3d axle = k.attitude.col(1);
   const Eigen::Vector3d omega = k.motion.angular_velocity + k.rates + k.spin * axle;
@@ -147,6 +149,7 @@ void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinemati
     problem.rolling_speed = rolling_speed;
 
     double normal_force = 0.0;
+    PointTotals point_totals;  // signals only
     for (std::size_t i = 0; i < patch_count; ++i) {
       contact::ContactPatch& patch = patches[i];
       if (!(patch.normal_force > 0.0)) continue;
@@ -170,6 +173,7 @@ void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinemati
         const double towards_centre = c.side == contact::Side::left ? -1.0 : 1.0;
         w.lateral_towards_centre += towards_centre * force.y();
         w.vertical += force.z();
+        add_patch(point_totals, patch, problem, tang);
       }
     }
 
@@ -180,6 +184,7 @@ void apply_wheel_rail(const ModelData& model, const BodyData& body, BodyKinemati
       if (w.points < WheelResult::kPointSignals) {
         w.point_normal_force[static_cast<std::size_t>(w.points)] = normal_force;
       }
+      record_point(w, c, point_totals, normal_force);
       ++w.points;
       if (normal_force > w.largest_normal_force) {
         w.largest_normal_force = normal_force;

@@ -103,6 +103,27 @@ std::vector<double> RunSignals::get_or_zero(const std::string& name) const {
   return has(name) ? get(name) : std::vector<double>(n(), 0.0);
 }
 
+std::vector<double> RunSignals::position_before(double delay) const {
+  std::vector<double> out(n());
+  for (std::size_t i = 0; i < n(); ++i) {
+    const double t = time[i] - delay;
+    if (t <= time.front()) {
+      out[i] = position.front() + speed.front() * (t - time.front());
+      continue;
+    }
+    const auto it = std::upper_bound(time.begin(), time.end(), t);
+    const auto k = static_cast<std::size_t>(it - time.begin());
+    const double u = (t - time[k - 1]) / (time[k] - time[k - 1]);
+    out[i] = position[k - 1] + u * (position[k] - position[k - 1]);
+  }
+  return out;
+}
+
+RunSignals::Located RunSignals::located(const std::string& name, double delay) const {
+  if (has(name + "_filtered")) return {get(name + "_filtered"), position_before(delay), true};
+  return {get(name), position, false};
+}
+
 std::vector<double> ZeroPhase::operator()(const std::vector<double>& x) const {
   return filtfilt(digital, x, padding);
 }
@@ -269,7 +290,7 @@ double section_speed(const std::vector<double>& position, const std::vector<doub
 
 struct Wheelset {
   const RunBody* body = nullptr;
-  std::vector<double> position;  // at the wheelset [m]
+  std::vector<double> position;  // at the wheelset, of its (possibly delayed) forces [m]
   std::vector<double> y_left, y_right, q_left, q_right;  // 20 Hz low-passed [N]
   std::vector<double> angle_left, angle_right;           // contact angle [rad]
   std::vector<double> sum_y;                             // -Y_L + Y_R, low-passed [N]
@@ -281,16 +302,20 @@ AssessedSignal signal_of(const std::string& quantity, const std::string& item,
   return {quantity, item, unit, description, std::move(position), std::move(value), limit};
 }
 
-void assess_wheels(Assessment& a, const detail::RunSignals& run, const AssessmentOptions& o,
-                   std::vector<Wheelset>& wheelsets) {
+void assess_wheels(Assessment& a, const detail::RunSignals& run, const RunContext& c,
+                   const AssessmentOptions& o, std::vector<Wheelset>& wheelsets) {
   const auto lp = detail::zero_phase_lowpass(o.filter_order, o.lowpass, run.sample_rate);
   for (auto& w : wheelsets) {
     const std::string& name = w.body->name;
     const double q0 = 0.5 * w.body->static_load;
     for (const char* side : {"left", "right"}) {
       const std::string item = fmt::format("{}.{}", name, side);
-      const auto y = lp(run.get(item + ".Y"));
-      const auto q = lp(run.get(item + ".Q"));
+      const auto y_in = run.located(item + ".Y", c.anti_alias_delay());
+      const auto q_in = run.located(item + ".Q", c.anti_alias_delay());
+      a.forces_filtered_in_run = y_in.filtered && q_in.filtered;
+      w.position = detail::shifted(y_in.position, w.body->rest_x);
+      const auto y = lp(y_in.value);
+      const auto q = lp(q_in.value);
       const auto angle = run.get(item + ".contact_angle");
       // Y/Q of the filtered forces, 2 m sliding mean.
       std::vector<double> ratio(y.size());
@@ -305,10 +330,12 @@ void assess_wheels(Assessment& a, const detail::RunSignals& run, const Assessmen
         for (double g : angle) flange = std::max(flange, std::abs(g));
       if (flange >= o.nadal_min_angle && flange < M_PI / 2 && std::tan(flange) > a.mu) {
         const double nadal = nadal_limit(flange, a.mu);
-        detail::add_rows(a, "running safety",
-                         fmt::format("Y/Q 2 m against Nadal ({:.1f} deg)", flange * 180.0 / M_PI),
-                         item, "-", ratio_2m.position, ratio_2m.mean, Statistic::extreme,
+        detail::add_rows(a, "running safety", "Y/Q 2 m against Nadal", item, "-",
+                         ratio_2m.position, ratio_2m.mean, Statistic::extreme,
                          [&](const TrackSection&) { return nadal; }, false, false);
+        a.notes.push_back(fmt::format("Nadal: {} reaches a contact angle of {:.1f} deg: limit "
+                                      "{:.3f} at mu = {:g}",
+                                      item, flange * 180.0 / M_PI, nadal, a.mu));
       }
       a.signals.push_back(signal_of("Y/Q 2 m", item, "-",
                                     "2 m sliding mean of Y/Q (20 Hz low-passed Y and Q)",
@@ -407,8 +434,8 @@ void assess_stability(Assessment& a, const detail::RunSignals& run, const RunCon
   for (const auto& w : wheelsets) {
     const auto rms = sliding_rms(w.position, band(w.sum_y), o.stability_window, o.stability_step);
     const double lim = 0.5 * prudhomme_limit(w.body->static_load, a.alpha);
-    detail::add_rows(a, "stability", fmt::format("sum Y rms {:g} m, {:.2f}-{:.2f} Hz",
-                                                 o.stability_window, f_low, f_high),
+    detail::add_rows(a, "stability", fmt::format("sum Y rms {:g} m, f0 +- {:g} Hz",
+                                                 o.stability_window, o.stability_half_band),
                      w.body->name, "N", rms.position, rms.mean, Statistic::max_abs,
                      [&](const TrackSection&) { return lim; });
     a.signals.push_back(signal_of("sum Y rms", w.body->name, "N",
@@ -429,19 +456,36 @@ void assess_stability(Assessment& a, const detail::RunSignals& run, const RunCon
           nearest = &bb;
       if (nearest == &b) own.push_back(&w);
     }
-    if (!run.has(b.name + ".y_dot") && !run.has(b.name + ".ay")) continue;
+    std::sort(own.begin(), own.end(),
+              [](const RunBody* l, const RunBody* r) { return l->rest_x > r->rest_x; });
     double mass = b.mass;
     for (const auto* w : own) mass += w->mass;
     const double lim = bogie_acceleration_limit(mass);
-    const auto ydd = detail::derivative(run.time, run.get_or_zero(b.name + ".y_dot"));
-    const auto psidd = detail::derivative(run.time, run.get_or_zero(b.name + ".yaw_dot"));
-    for (const auto* w : own) {
-      const double dx = w->rest_x - b.rest_x;
+    std::vector<double> ydd, psidd;  // the rigid-body fallback
+    for (std::size_t j = 0; j < own.size(); ++j) {
+      const RunBody* w = own[j];
+      const std::string sensor =
+          fmt::format("{}_{}", b.name, j == 0 ? "front" : j + 1 == own.size() ? "rear" : "middle");
       const std::string item = fmt::format("{} above {}", b.name, w->name);
-      std::vector<double> acc(run.n());
-      for (std::size_t i = 0; i < acc.size(); ++i) acc[i] = ydd[i] + dx * psidd[i];
+      std::vector<double> acc, place;
+      if (run.has(sensor + ".ay")) {
+        auto s = run.located(sensor + ".ay", c.anti_alias_delay());
+        acc = std::move(s.value);
+        place = std::move(s.position);
+      } else {
+        if (!run.has(b.name + ".y_dot")) continue;
+        if (ydd.empty()) {
+          ydd = detail::derivative(run.time, run.get_or_zero(b.name + ".y_dot"));
+          psidd = detail::derivative(run.time, run.get_or_zero(b.name + ".yaw_dot"));
+        }
+        a.accelerations_derived = true;
+        const double dx = w->rest_x - b.rest_x;
+        acc.resize(run.n());
+        for (std::size_t i = 0; i < acc.size(); ++i) acc[i] = ydd[i] + dx * psidd[i];
+        place = run.position;
+      }
       const auto filtered = band(acc);
-      const auto pos = detail::shifted(run.position, w->rest_x);
+      const auto pos = detail::shifted(place, w->rest_x);
       const auto rms = sliding_rms(pos, filtered, o.stability_window, o.stability_step);
       detail::add_rows(a, "stability", fmt::format("bogie frame lateral acc. rms {:g} m",
                                                    o.stability_window),
@@ -497,7 +541,12 @@ Assessment assess_run(const std::string& h5_path, const AssessmentOptions& o) {
   if (wheelsets.empty())
     throw std::invalid_argument(fmt::format(
         "{}: no wheel forces (signals wheelset_<i>.<left|right>.Y, .Q, .contact_angle)", h5_path));
-  assess_wheels(a, run, o, wheelsets);
+  assess_wheels(a, run, c, o, wheelsets);
+  if (!a.forces_filtered_in_run)
+    a.notes.push_back(
+        "the run has no anti-alias filtered wheel forces (Y_filtered, Q_filtered): content above "
+        "the Nyquist frequency of its output aliases into the assessed values (run with "
+        "output.anti_alias_frequency, or a finer output.interval)");
   assess_stability(a, run, c, o, wheelsets);
   detail::assess_ride(a, run, c, o);
   return a;

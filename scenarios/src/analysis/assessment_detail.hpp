@@ -24,6 +24,18 @@ class RunSignals {
   [[nodiscard]] std::size_t n() const { return time.size(); }
   [[nodiscard]] const io::H5File& file() const { return file_; }
 
+  /// The reference point's position at t - delay (the place a signal delayed by `delay` [s]
+  /// belongs to); before the run's start extrapolated at the initial speed.
+  [[nodiscard]] std::vector<double> position_before(double delay) const;
+  /// A force or acceleration signal and its place: `<name>_filtered` (the run's anti-alias
+  /// low-pass) at the positions `delay` earlier when the run has it, else `<name>` at the
+  /// reference positions. `filtered` tells which.
+  struct Located {
+    std::vector<double> value, position;
+    bool filtered = false;
+  };
+  [[nodiscard]] Located located(const std::string& name, double delay) const;
+
   std::string path;
   std::vector<double> time, position, speed;
   double sample_rate = 0.0;

@@ -5,16 +5,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "assessment_detail.hpp"
 #include "ferro/scenarios/analysis/ride_comfort.hpp"
+#include "ferro/scenarios/sensors.hpp"
 
 namespace ferro::scenarios::analysis::detail {
 
 namespace {
 
 struct FloorPoint {
-  std::string name;  // "floor above bogie_1", "floor centre", ...
+  std::string name;  // floor_front, floor_centre, floor_rear (the sensors' names)
   double dx = 0.0;   // from the car body's centre of mass, along the car [m]
 };
 
@@ -60,40 +62,57 @@ void assess_ride(Assessment& a, const RunSignals& run, const RunContext& c,
     a.notes.push_back("ride: the run has no car body (model scope bogie or wheelset): not assessed");
     return;
   }
-  std::vector<FloorPoint> points;
   std::vector<const RunBody*> bogies;
   for (const auto& b : c.bodies)
     if (b.kind == "bogie_frame") bogies.push_back(&b);
   std::sort(bogies.begin(), bogies.end(),
             [](const RunBody* l, const RunBody* r) { return l->rest_x > r->rest_x; });
-  if (!bogies.empty())
-    points.push_back({fmt::format("floor above {}", bogies.front()->name),
-                      bogies.front()->rest_x - car->rest_x});
-  points.push_back({"floor centre", 0.0});
-  if (bogies.size() > 1)
-    points.push_back({fmt::format("floor above {}", bogies.back()->name),
-                      bogies.back()->rest_x - car->rest_x});
+  // The standard floor points: above each bogie centre and mid-body.
+  std::vector<FloorPoint> points;
+  if (!bogies.empty()) points.push_back({"floor_front", bogies.front()->rest_x - car->rest_x});
+  points.push_back({"floor_centre", 0.0});
+  if (bogies.size() > 1) points.push_back({"floor_rear", bogies.back()->rest_x - car->rest_x});
 
-  const FloorMotion m = floor_motion(run, c, *car);
-  a.accelerations_derived = true;
+  std::optional<FloorMotion> motion;  // the rigid-body fallback, computed when needed
+  const double delay = c.anti_alias_delay();
   const auto band = zero_phase_bandpass(o.filter_order, o.ride_low, o.ride_high, run.sample_rate);
   const auto lp = zero_phase_lowpass(o.filter_order, o.lowpass, run.sample_rate);
   const std::string group = "ride";
   const std::string band_text = fmt::format("{:g}-{:g} Hz", o.ride_low, o.ride_high);
+  const std::size_t n = run.n();
   for (const auto& p : points) {
-    const std::size_t n = run.n();
-    std::vector<double> ay(n), ax(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      ay[i] = m.ay_cg[i] + p.dx * m.yaw_acc[i];
-      ax[i] = m.x_acc[i];
+    std::vector<double> ax, ay, az, place;
+    // Vertical floor accelerations at lateral offsets: (label suffix, values).
+    std::vector<std::pair<double, std::vector<double>>> vertical;
+    if (run.has(p.name + ".ay")) {
+      // Accelerometers of the run.
+      auto lat = run.located(p.name + ".ay", delay);
+      ax = run.located(p.name + ".ax", delay).value;
+      az = run.located(p.name + ".az", delay).value;
+      ay = std::move(lat.value);
+      place = std::move(lat.position);
+      vertical.push_back({0.0, az});
+      for (const auto& [side, dy] : {std::pair{"_left", 1.0}, std::pair{"_right", -1.0}})
+        if (run.has(p.name + side + ".az"))
+          vertical.push_back({dy * kFloorSideOffset, run.located(p.name + side + ".az", delay).value});
+    } else {
+      if (!motion) motion = floor_motion(run, c, *car);
+      a.accelerations_derived = true;
+      const FloorMotion& m = *motion;
+      ax = m.x_acc;
+      ay.resize(n);
+      for (std::size_t i = 0; i < n; ++i) ay[i] = m.ay_cg[i] + p.dx * m.yaw_acc[i];
+      for (double dy : {0.0, o.floor_offset, -o.floor_offset}) {
+        if (dy != 0.0 && !(o.floor_offset > 0.0)) continue;
+        std::vector<double> v(n);
+        for (std::size_t i = 0; i < n; ++i)
+          v[i] = m.z_acc[i] + dy * m.roll_acc[i] - p.dx * m.pitch_acc[i];
+        vertical.push_back({dy, std::move(v)});
+      }
+      az = vertical.front().second;
+      place = run.position;
     }
-    const auto vertical = [&](double dy) {
-      std::vector<double> az(n);
-      for (std::size_t i = 0; i < n; ++i)
-        az[i] = m.z_acc[i] + dy * m.roll_acc[i] - p.dx * m.pitch_acc[i];
-      return az;
-    };
-    const auto pos = shifted(run.position, car->rest_x + p.dx);
+    const auto pos = shifted(place, car->rest_x + p.dx);
     const auto ay_band = band(ay);
     add_rows(a, group, fmt::format("lateral acc. {} (0.15/99.85 %)", band_text), p.name, "m/s^2",
              pos, ay_band, Statistic::extreme, nullptr);
@@ -104,10 +123,9 @@ void assess_ride(Assessment& a, const RunSignals& run, const RunContext& c,
     a.signals.push_back({"car body lateral acc.", p.name, "m/s^2",
                          fmt::format("floor lateral acceleration, {}", band_text), pos, ay_band,
                          std::numeric_limits<double>::quiet_NaN()});
-    for (double dy : {0.0, o.floor_offset, -o.floor_offset}) {
-      if (dy != 0.0 && !(o.floor_offset > 0.0)) continue;
+    for (const auto& [dy, values] : vertical) {
       const std::string item = dy == 0.0 ? p.name : fmt::format("{}, y {:+g} m", p.name, dy);
-      const auto az_band = band(vertical(dy));
+      const auto az_band = band(values);
       add_rows(a, group, fmt::format("vertical acc. {} (0.15/99.85 %)", band_text), item,
                "m/s^2", pos, az_band, Statistic::extreme, nullptr);
       add_rows(a, group, fmt::format("vertical acc. {} rms", band_text), item, "m/s^2", pos,
@@ -117,7 +135,6 @@ void assess_ride(Assessment& a, const RunSignals& run, const RunContext& c,
                            az_band, std::numeric_limits<double>::quiet_NaN()});
     }
     // Comfort over the whole run.
-    const auto az = vertical(0.0);
     const ComfortIndex ci = comfort_index(ax, ay, az, run.sample_rate);
     add_run_row(a, group, fmt::format("N_MV ({}{})", comfort_class(ci.n_mv),
                                       ci.short_record

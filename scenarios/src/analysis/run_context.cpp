@@ -117,6 +117,8 @@ RunContext run_context(const Scene& scene) {
     }
   }
   c.twist_test = scene.assessment.twist_test;
+  c.anti_alias_frequency = scene.output.anti_alias_frequency;
+  c.anti_alias_order = c.anti_alias_frequency > 0.0 ? scene.output.anti_alias_order : 0;
   return c;
 }
 
@@ -170,6 +172,8 @@ void write_run_context(io::H5File& file, const RunContext& c) {
   }
   file.ensure_group("/assessment");
   file.set_attribute("/assessment", "twist_test", c.twist_test ? 1 : 0);
+  file.set_attribute("/assessment", "anti_alias_frequency", c.anti_alias_frequency);
+  file.set_attribute("/assessment", "anti_alias_order", c.anti_alias_order);
 }
 
 RunContext read_run_context(const io::H5File& file) {
@@ -206,7 +210,20 @@ RunContext read_run_context(const io::H5File& file) {
   }
   if (file.has_attribute("/assessment", "twist_test"))
     c.twist_test = file.integer_attribute("/assessment", "twist_test") != 0;
+  if (file.has_attribute("/assessment", "anti_alias_frequency")) {
+    c.anti_alias_frequency = file.number_attribute("/assessment", "anti_alias_frequency");
+    c.anti_alias_order =
+        static_cast<int>(file.integer_attribute("/assessment", "anti_alias_order"));
+  }
   return c;
+}
+
+double RunContext::anti_alias_delay() const {
+  if (!(anti_alias_frequency > 0.0) || anti_alias_order < 2) return 0.0;
+  double sum = 0.0;
+  for (int k = 1; k <= anti_alias_order / 2; ++k)
+    sum += 2.0 * std::sin((2.0 * k - 1.0) * M_PI / (2.0 * anti_alias_order));
+  return sum / (2.0 * M_PI * anti_alias_frequency);
 }
 
 double track_shift_alpha(const std::string& category) { return category == "wagon" ? 0.85 : 1.0; }

@@ -11,6 +11,7 @@
 
 #include "ferro/scenarios/track_config.hpp"
 #include "ferro/vehicle/integrator.hpp"
+#include "ferro/vehicle/output_signals.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
 
@@ -56,6 +57,16 @@ struct OutputConfig {
   double flush_seconds = 0.5;       ///< flush to disk at least this often (wall clock) [s]
   std::vector<std::string> csv;     ///< signals also written to CSV ("all" for every one)
   std::vector<std::string> plots;   ///< signals plotted by `ferrodyn run` (empty: the states)
+  /// Vehicle scenes: sensors of the run (standard positions resolved against the vehicle;
+  /// sensors.hpp); the standard positions of the modelled bodies when the key is absent.
+  std::vector<vehicle::SensorSpec> sensors;
+  /// Vehicle scenes: corner of the in-run anti-alias low-pass of the wheel forces and sensor
+  /// accelerations [Hz]; 0: none.
+  double anti_alias_frequency = 50.0;
+  int anti_alias_order = 4;  ///< of that Butterworth low-pass: 2, 4, 6 or 8
+  /// Floor height of the standard floor sensors above the top of rail [m]; NaN: the car
+  /// body's centre of mass.
+  double floor_height = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct EigenConfig {

@@ -120,7 +120,9 @@ struct Assessment {
                                                          ///< stability not assessed
   bool f0_from_spectrum = true;
   bool twist_test = false;
-  bool accelerations_derived = true;  ///< floor/bogie accelerations derived from rigid motion
+  bool accelerations_derived = false;  ///< some floor/bogie accelerations derived from the
+                                       ///< bodies' rigid motion (no sensor in the run)
+  bool forces_filtered_in_run = false;  ///< wheel forces through the run's anti-alias filter
   std::vector<TrackSection> sections;
   std::vector<AssessmentRow> rows;
   std::vector<AssessedSignal> signals;

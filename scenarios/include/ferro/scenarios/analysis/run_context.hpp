@@ -35,6 +35,12 @@ struct RunContext {
   std::vector<TrackSection> sections;
   double rail_spacing = 1.5;  ///< distance the cant is measured over [m]
   bool twist_test = false;  ///< the scene says the run is the twist test
+  /// The run's in-run anti-alias low-pass (Butterworth): corner [Hz] (0: none) and order.
+  double anti_alias_frequency = 0.0;
+  int anti_alias_order = 0;
+  /// Delay of that low-pass at low frequencies, sum 1/(Q_k w_c) [s] (0 without it): its
+  /// outputs at t are its input around t - delay.
+  [[nodiscard]] double anti_alias_delay() const;
   [[nodiscard]] const RunBody* body(const std::string& name) const;
 };
 
