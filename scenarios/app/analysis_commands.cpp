@@ -140,7 +140,7 @@ int do_assess(const AssessArgs& a) {
     return std::find(groups.begin(), groups.end(), x->group) - groups.begin();
   };
   std::stable_sort(shown.begin(), shown.end(),
-                   [&](const auto* l, const auto* r) { return rank(l) < rank(r); });
+                   [&](const auto* lhs, const auto* rhs) { return rank(lhs) < rank(rhs); });
   std::string group;
   for (const auto* row : shown) {
     if (row->group != group) {

@@ -144,21 +144,33 @@ TEST(AssessScene, MainJobAssessedAlikeAtTheDefaultAndAFineOutputInterval) {
   }
   const auto& coarse = by_interval[5e-3];
   const auto& fine = by_interval[2e-4];
-  ASSERT_EQ(coarse.rows.size(), fine.rows.size());
+  std::map<std::string, const AssessmentRow*> fine_rows;
+  for (const auto& r : fine.rows) fine_rows[r.quantity + " | " + r.item + " | " + r.section] = &r;
   double worst = 0.0;
   std::string worst_row;
-  for (std::size_t i = 0; i < coarse.rows.size(); ++i) {
-    const auto& c = coarse.rows[i];
-    const auto& f = fine.rows[i];
-    ASSERT_EQ(c.quantity + c.item + c.section, f.quantity + f.item + f.section);
-    EXPECT_EQ(c.verdict, f.verdict) << c.quantity << " " << c.item;
+  std::size_t compared = 0;
+  for (const auto& c : coarse.rows) {
+    const std::string key = c.quantity + " | " + c.item + " | " + c.section;
+    const auto it = fine_rows.find(key);
+    if (it == fine_rows.end()) {
+      // Only Nadal's information rows come and go: they are shown for wheels whose largest
+      // sampled contact angle reaches flange contact (45 deg).
+      EXPECT_EQ(c.verdict, Verdict::info) << key;
+      continue;
+    }
+    const AssessmentRow& f = *it->second;
+    fine_rows.erase(it);
+    ++compared;
+    EXPECT_EQ(c.verdict, f.verdict) << key;
     const double rel = std::abs(c.value - f.value) / std::max(std::abs(f.value), 1e-12);
     if (rel > worst) {
       worst = rel;
-      worst_row = c.quantity + " " + c.item + " " + c.section;
+      worst_row = key;
     }
-    EXPECT_LE(std::abs(c.value - f.value), 0.02 * std::abs(f.value)) << c.quantity << " " << c.item;
+    EXPECT_LE(std::abs(c.value - f.value), 0.02 * std::abs(f.value)) << key;
   }
+  for (const auto& [key, r] : fine_rows) EXPECT_EQ(r->verdict, Verdict::info) << key;
+  EXPECT_GT(compared, 50u);
   std::printf("largest difference 5 ms / 0.2 ms: %.3f %% (%s)\n", 100.0 * worst, worst_row.c_str());
 }
 

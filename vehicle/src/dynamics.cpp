@@ -72,6 +72,26 @@ void equations_of_motion(const ModelData& m, const Workspace& ws, double rate,
   }
 }
 
+/// The co-running track under every contact wheelset: rates of its positions and the
+/// accelerations its pads, ballast and the wheels' loads give (into xdot when not empty); the
+/// pad forces into the workspace.
+void track_motion(const ModelData& m, Workspace& ws, std::span<const double> x,
+                  std::span<double> xdot) {
+  ws.pad_forces.resize(m.contact_bodies.size());
+  constexpr auto n = static_cast<std::size_t>(track::kTrackPositions);
+  std::array<double, n> acc{};
+  for (std::size_t w = 0; w < m.contact_bodies.size(); ++w) {
+    const auto q = static_cast<std::size_t>(m.bodies[static_cast<std::size_t>(m.contact_bodies[w])].track);
+    track::co_running_track_accelerations(*m.track, &x[q], &x[q + n], ws.rail_loads[w].data(),
+                                          acc.data(), ws.pad_forces[w].data());
+    if (xdot.empty()) continue;
+    for (std::size_t j = 0; j < n; ++j) {
+      xdot[q + j] = x[q + n + j];
+      xdot[q + n + j] = acc[j];
+    }
+  }
+}
+
 }  // namespace
 
 void frame_at(const ModelData& m, double s, double speed, double rate, BodyKinematics& k,
@@ -114,9 +134,11 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
     if (e.a < 0) frame_at(m, s_ref + e.spec.point_a.x(), speed, rate, ws.track_frame, false);
     apply_element(m, e, ws.kin, ws.track_frame, x, xdot);
   }
+  if (m.track) ws.rail_loads.assign(m.contact_bodies.size(), {});
   for (std::size_t w = 0; w < m.contact_bodies.size(); ++w) {
     const auto i = static_cast<std::size_t>(m.contact_bodies[w]);
-    apply_wheel_rail(m, m.bodies[i], ws.kin[i], ws.wheel_rail,
+    apply_wheel_rail(m, m.bodies[i], ws.kin[i], x, ws.wheel_rail,
+                     m.track ? ws.rail_loads[w].data() : nullptr,
                      wheels != nullptr ? wheels + 2 * w : nullptr);
   }
   if (outputs.car_body_ay != nullptr && m.car_body >= 0) {
@@ -125,10 +147,9 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
     *outputs.car_body_ay = b.dynamic ? (k.attitude.transpose() * k.force).y() / b.mass
                                      : std::numeric_limits<double>::quiet_NaN();
   }
-  if (!xdot.empty()) {
-    equations_of_motion(m, ws, rate, xdot);
-    output_filter_rates(m, ws, wheels, x, xdot);
-  }
+  if (!xdot.empty()) equations_of_motion(m, ws, rate, xdot);
+  if (m.track && (!xdot.empty() || outputs.pad_forces)) track_motion(m, ws, x, xdot);
+  if (!xdot.empty()) output_filter_rates(m, ws, wheels, x, xdot);
 }
 
 }  // namespace ferro::vehicle::detail

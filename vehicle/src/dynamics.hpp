@@ -17,6 +17,8 @@ namespace ferro::vehicle::detail {
 struct EvaluationOutputs {
   WheelResult* wheels = nullptr;  ///< null: not wanted
   double* car_body_ay = nullptr;  ///< null: not wanted
+  /// Fill the workspace's pad forces of the flexible track (also done whenever xdot is asked).
+  bool pad_forces = false;
 };
 
 /// Evaluates the model at (t, x): xdot (may be empty) and the outputs asked for.
@@ -36,9 +38,12 @@ void apply_element(const ModelData& m, const ElementData& element,
                    std::vector<BodyKinematics>& kin, const BodyKinematics& track_frame_a,
                    std::span<const double> x, std::span<double> xdot);
 
-/// Wheel-rail forces on one wheelset (added to its accumulators) and the per-wheel results.
+/// Wheel-rail forces on one wheelset (added to its accumulators), their reactions on its two
+/// rails (`rail_loads`, left and right, added to; may be null on a rigid track) and the
+/// per-wheel results (`left_right`, may be null).
 void apply_wheel_rail(const ModelData& m, const BodyData& body, BodyKinematics& k,
-                      WheelRailScratch& scratch, WheelResult* left_right);
+                      std::span<const double> x, WheelRailScratch& scratch,
+                      track::RailLoad* rail_loads, WheelResult* left_right);
 
 /// Position and velocity (ground frame) of a point p given in body axes, and its arm from the
 /// body's centre in the axes of the body's track frame (the rotated p; (0, p_y, p_z) for the

@@ -50,6 +50,7 @@ class Problem {
                   : std::sqrt(b.inertia[static_cast<Eigen::Index>(d - 3)] / b.mass) / g);
       }
       if (b.spin >= 0) add(b.spin, b.spin, std::sqrt(b.inertia[1] / b.mass) / g);
+      if (b.track >= 0) add_track(b.track, *m_.track, g);
     }
     for (const detail::ElementData& e : m_.elements) {
       if (e.state >= 0) add(e.state, e.state, 1.0 / g);  // [s/m]: 1 m/s counts as 1 g
@@ -116,6 +117,18 @@ class Problem {
   }
 
  private:
+  /// The track's positions, their accelerations scaled like a body's (rolls by the radius of
+  /// gyration of the rail or sleeper).
+  void add_track(int first, const track::CoRunningTrackParams& p, double g) {
+    const double rail_gyration = std::sqrt(p.rail_roll_inertia / p.rail_mass_vertical);
+    const double sleeper_gyration = std::sqrt(p.sleeper_roll_inertia / p.sleeper_mass_vertical);
+    for (int j = 0; j < track::kTrackPositions; ++j) {
+      const bool roll = j % 3 == 2;
+      const double radius = !roll ? 1.0 : (j < 6 ? rail_gyration : sleeper_gyration);
+      add(first + j, first + track::kTrackPositions + j, radius / g);
+    }
+  }
+
   void add(int unknown, int residual, double scale) {
     unknown_.push_back(unknown);
     residual_.push_back(residual);

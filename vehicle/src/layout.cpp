@@ -45,6 +45,19 @@ void name_states(ModelData& m) {
           "spin speed perturbation beta (spin = V/r0 + beta)"};
     }
   }
+  for (const BodyData& b : m.bodies) {
+    if (b.track < 0) continue;
+    for (int j = 0; j < track::kTrackPositions; ++j) {
+      const std::string name = fmt::format("track.{}.{}", b.name, track::kTrackPositionNames[j]);
+      const bool angle = name.ends_with("roll");
+      m.states[static_cast<std::size_t>(b.track + j)] = {
+          name, angle ? "rad" : "m",
+          fmt::format("co-running track under {}: {} displacement from the unloaded track",
+                      b.name, track::kTrackPositionNames[j])};
+      m.states[static_cast<std::size_t>(b.track + track::kTrackPositions + j)] = {
+          name + "_dot", angle ? "rad/s" : "m/s", fmt::format("rate of {}", name)};
+    }
+  }
   for (const ElementData& e : m.elements) {
     if (e.state >= 0) {
       m.states[static_cast<std::size_t>(e.state)] = {
@@ -112,11 +125,27 @@ void name_signals(ModelData& m) {
                              "rolling radius of the left wheel's most loaded point minus the "
                              "right's (0 when a wheel is lifted)"});
     m.signal_list.push_back({fmt::format("{}.angle_of_attack", name), "rad",
-                             "yaw of the wheelset relative to the rails' actual direction "
-                             "(alignment irregularity included), + nose left"});
-    m.signal_list.push_back({fmt::format("{}.lateral_to_rails", name), "m",
-                             "lateral displacement of the wheelset from the rails' centre "
-                             "(irregularities included), + left"});
+                             "yaw of the wheelset relative to its rails' actual direction "
+                             "(irregularities and rail deflection included; the mean over the "
+                             "two rails), + nose left"});
+  }
+  for (int bi : m.contact_bodies) {
+    const BodyData& b = m.bodies[static_cast<std::size_t>(bi)];
+    m.signal_list.push_back(
+        {fmt::format("{}.y_rel_rails", b.name), "m",
+         "lateral displacement of the axle centre from the mid-point of its two rails' heads "
+         "(irregularities and rail deflection included), + left"});
+    if (b.track < 0) continue;
+    for (const char* side : {"left", "right"}) {
+      const auto add = [&](const char* what, const char* unit, const char* desc) {
+        m.signal_list.push_back({fmt::format("track.{}.{}_rail.{}", b.name, side, what), unit, desc});
+      };
+      add("head_lateral", "m", "elastic lateral displacement of the rail head under the wheel, + left");
+      add("head_vertical", "m", "elastic vertical displacement of the rail under the wheel, + up");
+      add("seat_force_lateral", "N",
+          "lateral force of the rail on its rail seats (pads), + towards the field side");
+      add("seat_force_vertical", "N", "vertical force of the rail on its rail seats (pads), + down");
+    }
   }
   if (m.car_body >= 0) {
     m.signal_list.push_back(

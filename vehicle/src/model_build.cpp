@@ -157,6 +157,11 @@ void lay_out_states(ModelData& m, const std::vector<int>& position_of,
       const int host = a_in ? e.a : e.b;
       if (host == static_cast<int>(i) && (a_in || b_in)) e.state = next++;
     }
+    // The co-running track under a wheelset: its positions and rates, next to the wheelset.
+    if (b.has_contact && m.in.track_structure.flexible()) {
+      b.track = next;
+      next += 2 * track::kTrackPositions;
+    }
     next = lay_out_output_filters(m, i, next);
     b.block_end = next;
   }
@@ -213,6 +218,12 @@ void build_contact_mechanics(ModelData& m) {
   if (m.in.track) m.nominal_rail_spacing = m.in.track->alignment().design().rail_spacing;
 }
 
+void build_track_structure(ModelData& m) {
+  if (!m.in.track_structure.flexible()) return;
+  m.track = track::co_running_equivalent(m.in.track_structure.ballasted, m.nominal_rail_spacing);
+  m.track->validate();
+}
+
 }  // namespace
 
 std::shared_ptr<const ModelData> build_model_data(VehicleModelInputs inputs) {
@@ -232,8 +243,9 @@ std::shared_ptr<const ModelData> build_model_data(VehicleModelInputs inputs) {
   }
   const std::vector<bool> in_scope = bodies_in_scope(m);
   lay_out_states(m, position_of, in_scope, active_dofs(m, position_of, in_scope));
-  name_states_and_signals(m);
   build_contact_mechanics(m);
+  build_track_structure(m);
+  name_states_and_signals(m);
   return data;
 }
 

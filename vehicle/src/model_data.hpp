@@ -16,6 +16,7 @@
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/contact/semi_hertz.hpp"
 #include "ferro/contact/tangential_model.hpp"
+#include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::vehicle::detail {
@@ -33,6 +34,9 @@ struct BodyData {
   std::array<int, 6> q{-1, -1, -1, -1, -1, -1};  ///< position state per DOF
   std::array<int, 6> v{-1, -1, -1, -1, -1, -1};  ///< rate state per DOF
   int spin = -1;                                 ///< spin perturbation state
+  /// Wheelsets on a flexible track: first state of the co-running track under it
+  /// (track::kTrackPositions positions, then their rates); -1 on a rigid track.
+  int track = -1;
   int block_begin = 0, block_end = 0;            ///< state range incl. series-damper states
   /// First state of the output filters this body hosts (output_signals.cpp), -1: none.
   int output_filters = -1;
@@ -88,6 +92,9 @@ struct ModelData {
   std::vector<SignalInfo> states, signal_list;
   ContactMechanics contact;
   double nominal_rail_spacing = 1.5;
+  /// The co-running track under every contact wheelset (track structure `discrete`); empty on a
+  /// rigid track.
+  std::optional<track::CoRunningTrackParams> track;
   std::vector<SensorData> sensors;
   OutputFilterData output_filter;
 };

@@ -111,10 +111,10 @@ void record_point(WheelResult& w, const contact::WheelRailContact& c, const Poin
   if (normal_force > w.largest_normal_force) w.largest = r;
 }
 
-void record_pose(WheelResult* left_right, const RailRelativePose& rel) {
-  for (int side = 0; side < 2; ++side) {
-    left_right[side].wheelset_lateral = rel.lateral;
-    left_right[side].angle_of_attack = rel.yaw;
+void record_pose(WheelResult* left_right, const RailRelativePose& rel, int side) {
+  for (int s = 0; s < 2; ++s) {
+    if (side >= 0 && s != side) continue;
+    left_right[s].angle_of_attack = rel.yaw;
   }
 }
 

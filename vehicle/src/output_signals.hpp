@@ -24,8 +24,9 @@ void add_patch(PointTotals& totals, const contact::ContactPatch& patch,
 void record_point(WheelResult& w, const contact::WheelRailContact& c, const PointTotals& totals,
                   double normal_force);
 
-/// Records the wheelset's pose relative to the rails into both wheels' results.
-void record_pose(WheelResult* left_right, const RailRelativePose& rel);
+/// Records the wheelset's yaw relative to a rail (side 0 left, 1 right) into that wheel's
+/// result, or relative to both (side -1, the rails displaced alike) into both.
+void record_pose(WheelResult* left_right, const RailRelativePose& rel, int side);
 
 /// Validates m.in.outputs and resolves the sensors' bodies (after the bodies are ordered).
 /// Throws std::invalid_argument naming the field ("outputs.sensors[1].body: ...").

@@ -10,7 +10,7 @@ void signals(const ModelData& m, Workspace& ws, double t, std::span<const double
              std::span<double> out) {
   ws.wheels.assign(2 * m.contact_bodies.size(), WheelResult{});
   double ay = std::numeric_limits<double>::quiet_NaN();
-  evaluate(m, ws, t, x, {}, EvaluationOutputs{ws.wheels.data(), &ay});
+  evaluate(m, ws, t, x, {}, EvaluationOutputs{ws.wheels.data(), &ay, true});
   std::size_t o = 0;
   for (std::size_t body = 0; body < m.contact_bodies.size(); ++body) {
     for (std::size_t side = 0; side < 2; ++side) {
@@ -51,8 +51,32 @@ void signals(const ModelData& m, Workspace& ws, double t, std::span<const double
     const WheelResult& l = ws.wheels[2 * body];
     const WheelResult& r = ws.wheels[2 * body + 1];
     out[o++] = l.points > 0 && r.points > 0 ? l.largest.rolling_radius - r.largest.rolling_radius : 0.0;
-    out[o++] = l.angle_of_attack;
-    out[o++] = l.wheelset_lateral;
+    // Relative to the pair of rails: the mean of the two rails' directions.
+    out[o++] = 0.5 * (l.angle_of_attack + r.angle_of_attack);
+  }
+  for (std::size_t w = 0; w < m.contact_bodies.size(); ++w) {
+    const auto i = static_cast<std::size_t>(m.contact_bodies[w]);
+    const BodyData& b = m.bodies[i];
+    const BodyKinematics& k = ws.kin[i];
+    // Elastic lateral displacement of each rail head (zero on a rigid track).
+    std::array<double, 2> head_y{0.0, 0.0};
+    if (b.track >= 0) {
+      for (std::size_t s = 0; s < 2; ++s) {
+        const std::size_t q = static_cast<std::size_t>(b.track) + 3 * s;
+        head_y[s] = x[q] - m.track->rail_head_height * x[q + 2];
+      }
+    }
+    out[o++] = b.rest.y() + k.u.y() - (k.irregularity.lateral + 0.5 * (head_y[0] + head_y[1]));
+    if (b.track < 0) continue;
+    for (std::size_t s = 0; s < 2; ++s) {
+      const std::size_t q = static_cast<std::size_t>(b.track) + 3 * s;
+      const track::PadForce& pad = ws.pad_forces[w][s];
+      const double outwards = s == 0 ? 1.0 : -1.0;  // the left rail's field side is +y
+      out[o++] = head_y[s];
+      out[o++] = x[q + 1];
+      out[o++] = -outwards * pad.force_y;  // the pad pushes the rail back: the rail pushes out
+      out[o++] = pad.force_z;  // the pad holds the rail up (force_z > 0): compression
+    }
   }
   if (m.car_body >= 0) out[o++] = ay;
   out[o++] = m.in.start_position + m.in.speed.distance(t);

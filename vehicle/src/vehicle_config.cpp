@@ -13,7 +13,7 @@ namespace {
 
 void require(bool ok, const std::string& where, const std::string& field,
              const std::string& rule) {
-  if (!ok) throw SpecError(field, fmt::format("{}.{}: {}", where, field, rule));
+  if (!ok) throw SpecError(where, field, rule);
 }
 
 bool finite_positive(double v) { return std::isfinite(v) && v > 0.0; }

@@ -16,6 +16,7 @@
 #include "ferro/contact/semi_hertz.hpp"
 #include "ferro/track/kinematics.hpp"
 #include "ferro/track/track.hpp"
+#include "ferro/track/track_structure.hpp"
 
 namespace ferro::vehicle::detail {
 
@@ -64,9 +65,9 @@ struct WheelResult {
   double creep_force_x = 0.0, creep_force_y = 0.0, spin_moment = 0.0, wear_number = 0.0;
   /// The most loaded point's.
   PointResult largest;
-  /// The wheelset's pose relative to the rails (the same in both wheels' results): lateral
-  /// displacement [m] and yaw relative to the rails' actual direction (angle of attack) [rad].
-  double wheelset_lateral = 0.0, angle_of_attack = 0.0;
+  /// The wheelset's yaw relative to this wheel's rail's actual direction (angle of attack)
+  /// [rad].
+  double angle_of_attack = 0.0;
 };
 
 /// What one contact point's patches carry, summed while the wheel-rail stage goes through them.
@@ -86,6 +87,10 @@ struct Workspace {
   BodyKinematics track_frame;          ///< a suspension element's track-frame end
   WheelRailScratch wheel_rail;
   std::vector<WheelResult> wheels;     ///< signals: 2 per contact body
+  /// Per contact body, the wheels' loads on its left and right rail and the rails' pad forces
+  /// (flexible track).
+  std::vector<std::array<track::RailLoad, 2>> rail_loads;
+  std::vector<std::array<track::PadForce, 2>> pad_forces;
 };
 
 }  // namespace ferro::vehicle::detail

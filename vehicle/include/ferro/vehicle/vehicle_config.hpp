@@ -24,15 +24,19 @@ namespace ferro::vehicle {
 
 /// A specification value outside its allowed range. field() names it relative to the struct
 /// validated ("mass", "friction", "reduction.k22", ...) so that a loader can point at the key it
-/// came from; what() reads "<where>.<field>: <rule>, got <value>".
+/// came from, rule() says what is allowed and what was given; what() reads
+/// "<where>.<field>: <rule>".
 class SpecError : public std::invalid_argument {
  public:
-  SpecError(std::string field, const std::string& message)
-      : std::invalid_argument(message), field_(std::move(field)) {}
+  SpecError(const std::string& where, std::string field, std::string rule)
+      : std::invalid_argument(where + "." + field + ": " + rule),
+        field_(std::move(field)),
+        rule_(std::move(rule)) {}
   [[nodiscard]] const std::string& field() const noexcept { return field_; }
+  [[nodiscard]] const std::string& rule() const noexcept { return rule_; }
 
  private:
-  std::string field_;
+  std::string field_, rule_;
 };
 
 /// Degrees of freedom of a body relative to the track frame, in state order.

@@ -80,9 +80,8 @@
 //                                     contact_angle, rolling_radius, wheel_y, rail_y,
 //                                     peak_pressure}: the same per loaded point
 //   wheelset_i.rolling_radius_difference [m]  left minus right, most loaded points
-//   wheelset_i.angle_of_attack [rad], .lateral_to_rails [m]: the wheelset's yaw and lateral
-//                                     displacement relative to the rails' actual position and
-//                                     direction (irregularities included)
+//   wheelset_i.angle_of_attack [rad]  the wheelset's yaw relative to its rails' actual direction
+//                                     (irregularities and rail deflection included)
 //   Undefined quantities of a lifted wheel (no loaded point) read 0 (forces, places, angles,
 //   radii; the rolling-radius difference of a wheelset with a lifted wheel): in_contact tells;
 //   sources without profiles (conical, imported) give 0 profile coordinates.
@@ -126,6 +125,7 @@
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/tangential_model.hpp"
 #include "ferro/track/track.hpp"
+#include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 #include "ferro/vehicle/output_signals.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
@@ -145,6 +145,8 @@ struct SpeedProfile {
 
 struct VehicleModelInputs {
   VehicleConfig config;
+  /// What the wheels run on: rigid rails, or a co-running discrete track under every wheelset.
+  track::TrackStructureSpec track_structure;
   ModelSelection selection;
   std::shared_ptr<const track::Track> track;                       ///< null: straight, perfect
   std::shared_ptr<const contact::ContactGeometrySource> geometry;  ///< required
