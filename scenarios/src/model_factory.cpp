@@ -75,6 +75,7 @@ std::unique_ptr<vehicle::OdeSystem> make_system(const Scene& scene, double speed
       in.outputs.sensors = scene.output.sensors;
       in.outputs.anti_alias_frequency = scene.output.anti_alias_frequency;
       in.outputs.anti_alias_order = scene.output.anti_alias_order;
+      in.outputs.contact_point_details = scene.output.contact_points;
     }
     return std::make_unique<vehicle::VehicleModel>(std::move(in));
   }

@@ -127,6 +127,7 @@ void read_sensors(MapReader& o, Scene& scene) {
   if (!(v.anti_alias_frequency >= 0.0))
     o.fail("anti_alias_frequency", "must be >= 0 Hz (0: no anti-alias filters)");
   v.anti_alias_order = static_cast<int>(o.integer_or("anti_alias_order", v.anti_alias_order));
+  v.contact_points = o.boolean_or("contact_points", v.contact_points);
   if (v.anti_alias_order < 2 || v.anti_alias_order > 8 || v.anti_alias_order % 2 != 0)
     o.fail("anti_alias_order", fmt::format("allowed 2, 4, 6, 8, got {}", v.anti_alias_order));
 
@@ -385,7 +386,8 @@ Scene load_scene(const std::string& path) {
     if (vehicle_model) {
       read_sensors(o, scene);
     } else {
-      for (const char* k : {"sensors", "anti_alias_frequency", "anti_alias_order", "floor_height"})
+      for (const char* k : {"sensors", "anti_alias_frequency", "anti_alias_order", "floor_height",
+                            "contact_points"})
         if (o.has(k)) o.fail(k, "applies to vehicle scenes (model.type vehicle) only");
     }
     o.finish();

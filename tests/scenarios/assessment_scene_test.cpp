@@ -72,11 +72,12 @@ std::string temp_file(const std::string& name) {
   return (std::filesystem::temp_directory_path() / name).string();
 }
 
-TEST(OutputSignals, SensorReadsTheSecondDerivativeOfItsDisplacement) {
+TEST(OutputSignals, SensorsFiltersAndContactOutputsOnTheMainJob) {
   // On straight track at constant speed the track frame is inertial: the floor point's
   // acceleration is the second time derivative of its displacement (track axes), and the
   // accelerometer reads R^T (a - g) in body axes, R the car body's attitude.
-  const Scene scene = main_job(1.0, 1e-4);
+  Scene scene = main_job(1.0, 1e-4);
+  scene.output.contact_points = true;
   RunOptions ro;
   ro.output_file = temp_file("ferro_sensor_check.h5");
   ASSERT_EQ(run_scene(scene, ro).status_text, "completed");
@@ -127,6 +128,44 @@ TEST(OutputSignals, SensorReadsTheSecondDerivativeOfItsDisplacement) {
   std::printf("Q_filtered against the digital Butterworth: largest difference %.1f N of a %.1f N range\n",
               err, hi - lo);
   EXPECT_LT(err, 0.01 * (hi - lo));
+  // Contact outputs. The frictional energy per metre rolled of a point, Tx gx + Ty gy + Mz phi,
+  // is >= 0; T gamma leaves out the spin term, so it is >= -|Mz phi|, with the spin creepage
+  // |phi| <= sin(contact angle) / rolling radius (plus the wheelset's yaw rate over the speed,
+  // below 1e-3 1/m on this straight run: the 1.1 covers it). The wheel's sums are the sums over
+  // its points; in_contact says whether it has one.
+  double worst_spin_share = 0.0;
+  for (const char* side : {"left", "right"}) {
+    const std::string w = fmt::format("wheelset_1.{}.", side);
+    const auto wear = get(w + "wear_number"), fx = get(w + "creep_force_x");
+    const auto points = get(w + "points"), in_contact = get(w + "in_contact");
+    std::vector<double> wear_sum(wear.size(), 0.0), fx_sum(wear.size(), 0.0);
+    std::vector<double> spin_bound(wear.size(), 0.0);
+    for (int k = 1; k <= 3; ++k) {
+      const auto pw = get(fmt::format("{}point_{}.wear_number", w, k));
+      const auto px = get(fmt::format("{}point_{}.creep_force_x", w, k));
+      const auto pm = get(fmt::format("{}point_{}.spin_moment", w, k));
+      const auto pd = get(fmt::format("{}point_{}.contact_angle", w, k));
+      const auto pr = get(fmt::format("{}point_{}.rolling_radius", w, k));
+      for (std::size_t i = 0; i < wear.size(); ++i) {
+        wear_sum[i] += pw[i], fx_sum[i] += px[i];
+        if (pr[i] > 0.0) {
+          const double bound = 1.1 * std::abs(pm[i]) * std::abs(std::sin(pd[i])) / pr[i];
+          EXPECT_GE(pw[i], -bound - 1e-9) << k << " " << i;
+          spin_bound[i] += bound;
+          if (pw[i] < 0.0) worst_spin_share = std::max(worst_spin_share, -pw[i] / bound);
+        }
+      }
+    }
+    for (std::size_t i = 0; i < wear.size(); ++i) {
+      EXPECT_GE(wear[i], -spin_bound[i] - 1e-9) << i;
+      EXPECT_EQ(in_contact[i], points[i] > 0.0 ? 1.0 : 0.0) << i;
+      if (points[i] <= 3.0) {
+        EXPECT_NEAR(wear_sum[i], wear[i], 1e-9 * (1.0 + std::abs(wear[i]))) << i;
+        EXPECT_NEAR(fx_sum[i], fx[i], 1e-9 * (1.0 + std::abs(fx[i]))) << i;
+      }
+    }
+  }
+  std::printf("negative T gamma: at most %.3f of the spin term's bound\n", worst_spin_share);
   std::filesystem::remove(ro.output_file);
 }
 

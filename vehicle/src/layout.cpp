@@ -98,14 +98,14 @@ void name_signals(ModelData& m) {
       add("spin_moment", "N m", "creep moment about the contact normal, sum over its points");
       add("wear_number", "N",
           "T gamma = Tx creepage_x + Ty creepage_y (force on the rail times creepage: the "
-          "frictional energy per metre rolled, >= 0), sum over its points");
+          "frictional energy per metre rolled without the spin term), sum over its points");
       add("rolling_radius", "m", "rolling radius at the most loaded point");
       add("contact_wheel_y", "m", "most loaded point on the wheel profile (profile coordinate)");
       add("contact_rail_y", "m", "most loaded point on the rail profile (profile coordinate)");
       add("semi_axis_a", "m", "longitudinal semi-axis of the most loaded point's patch");
       add("semi_axis_b", "m", "lateral semi-axis of the most loaded point's patch");
       add("peak_pressure", "Pa", "peak contact pressure of the most loaded point");
-      for (int k = 1; k <= WheelResult::kPointSignals; ++k) {
+      for (int k = 1; m.in.outputs.contact_point_details && k <= WheelResult::kPointSignals; ++k) {
         const auto point = [&](const char* what, const char* unit, const char* desc) {
           m.signal_list.push_back({fmt::format("{}.{}.point_{}.{}", name, side, k, what), unit,
                                    fmt::format("{} of loaded point {} (0 without it)", desc, k)});

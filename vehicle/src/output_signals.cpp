@@ -84,7 +84,8 @@ void add_patch(PointTotals& totals, const contact::ContactPatch& patch,
   r.creep_force_y += tang.force_y;
   r.spin_moment += tang.moment_z;
   // The creep force on the wheel opposes its slip: -(F . creepage) is the energy dissipated
-  // per metre rolled, >= 0.
+  // per metre rolled by the translational creepages (the spin term -Mz phi, left out of
+  // T gamma as wear models define it, makes the total >= 0).
   r.wear_number -= tang.force_x * problem.creepage.longitudinal +
                    tang.force_y * problem.creepage.lateral;
   if (patch.normal_force > totals.largest_patch_force) {

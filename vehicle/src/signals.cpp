@@ -37,6 +37,7 @@ void signals(const ModelData& m, Workspace& ws, double t, std::span<const double
       out[o++] = w.largest.semi_axis_b;
       out[o++] = w.largest.peak_pressure;
       for (const PointResult& p : w.point) {
+        if (!m.in.outputs.contact_point_details) break;
         out[o++] = p.creep_force_x;
         out[o++] = p.creep_force_y;
         out[o++] = p.spin_moment;

@@ -64,6 +64,8 @@ struct OutputConfig {
   /// accelerations [Hz]; 0: none.
   double anti_alias_frequency = 50.0;
   int anti_alias_order = 4;  ///< of that Butterworth low-pass: 2, 4, 6 or 8
+  /// Vehicle scenes: also each contact point's creep forces, places, ... (signals point_k.*).
+  bool contact_points = false;
   /// Floor height of the standard floor sensors above the top of rail [m]; NaN: the car
   /// body's centre of mass.
   double floor_height = std::numeric_limits<double>::quiet_NaN();

@@ -29,6 +29,10 @@ struct OutputSignalsSpec {
   std::vector<SensorSpec> sensors;
   double anti_alias_frequency = 0.0;  ///< [Hz]; 0: no filters (no extra states)
   int anti_alias_order = 4;           ///< 2, 4, 6 or 8
+  /// Also every loaded contact point's creep forces, spin moment, wear number, angle, radius,
+  /// profile places and peak pressure ("wheelset_i.<side>.point_k.*"; the wheel's sums and
+  /// its most loaded point's values are always there).
+  bool contact_point_details = false;
 };
 
 }  // namespace ferro::vehicle

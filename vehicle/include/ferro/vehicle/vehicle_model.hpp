@@ -72,13 +72,15 @@
 //                                     tangential forces on the wheel in each point's contact
 //                                     frame, moment about its normal, T gamma = Tx cx + Ty cy
 //                                     (T the creep force on the rail, c the creepages: the
-//                                     frictional energy per metre rolled, >= 0), summed
+//                                     frictional energy per metre rolled without the spin
+//                                     term, slightly negative where spin dominates), summed
 //   wheelset_i.<side>.rolling_radius, .contact_wheel_y, .contact_rail_y [m], .semi_axis_a,
 //                                     .semi_axis_b [m], .peak_pressure [Pa]: of the most loaded
 //                                     point (places in profile coordinates)
 //   wheelset_i.<side>.point_k.{creep_force_x, creep_force_y, spin_moment, wear_number,
 //                                     contact_angle, rolling_radius, wheel_y, rail_y,
-//                                     peak_pressure}: the same per loaded point
+//                                     peak_pressure}: the same per loaded point (with
+//                                     OutputSignalsSpec::contact_point_details)
 //   wheelset_i.rolling_radius_difference [m]  left minus right, most loaded points
 //   wheelset_i.angle_of_attack [rad]  the wheelset's yaw relative to its rails' actual direction
 //                                     (irregularities and rail deflection included)
