@@ -97,7 +97,7 @@ int do_run(const RunArgs& a) {
           "--fixed-step: must be >= 0 s (0: adaptive steps), got {}", a.fixed_step));
     if (a.fixed_step > 0.0 && !vehicle::takes_fixed_step(scene.solver.method))
       throw std::invalid_argument(fmt::format(
-          "--fixed-step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} "
+          "--fixed-step: only arkode_erk, arkode_dirk, odeint_bs3 and bdf2 take a fixed step; {} "
           "needs 0, got {}",
           scene.solver.method, a.fixed_step));
     scene.solver.fixed_step = a.fixed_step;
@@ -302,7 +302,7 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
   run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
   run->add_option("--fixed-step", run_args->fixed_step,
-                  "Override solver.fixed_step [s] (arkode_erk, arkode_dirk, odeint_bs3; 0: "
+                  "Override solver.fixed_step [s] (arkode_erk, arkode_dirk, odeint_bs3, bdf2; 0: "
                   "adaptive steps)");
   run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]");
   run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]");

@@ -67,6 +67,7 @@ std::unique_ptr<vehicle::OdeSystem> make_system(const Scene& scene, double speed
     in.config = scene.model.vehicle;
     in.selection = scene.model.selection;
     in.track = resources.track;
+    in.track_structure = scene.track.structure;
     in.geometry = resources.geometry;
     in.speed.initial = speed;
     in.speed.acceleration = scene.simulation.acceleration;

@@ -50,18 +50,9 @@ std::vector<char> output_mask(const OdeSystem& system) {
   return mask;
 }
 
-// Absolute tolerances: `atol` for every state, and one that takes an output state out of the
-// error test (weight 1/(rtol |y| + atol) ~ 1e-30) for the output states. Null when the system
-// has none (scalar tolerances).
+// The absolute tolerance of an output state that takes it out of the error test (weight
+// 1/(rtol |y| + atol) ~ 1e-30).
 constexpr double kOutputAtol = 1e30;
-N_Vector output_tolerances(const UserData& ud, double atol, SUNContext ctx) {
-  if (ud.is_output.empty()) return nullptr;
-  const auto n = static_cast<sunindextype>(ud.is_output.size());
-  N_Vector v = N_VNew_Serial(n, ctx);
-  for (sunindextype i = 0; i < n; ++i)
-    NV_Ith_S(v, i) = ud.is_output[static_cast<std::size_t>(i)] != 0 ? kOutputAtol : atol;
-  return v;
-}
 
 int sundials_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   auto* ud = static_cast<UserData*>(user_data);
@@ -402,6 +393,29 @@ void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& 
   }
 }
 
+// Tolerances: rtol and atol, or atol per state scaled by the system's tolerance_scales() (when
+// `scaled`), the output states out of the error test (kOutputAtol); `scalar` and `vector` are
+// the package's SStolerances and SVtolerances functions.
+template <class Scalar, class Vector>
+void set_tolerances(Handles& h, const OdeSystem& system, const UserData& ud,
+                    const IntegratorSettings& s, Scalar scalar, Vector vector, bool scaled = true) {
+  const std::vector<double> scales = scaled ? system.tolerance_scales() : std::vector<double>{};
+  if (scales.empty() && ud.is_output.empty()) {
+    check(scalar(h.mem, s.rtol, s.atol), "SStolerances");
+    return;
+  }
+  N_Vector atol = N_VClone(h.y);
+  const auto n = static_cast<std::size_t>(N_VGetLength(h.y));
+  for (std::size_t i = 0; i < n; ++i) {
+    N_VGetArrayPointer(atol)[i] = !ud.is_output.empty() && ud.is_output[i] != 0
+                                      ? kOutputAtol
+                                      : s.atol * (scales.empty() ? 1.0 : scales[i]);
+  }
+  const int flag = vector(h.mem, s.rtol, atol);  // the solver keeps its own copy
+  N_VDestroy(atol);
+  check(flag, "SVtolerances");
+}
+
 // The solver's current time and interpolated state, for failure reports: `get_time` and
 // `get_dky` are the package's GetCurrentTime and GetDky functions.
 template <class GetTime, class GetDky>
@@ -488,13 +502,7 @@ class CvodeIntegrator final : public Integrator {
     check(CVodeSetErrHandlerFn(h.mem, error_handler, &ud), "CVodeSetErrHandlerFn");
     check(CVodeInit(h.mem, sundials_rhs, times.front(), h.y), "CVodeInit");
     check(CVodeSetUserData(h.mem, &ud), "CVodeSetUserData");
-    if (N_Vector atol = output_tolerances(ud, s_.atol, h.ctx)) {
-      const int flag = CVodeSVtolerances(h.mem, s_.rtol, atol);
-      N_VDestroy(atol);
-      check(flag, "CVodeSVtolerances");
-    } else {
-      check(CVodeSStolerances(h.mem, s_.rtol, s_.atol), "CVodeSStolerances");
-    }
+    set_tolerances(h, system, ud, s_, CVodeSStolerances, CVodeSVtolerances);
     if (std::isfinite(s_.max_step)) check(CVodeSetMaxStep(h.mem, s_.max_step), "CVodeSetMaxStep");
     if (s_.initial_step > 0.0) check(CVodeSetInitStep(h.mem, s_.initial_step), "CVodeSetInitStep");
     check(CVodeSetMaxNumSteps(h.mem, s_.max_steps), "CVodeSetMaxNumSteps");
@@ -544,13 +552,8 @@ class ArkodeErkIntegrator final : public Integrator {
     if (h.mem == nullptr) throw std::runtime_error("ERKStepCreate failed");
     check(ERKStepSetErrHandlerFn(h.mem, error_handler, &ud), "ERKStepSetErrHandlerFn");
     check(ERKStepSetUserData(h.mem, &ud), "ERKStepSetUserData");
-    if (N_Vector atol = output_tolerances(ud, s_.atol, h.ctx)) {
-      const int flag = ERKStepSVtolerances(h.mem, s_.rtol, atol);
-      N_VDestroy(atol);
-      check(flag, "ERKStepSVtolerances");
-    } else {
-      check(ERKStepSStolerances(h.mem, s_.rtol, s_.atol), "ERKStepSStolerances");
-    }
+    set_tolerances(h, system, ud, s_, ERKStepSStolerances, ERKStepSVtolerances,
+                   /*scaled=*/false);
     check(ERKStepSetOrder(h.mem, s_.erk_order), "ERKStepSetOrder");
     if (std::isfinite(s_.max_step))
       check(ERKStepSetMaxStep(h.mem, s_.max_step), "ERKStepSetMaxStep");
@@ -596,13 +599,7 @@ class ArkodeDirkIntegrator final : public Integrator {
     if (h.mem == nullptr) throw std::runtime_error("ARKStepCreate failed");
     check(ARKStepSetErrHandlerFn(h.mem, error_handler, &ud), "ARKStepSetErrHandlerFn");
     check(ARKStepSetUserData(h.mem, &ud), "ARKStepSetUserData");
-    if (N_Vector atol = output_tolerances(ud, s_.atol, h.ctx)) {
-      const int flag = ARKStepSVtolerances(h.mem, s_.rtol, atol);
-      N_VDestroy(atol);
-      check(flag, "ARKStepSVtolerances");
-    } else {
-      check(ARKStepSStolerances(h.mem, s_.rtol, s_.atol), "ARKStepSStolerances");
-    }
+    set_tolerances(h, system, ud, s_, ARKStepSStolerances, ARKStepSVtolerances);
     check(ARKStepSetTableNum(h.mem, ARKODE_ESDIRK436L2SA_6_3_4, ARKODE_ERK_NONE),
           "ARKStepSetTableNum");
     if (std::isfinite(s_.max_step))

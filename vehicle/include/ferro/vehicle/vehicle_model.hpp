@@ -188,6 +188,13 @@ class VehicleModel final : public OdeSystem {
   [[nodiscard]] std::pair<int, int> jacobian_bandwidth() const override;
   /// The anti-alias filters' states (OutputSignalsSpec).
   [[nodiscard]] std::vector<std::size_t> output_states() const override;
+  /// 1 for every state but the rates of the co-running track's bodies, which take the natural
+  /// frequency of the body on its pads or ballast (sqrt(k / m)) [1/s].
+  [[nodiscard]] std::vector<double> tolerance_scales() const override;
+  /// A body's states (its block, with its series dampers) act on its own block and those of
+  /// the bodies its elements join; a wheelset's co-running track acts on the wheelset's block
+  /// alone.
+  [[nodiscard]] std::vector<std::vector<int>> jacobian_pattern() const override;
 
   /// Every body at its rest position, velocities and internal states zero.
   [[nodiscard]] std::vector<double> rest_state() const;
