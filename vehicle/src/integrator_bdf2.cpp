@@ -20,7 +20,8 @@
 // points; converged when the weighted RMS norm of the correction (weights 1 / (rtol |y_i| +
 // atol_i), atol_i = atol times the system's tolerance scale of state i) falls below 0.1 (1 - rho)
 // / rho given the observed contraction rho, or below 0.01 when the corrected iterate's residual
-// is already within the tolerance. A Newton that diverges (a correction more than twice the
+// is already within the tolerance. The system's output states stay out of both tests: linear with
+// a constant Jacobian, Newton solves them exactly for the iterate of the other states. A Newton that diverges (a correction more than twice the
 // previous one) or takes more than 8 iterations is restarted with a fresh Jacobian, then the
 // step is taken as two implicit-Euler halves (recursively, down to h / 2^20). Outputs between two
 // steps come from the quadratic
@@ -37,6 +38,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -210,6 +212,10 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   if (const auto scales = system.tolerance_scales(); !scales.empty()) {
     for (Eigen::Index i = 0; i < n; ++i) atol_[i] *= scales[static_cast<std::size_t>(i)];
   }
+  // Output states (filters of the model's own quantities, linear with a constant Jacobian) out
+  // of the convergence test: Newton solves them exactly for the iterate of the other states.
+  for (const std::size_t i : system.output_states())
+    atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
   IntegrationResult result;
   const double h = s_.fixed_step;

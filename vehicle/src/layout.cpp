@@ -215,6 +215,21 @@ std::vector<std::vector<int>> jacobian_pattern(const ModelData& m) {
       pattern[static_cast<std::size_t>(j)] = track_state ? own_rows : body_rows;
     }
   }
+  // An output filter's state acts on its own channel's states alone (a cascade of sections).
+  const int per = m.output_filter.states_per_channel();
+  const auto channel = [&](int first) {
+    std::vector<int> rows;
+    for (int i = first; i < first + per; ++i) rows.push_back(i);
+    for (int i = first; i < first + per; ++i) pattern[static_cast<std::size_t>(i)] = rows;
+  };
+  if (per > 0) {
+    for (const BodyData& b : m.bodies)
+      if (b.has_contact && b.output_filters >= 0)
+        for (int c = 0; c < 4; ++c) channel(b.output_filters + c * per);
+    for (const SensorData& s : m.sensors)
+      for (const int first : s.filter)
+        if (first >= 0) channel(first);
+  }
   return pattern;
 }
 
