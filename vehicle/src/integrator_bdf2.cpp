@@ -116,7 +116,7 @@ class Bdf2 final : public Integrator {
       const double w = d[i] / (s_.rtol * std::abs(y[i]) + atol_[i]);
       sum += w * w;
     }
-    return std::sqrt(sum / static_cast<double>(d.size()));
+    return std::sqrt(sum / static_cast<double>(tested_));
   }
 
   /// Solves y - psi - gamma h f(t, y) = 0 from the predictor y; false when Newton fails.
@@ -165,6 +165,7 @@ class Bdf2 final : public Integrator {
   const OdeSystem* system_ = nullptr;
   std::size_t n_ = 0;
   Vector atol_;  ///< atol per state (the system's tolerance scales)
+  std::size_t tested_ = 0;  ///< states in the convergence test (all but the output states)
   std::vector<std::vector<int>> pattern_, groups_;  ///< Jacobian sparsity and column groups
   Eigen::MatrixXd jacobian_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
@@ -214,8 +215,10 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   }
   // Output states (filters of the model's own quantities, linear with a constant Jacobian) out
   // of the convergence test: Newton solves them exactly for the iterate of the other states.
-  for (const std::size_t i : system.output_states())
+  const auto outputs = system.output_states();
+  for (const std::size_t i : outputs)
     atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
+  tested_ = std::max<std::size_t>(1, n_ - outputs.size());
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
   IntegrationResult result;
   const double h = s_.fixed_step;
