@@ -1,4 +1,4 @@
-// Verbs of the analyses: derailment assessment of a run, critical speed (ramp, bifurcation,
+// Verbs of the analyses: assessment of a run (EN 14363 / UIC 518 / EN 12299), critical speed (ramp, bifurcation,
 // eigen), reduction-factor studies and parallel sweeps (threads and, when built with it, MPI).
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/analysis/critical_speed.hpp"
-#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
 #include "ferro/scenarios/model_factory.hpp"
@@ -56,49 +56,112 @@ void positive(double v, const char* option) {
     throw std::invalid_argument(fmt::format("{}: must be > 0, got {}", option, v));
 }
 
-// ---------------------------------------------------------------- derailment
-struct DerailArgs {
-  std::string file, output;
-  double mu = 0.36, flange_angle_deg = -1.0, q0 = -1.0, window = 2.0, step = 0.5;
-  bool no_plots = false;
+// ---------------------------------------------------------------- assess
+struct AssessArgs {
+  std::string file, output, category;
+  double mu = NAN, flange_angle_deg = -1.0, section_length = 0.0, f0 = NAN;
+  double floor_offset = 1.0, y_over_q_limit = 0.8;
+  bool twist_test = false, no_twist_test = false, all_rows = false, no_plots = false;
 };
 
-int do_derailment(const DerailArgs& a) {
+std::string value_text(double v, const std::string& unit) {
+  if (std::isnan(v)) return "-";
+  if (unit == "N") return fmt::format("{:.2f} kN", v / 1e3);
+  if (unit == "m/s^2") return fmt::format("{:.3f}", v);
+  return fmt::format("{:.3f}", v);
+}
+
+std::string verdict_text(const an::AssessmentRow& r) {
+  if (r.verdict != an::Verdict::info || std::isnan(r.limit)) return an::to_string(r.verdict);
+  return r.value > r.limit ? "info: above" : "info: below";
+}
+
+int do_assess(const AssessArgs& a) {
   if (!fs::exists(a.file))
-    throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.file));
-  an::DerailmentOptions o;
-  if (!(a.mu >= 0.0 && a.mu < 2.0)) throw std::invalid_argument("--mu: allowed [0, 2)");
-  o.mu = a.mu;
+    throw std::invalid_argument(fmt::format("assess: no such file '{}'", a.file));
+  an::AssessmentOptions o;
+  if (!std::isnan(a.mu)) {
+    if (!(a.mu >= 0.0 && a.mu < 2.0)) throw std::invalid_argument("--mu: allowed [0, 2)");
+    o.mu = a.mu;
+  }
   if (a.flange_angle_deg > 0.0) {
     if (!(a.flange_angle_deg < 90.0))
       throw std::invalid_argument("--flange-angle-deg: allowed (0, 90)");
     o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
   }
-  o.wheel_load_static = a.q0;
-  positive(a.window, "--window");
-  positive(a.step, "--step");
-  o.window = a.window;
-  o.step = a.step;
-  const auto r = an::assess_derailment_file(a.file, o);
-  fmt::print("ferrodyn derailment: {} (mu = {}, {} m sliding mean every {} m)\n", a.file, o.mu,
-             o.window, o.step);
-  fmt::print("  {:<18} {:>8} {:>9} {:>8} {:>9} {:>7} {:>8} {:>9}  {}\n", "wheel", "max Y/Q",
-             "at [m]", "flange", "Nadal", "raw", "dQ/Q0", "at [m]", "verdict");
-  for (const auto& w : r.wheels) {
-    fmt::print("  {:<18} {:>8.3f} {:>9.2f} {:>6.1f}deg {:>9.3f} {:>7.3f} {:>8.3f} {:>9.2f}  {}\n",
-               w.name, w.max_y_over_q, w.max_y_over_q_position, w.flange_angle * 180.0 / M_PI,
-               w.nadal, w.max_y_over_q_raw, w.max_unloading, w.max_unloading_position,
-               w.pass_nadal && w.pass_unloading ? "pass" : "FAIL");
+  if (a.section_length != 0.0) positive(a.section_length, "--section-length");
+  o.section_length = a.section_length;
+  if (!std::isnan(a.f0)) positive(a.f0, "--f0");
+  o.f0 = a.f0;
+  if (!(a.floor_offset >= 0.0)) throw std::invalid_argument("--floor-offset: must be >= 0 m");
+  o.floor_offset = a.floor_offset;
+  positive(a.y_over_q_limit, "--y-over-q-limit");
+  o.y_over_q_limit = a.y_over_q_limit;
+  o.category = a.category;
+  if (a.twist_test && a.no_twist_test)
+    throw std::invalid_argument("--twist-test and --no-twist-test: give one of them");
+  if (a.twist_test) o.twist_test = true;
+  if (a.no_twist_test) o.twist_test = false;
+  const auto r = an::assess_run(a.file, o);
+  fmt::print("ferrodyn assess: {} ({}, category {}, alpha {:g}; output every {:.3g} ms)\n",
+             a.file, r.vehicle, r.category, r.alpha, 1e3 / r.sample_rate);
+  fmt::print("  sections: ");
+  for (std::size_t i = 0; i < r.sections.size(); ++i)
+    fmt::print("{}{} [{:.1f}, {:.1f}) m", i ? "; " : "", r.sections[i].name,
+               r.sections[i].start, r.sections[i].end);
+  if (std::isnan(r.f0)) {
+    fmt::print("\n  stability not assessed (see the notes)");
+  } else {
+    fmt::print("\n  f0 = {:.2f} Hz ({})", r.f0,
+               r.f0_from_spectrum ? "peak of the sum-Y spectrum" : "given");
   }
-  fmt::print("  {:<18} {:>12} {:>9} {:>14} {:>12}  {}\n", "axle", "max sum Y [kN]", "at [m]",
-             "Prud'homme [kN]", "P [kN]", "verdict");
-  for (const auto& x : r.axles) {
-    fmt::print("  {:<18} {:>12.2f} {:>9.2f} {:>14.2f} {:>12.2f}  {}\n", x.name, x.max_sum_y / 1e3,
-               x.max_sum_y_position, x.limit / 1e3, x.axle_load / 1e3, x.pass ? "pass" : "FAIL");
+  fmt::print(", Nadal mu = {:g}{}\n", r.mu, r.twist_test ? ", twist test" : "");
+  // One line per quantity and item: its worst section (largest value / limit, else value), or
+  // every row with --all.
+  std::vector<const an::AssessmentRow*> shown;
+  for (const auto& row : r.rows) {
+    if (a.all_rows) {
+      shown.push_back(&row);
+      continue;
+    }
+    const auto score = [](const an::AssessmentRow& x) {
+      return std::isnan(x.limit) || x.limit <= 0.0 ? x.value : x.value / x.limit;
+    };
+    auto it = std::find_if(shown.begin(), shown.end(), [&](const an::AssessmentRow* s) {
+      return s->quantity == row.quantity && s->item == row.item;
+    });
+    if (it == shown.end()) {
+      shown.push_back(&row);
+    } else if (score(row) > score(**it)) {
+      *it = &row;
+    }
   }
+  const std::vector<std::string> groups = {"running safety", "track loading", "twist test",
+                                           "stability", "ride"};
+  const auto rank = [&](const an::AssessmentRow* x) {
+    return std::find(groups.begin(), groups.end(), x->group) - groups.begin();
+  };
+  std::stable_sort(shown.begin(), shown.end(),
+                   [&](const auto* lhs, const auto* rhs) { return rank(lhs) < rank(rhs); });
+  std::string group;
+  for (const auto* row : shown) {
+    if (row->group != group) {
+      group = row->group;
+      fmt::print("  {}\n  {:<44} {:<34} {:>12} {:>12} {:>10}  {:<22} {}\n", group, "quantity",
+                 "item", "value", "limit", "at [m]", "section", "verdict");
+    }
+    fmt::print("  {:<44} {:<34} {:>12} {:>12} {:>10}  {:<22} {}\n", row->quantity, row->item,
+               value_text(row->value, row->unit), value_text(row->limit, row->unit),
+               std::isnan(row->position) ? std::string("-") : fmt::format("{:.1f}", row->position),
+               row->section, verdict_text(*row));
+  }
+  for (const auto& n : r.notes) fmt::print("  note: {}\n", n);
+  if (r.accelerations_derived)
+    fmt::print("  note: floor and bogie-frame accelerations derived from the bodies' rigid "
+               "motion (the run has no acceleration sensors)\n");
   fmt::print("  verdict   {}\n", r.pass ? "pass" : "FAIL");
-  const std::string out = a.output.empty() ? sibling(a.file, "_derailment.h5") : a.output;
-  an::write_derailment_report(r, a.file, out);
+  const std::string out = a.output.empty() ? sibling(a.file, "_assessment.h5") : a.output;
+  an::write_assessment(r, a.file, out);
   fmt::print("  output    {}\n", out);
   plot(out, a.no_plots);
   return kExitOk;  // the verdict is a result, not a failure of the assessment
@@ -799,19 +862,35 @@ void print_eigen_report(const Scene& scene, const scenarios::EigenReport& r,
 }
 
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
-  auto d = std::make_shared<DerailArgs>();
-  auto* der = app.add_subcommand(
-      "derailment", "Derailment assessment of a run: Y/Q (2 m mean), Nadal, sum Y, dQ/Q0, plot");
-  der->add_option("run", d->file, "HDF5 output of `ferrodyn run`")->required();
-  der->add_option("--mu", d->mu, "Friction coefficient in Nadal's formula")->capture_default_str();
-  der->add_option("--flange-angle-deg", d->flange_angle_deg,
-                  "Flange angle [deg] (default: largest contact angle of each wheel)");
-  der->add_option("--q0", d->q0, "Static wheel load Q0 [N] (default: first sample)");
-  der->add_option("--window", d->window, "Sliding-mean window [m]")->capture_default_str();
-  der->add_option("--step", d->step, "Sliding-mean sampling step [m]")->capture_default_str();
-  der->add_option("-o,--output", d->output, "Report file (default: <run>_derailment.h5)");
-  der->add_flag("--no-plots", d->no_plots, "Do not draw plots");
-  der->callback([&handler, d] { handler = [d] { return do_derailment(*d); }; });
+  auto d = std::make_shared<AssessArgs>();
+  auto* as = app.add_subcommand(
+      "assess",
+      "Assessment of a run as EN 14363 / UIC 518 / EN 12299 define it: running safety, track "
+      "loading, stability, ride; table, HDF5 and plots along the track");
+  as->add_option("run", d->file, "HDF5 output of `ferrodyn run` (vehicle scene)")->required();
+  as->add_option("--category", d->category,
+                 "Vehicle category (coach, locomotive, power_car, wagon); default: the vehicle "
+                 "file's")
+      ->check(CLI::IsMember({"coach", "locomotive", "power_car", "wagon"}));
+  as->add_option("--mu", d->mu, "Friction coefficient in Nadal's limit (default: the run's)");
+  as->add_option("--flange-angle-deg", d->flange_angle_deg,
+                 "Flange angle in Nadal's limit [deg] (default: largest contact angle of each "
+                 "wheel)");
+  as->add_option("--section-length", d->section_length,
+                 "Statistics over windows of this length [m] instead of the scene's sections");
+  as->add_option("--f0", d->f0, "Instability frequency [Hz] (default: from the run's spectrum)");
+  as->add_option("--floor-offset", d->floor_offset,
+                 "Lateral offset of the vertical floor points [m] (0: centre line only)")
+      ->capture_default_str();
+  as->add_option("--y-over-q-limit", d->y_over_q_limit, "(Y/Q) limit of the 2 m mean")
+      ->capture_default_str();
+  as->add_flag("--twist-test", d->twist_test, "Assess the wheel unloading dQ/Q0 too");
+  as->add_flag("--no-twist-test", d->no_twist_test,
+               "Do not assess dQ/Q0 even when the scene says it is the twist test");
+  as->add_flag("--all", d->all_rows, "Print every section's row (default: the worst per item)");
+  as->add_option("-o,--output", d->output, "Report file (default: <run>_assessment.h5)");
+  as->add_flag("--no-plots", d->no_plots, "Do not draw plots");
+  as->callback([&handler, d] { handler = [d] { return do_assess(*d); }; });
 
   auto* cs = app.add_subcommand("critical-speed", "Critical speed: ramp, bifurcation, eigen");
   cs->require_subcommand(1);

@@ -374,9 +374,16 @@ int body_index(const VehicleConfig& config, const std::string& name) {
   return -1;
 }
 
-VehicleConfig read_vehicle(MapReader& r) {
+const std::vector<std::string>& vehicle_categories() {
+  static const std::vector<std::string> k{"coach", "locomotive", "power_car", "wagon"};
+  return k;
+}
+
+VehicleConfig read_vehicle(MapReader& r, std::string* category) {
   VehicleConfig v;
   v.name = r.string_or("name", fs::path(r.file()).stem().string());
+  const std::string cat = r.string_or("category", "", vehicle_categories());
+  if (category != nullptr) *category = cat;
   r.allow("schema_version");
   r.allow("description");
   v.gravity = r.number_or("gravity", kStandardGravity);
@@ -574,7 +581,7 @@ VehicleConfig read_vehicle(MapReader& r) {
   return v;
 }
 
-VehicleConfig load_vehicle_file(const std::string& path) {
+VehicleConfig load_vehicle_file(const std::string& path, std::string* category) {
   const YamlFile file = load_yaml_file(path);
   MapReader r(file.root, path, "");
   const long version = r.integer_or("schema_version", -1);
@@ -582,7 +589,7 @@ VehicleConfig load_vehicle_file(const std::string& path) {
     r.fail("schema_version", fmt::format("required in a vehicle file; supported: {}, got {}",
                                          kVehicleSchemaVersion, version));
   }
-  return read_vehicle(r);
+  return read_vehicle(r, category);
 }
 
 }  // namespace ferro::scenarios
