@@ -6,8 +6,8 @@
 
 #include <span>
 
-#include "ferro/contact/contact_patch.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/normal/contact_patch.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/vehicle/frames.hpp"
 #include "model_data.hpp"
 #include "workspace.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 #include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/signal_filter.hpp"
 

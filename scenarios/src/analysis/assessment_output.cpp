@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 #include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/run.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 #include "ferro/scenarios/analysis/track_statistics.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
 
