@@ -1,4 +1,4 @@
-// Verbs of the analyses: derailment assessment of a run, critical speed (ramp, bifurcation,
+// Verbs of the analyses: assessment of a run (EN 14363 / UIC 518 / EN 12299), critical speed (ramp, bifurcation,
 // eigen), reduction-factor studies and parallel sweeps (threads and, when built with it, MPI).
 #include <fmt/format.h>
 
@@ -15,7 +15,7 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/analysis/critical_speed.hpp"
-#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
 #include "ferro/scenarios/model_factory.hpp"
@@ -33,6 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace an = scenarios::analysis;
+namespace fc = ferro::contact;
 using scenarios::Scene;
 
 std::string sibling(const std::string& file, const std::string& suffix) {
@@ -86,46 +87,116 @@ struct AnalysisOutput {
   [[nodiscard]] const std::string& write_path() const { return file->write_path(); }
 };
 
-// ---------------------------------------------------------------- derailment
-struct DerailArgs {
-  std::string file, output;
-  double mu = 0.36, flange_angle_deg = NAN, q0 = NAN, window = 2.0, step = 0.5;  // NaN: not given
-  bool no_plots = false, overwrite = false;
+// ---------------------------------------------------------------- assess
+struct AssessArgs {
+  std::string file, output, category;
+  double mu = NAN, flange_angle_deg = NAN, section_length = NAN, f0 = NAN;  // NaN: not given
+  double floor_offset = 1.0, y_over_q_limit = 0.8;
+  bool twist_test = false, no_twist_test = false, all_rows = false, no_plots = false;
+  bool overwrite = false;
 };
 
-int do_derailment(const DerailArgs& a) {
+std::string value_text(double v, const std::string& unit) {
+  if (std::isnan(v)) return "-";
+  if (unit == "N") return fmt::format("{:.2f} kN", v / 1e3);
+  if (unit == "m/s^2") return fmt::format("{:.3f}", v);
+  return fmt::format("{:.3f}", v);
+}
+
+std::string verdict_text(const an::AssessmentRow& r) {
+  if (r.verdict != an::Verdict::info || std::isnan(r.limit)) return an::to_string(r.verdict);
+  return r.value > r.limit ? "info: above" : "info: below";
+}
+
+int do_assess(const AssessArgs& a) {
   if (!fs::exists(a.file))
-    throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.file));
-  an::DerailmentOptions o;
-  if (!(a.mu >= 0.0 && a.mu < 2.0)) throw std::invalid_argument("--mu: allowed [0, 2)");
-  o.mu = a.mu;
-  if (!std::isnan(a.flange_angle_deg)) o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
-  o.wheel_load_static = std::isnan(a.q0) ? -1.0 : a.q0;  // < 0: the first sample
-  positive(a.window, "--window");
-  positive(a.step, "--step");
-  o.window = a.window;
-  o.step = a.step;
-  AnalysisOutput out(a.output, sibling(a.file, "_derailment.h5"), a.overwrite, {a.file},
+    throw std::invalid_argument(fmt::format("assess: no such file '{}'", a.file));
+  an::AssessmentOptions o;
+  if (!std::isnan(a.mu)) {
+    if (!(a.mu >= 0.0 && a.mu < 2.0)) throw std::invalid_argument("--mu: allowed [0, 2)");
+    o.mu = a.mu;
+  }
+  if (!std::isnan(a.flange_angle_deg)) {
+    if (!(a.flange_angle_deg > 0.0 && a.flange_angle_deg < 90.0))
+      throw std::invalid_argument("--flange-angle-deg: allowed (0, 90)");
+    o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
+  }
+  if (!std::isnan(a.section_length)) {
+    positive(a.section_length, "--section-length");
+    o.section_length = a.section_length;
+  }
+  if (!std::isnan(a.f0)) positive(a.f0, "--f0");
+  o.f0 = a.f0;
+  if (!(a.floor_offset >= 0.0)) throw std::invalid_argument("--floor-offset: must be >= 0 m");
+  o.floor_offset = a.floor_offset;
+  positive(a.y_over_q_limit, "--y-over-q-limit");
+  o.y_over_q_limit = a.y_over_q_limit;
+  o.category = a.category;
+  if (a.twist_test && a.no_twist_test)
+    throw std::invalid_argument("--twist-test and --no-twist-test: give one of them");
+  if (a.twist_test) o.twist_test = true;
+  if (a.no_twist_test) o.twist_test = false;
+  AnalysisOutput out(a.output, sibling(a.file, "_assessment.h5"), a.overwrite, {a.file},
                      a.no_plots);
-  const auto r = an::assess_derailment_file(a.file, o);
-  fmt::print("ferrodyn derailment: {} (mu = {}, {} m sliding mean every {} m)\n", a.file, o.mu,
-             o.window, o.step);
-  fmt::print("  {:<18} {:>8} {:>9} {:>8} {:>9} {:>7} {:>8} {:>9}  {}\n", "wheel", "max Y/Q",
-             "at [m]", "flange", "Nadal", "raw", "dQ/Q0", "at [m]", "verdict");
-  for (const auto& w : r.wheels) {
-    fmt::print("  {:<18} {:>8.3f} {:>9.2f} {:>6.1f}deg {:>9.3f} {:>7.3f} {:>8.3f} {:>9.2f}  {}\n",
-               w.name, w.max_y_over_q, w.max_y_over_q_position, w.flange_angle * 180.0 / M_PI,
-               w.nadal, w.max_y_over_q_raw, w.max_unloading, w.max_unloading_position,
-               w.pass_nadal && w.pass_unloading ? "pass" : "FAIL");
+  const auto r = an::assess_run(a.file, o);
+  fmt::print("ferrodyn assess: {} ({}, category {}, alpha {:g}; output every {:.3g} ms)\n",
+             a.file, r.vehicle, r.category, r.alpha, 1e3 / r.sample_rate);
+  fmt::print("  sections: ");
+  for (std::size_t i = 0; i < r.sections.size(); ++i)
+    fmt::print("{}{} [{:.1f}, {:.1f}) m", i ? "; " : "", r.sections[i].name,
+               r.sections[i].start, r.sections[i].end);
+  if (std::isnan(r.f0)) {
+    fmt::print("\n  stability not assessed (see the notes)");
+  } else {
+    fmt::print("\n  f0 = {:.2f} Hz ({})", r.f0,
+               r.f0_from_spectrum ? "peak of the sum-Y spectrum" : "given");
   }
-  fmt::print("  {:<18} {:>12} {:>9} {:>14} {:>12}  {}\n", "axle", "max sum Y [kN]", "at [m]",
-             "Prud'homme [kN]", "P [kN]", "verdict");
-  for (const auto& x : r.axles) {
-    fmt::print("  {:<18} {:>12.2f} {:>9.2f} {:>14.2f} {:>12.2f}  {}\n", x.name, x.max_sum_y / 1e3,
-               x.max_sum_y_position, x.limit / 1e3, x.axle_load / 1e3, x.pass ? "pass" : "FAIL");
+  fmt::print(", Nadal mu = {:g}{}\n", r.mu, r.twist_test ? ", twist test" : "");
+  // One line per quantity and item: its worst section (largest value / limit, else value), or
+  // every row with --all.
+  std::vector<const an::AssessmentRow*> shown;
+  for (const auto& row : r.rows) {
+    if (a.all_rows) {
+      shown.push_back(&row);
+      continue;
+    }
+    const auto score = [](const an::AssessmentRow& x) {
+      return std::isnan(x.limit) || x.limit <= 0.0 ? x.value : x.value / x.limit;
+    };
+    auto it = std::find_if(shown.begin(), shown.end(), [&](const an::AssessmentRow* s) {
+      return s->quantity == row.quantity && s->item == row.item;
+    });
+    if (it == shown.end()) {
+      shown.push_back(&row);
+    } else if (score(row) > score(**it)) {
+      *it = &row;
+    }
   }
+  const std::vector<std::string> groups = {"running safety", "track loading", "twist test",
+                                           "stability", "ride"};
+  const auto rank = [&](const an::AssessmentRow* x) {
+    return std::find(groups.begin(), groups.end(), x->group) - groups.begin();
+  };
+  std::stable_sort(shown.begin(), shown.end(),
+                   [&](const auto* lhs, const auto* rhs) { return rank(lhs) < rank(rhs); });
+  std::string group;
+  for (const auto* row : shown) {
+    if (row->group != group) {
+      group = row->group;
+      fmt::print("  {}\n  {:<44} {:<34} {:>12} {:>12} {:>10}  {:<22} {}\n", group, "quantity",
+                 "item", "value", "limit", "at [m]", "section", "verdict");
+    }
+    fmt::print("  {:<44} {:<34} {:>12} {:>12} {:>10}  {:<22} {}\n", row->quantity, row->item,
+               value_text(row->value, row->unit), value_text(row->limit, row->unit),
+               std::isnan(row->position) ? std::string("-") : fmt::format("{:.1f}", row->position),
+               row->section, verdict_text(*row));
+  }
+  for (const auto& n : r.notes) fmt::print("  note: {}\n", n);
+  if (r.accelerations_derived)
+    fmt::print("  note: floor and bogie-frame accelerations derived from the bodies' rigid "
+               "motion (the run has no acceleration sensors)\n");
   fmt::print("  verdict   {}\n", r.pass ? "pass" : "FAIL");
-  an::write_derailment_report(r, a.file, out.write_path());
+  an::write_assessment(r, a.file, out.write_path());
   out.file->commit();
   fmt::print("  output    {}\n", out.path());
   // The verdict is a result, not a failure of the assessment.
@@ -177,10 +248,6 @@ an::SettleOptions settle_options(const Scene& scene, const SettleArgs& s) {
 }
 
 // ---------------------------------------------------------------- ramp
-// Envelope growth from the first full window to the peak above which the peak is shown: any
-// growth at all (1 means the envelope is largest in its first window).
-constexpr double kGrowthShown = 1.0;
-
 struct RampArgs {
   std::string scene, output;
   double speed_initial = 110.0, deceleration = 1.0, speed_final = NAN, hold = 0.1,
@@ -189,7 +256,8 @@ struct RampArgs {
 };
 
 int do_ramp(const RampArgs& a) {
-  const Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
+  const Scene scene = an::with_reduction(scenarios::load_scene(a.scene),
+                                         fc::ReductionFactors::following_k22(a.k11, a.k22));
   an::RampOptions o;
   o.speed_initial = a.speed_initial;
   o.deceleration = a.deceleration;
@@ -213,7 +281,7 @@ int do_ramp(const RampArgs& a) {
   const auto family = an::speed_family(scene);
   const auto probe = family(o.speed_initial);
   const auto lateral = an::lateral_states(*probe);
-  o.observed = lateral.index.front();
+  o.observed = lateral.index;
   const auto x0 = an::disturbed_state(scene, *probe, a.disturbance);
   const auto r = an::ramp_down(family, x0, o);
   fmt::print("ferrodyn critical-speed ramp: {} ({}), K11 = {}, K22 = {}\n", scene.name, scene.path,
@@ -223,30 +291,19 @@ int do_ramp(const RampArgs& a) {
              a.disturbance);
   if (!r.completed) fmt::print("  stopped   {}\n", r.message);
   if (r.decay_speed) {
-    fmt::print("  decay     {} envelope below {} m for good at t = {:.3f} s: V = {:.3f} m/s = "
-               "{:.2f} km/h\n",
-               lateral.name.front(), o.threshold, r.decay_time, *r.decay_speed,
-               *r.decay_speed * 3.6);
+    fmt::print("  decay     every wheelset's envelope below {} m for good at t = {:.3f} s: V = "
+               "{:.3f} m/s = {:.2f} km/h (the last to die out: {})\n",
+               o.threshold, r.decay_time, *r.decay_speed, *r.decay_speed * 3.6,
+               lateral.name[r.holder]);
   } else {
-    fmt::print("  decay     none: the envelope {} below {} m over the whole ramp\n",
+    fmt::print("  decay     none: the vehicle's envelope {} below {} m over the whole ramp{}\n",
                r.envelope.empty() || r.envelope.back() >= o.threshold ? "never stays" : "stays",
-               o.threshold);
+               o.threshold,
+               r.completed && !r.envelope.empty() && r.envelope.back() >= o.threshold
+                   ? fmt::format(" (largest at the end: {})", lateral.name[r.holder])
+                   : std::string());
   }
-  // The envelope's maximum is where its growth turns into decay; that is the Hopf speed only
-  // while the oscillation is small enough to be linear (not on a flange-limited cycle).
-  if (!std::isnan(r.peak_speed) && r.envelope_growth > kGrowthShown) {
-    const auto peak = std::max_element(r.envelope.begin(), r.envelope.end());
-    fmt::print(
-        "  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
-        "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
-        "still linear there)\n",
-        r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
-  } else if (!std::isnan(r.peak_speed)) {
-    fmt::print(
-        "  growth    none: the envelope is largest in its first window (the disturbance "
-        "decays or settles)\n");
-  }
-  an::write_ramp(scene, r, o, lateral.name.front(), out.write_path());
+  an::write_ramp(scene, r, o, lateral.name, out.write_path());
   out.file->commit();
   fmt::print("  output    {}\n", out.path());
   if (!r.completed) {
@@ -280,7 +337,7 @@ an::BranchOptions branch_options(const Scene& scene, const BranchArgs& a) {
   return o;
 }
 
-an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reduction& k,
+an::KijRow run_branch(const Scene& base, const BranchArgs& a, const fc::ReductionFactors& k,
                       bool with_hopf, std::vector<std::string>* names, bool progress) {
   const Scene scene = an::with_reduction(base, k);
   auto o = branch_options(scene, a);
@@ -297,9 +354,11 @@ an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reductio
           fit.valid() ? fmt::format(" (sigma = {:.3g} +- {:.2g} /s, beta = {:.3g} /(s mm^2))",
                                     fit.sigma, fit.sigma_error, fit.beta * 1e-6)
                       : std::string();
-      fmt::print(stderr, "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm after {:.1f} s{}\n",
+      fmt::print(stderr,
+                 "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm ({}) after {:.1f} s{}\n",
                  k.k11, k.k22, p.speed, p.bisection ? " (bisection)" : "",
-                 an::to_string(p.run.outcome), p.run.amplitude.front() * 1e3, p.run.time, growth);
+                 an::to_string(p.run.outcome), p.run.amplitude[p.run.holder] * 1e3,
+                 lateral.name[p.run.holder], p.run.time, growth);
     };
   }
   an::KijRow row;
@@ -310,43 +369,75 @@ an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reductio
   return row;
 }
 
+// How the linear critical speed relates to the nonlinear one: the fold below the Hopf speed
+// (by more than the bracket) is a subcritical bifurcation, where the linear speed promises
+// stable running that a disturbance can break: it is non-conservative.
+std::string linear_against_nonlinear(const an::BranchResult& b, double hopf) {
+  const double width = b.bracket_high - b.bracket_low;
+  if (!b.fold_found) return "";
+  if (b.bracket_high < hopf - width) {
+    return fmt::format(
+        "non-conservative: the vehicle keeps a limit cycle {:.2f} m/s ({:.1f} %) below it "
+        "(subcritical bifurcation: between the fold and the Hopf speed a disturbance can start "
+        "hunting that the eigenvalues call stable)",
+        hopf - *b.lowest_sustained, 100.0 * (hopf - *b.lowest_sustained) / hopf);
+  }
+  if (b.bracket_low > hopf + width) {
+    return "the fold lies above the Hopf speed: the cycles near the fold did not settle within "
+           "--t-max (or the disturbance missed the branch); lengthen the runs";
+  }
+  return "the fold bracket holds the Hopf speed: the cycle grows from zero there "
+         "(supercritical bifurcation), the linear critical speed is the nonlinear one";
+}
+
 void print_branch(const an::KijRow& row, const std::vector<std::string>& names) {
-  fmt::print("  {:>10} {:>10} {:>9} {:>5}", "V [m/s]", "V [km/h]", "outcome", "bis.");
+  fmt::print("  {:>10} {:>10} {:>9} {:>5} {:>12}", "V [m/s]", "V [km/h]", "outcome", "bis.",
+             "held by");
   for (const auto& n : names) fmt::print(" {:>14}", n + " [mm]");
   fmt::print("\n");
   for (const auto& p : row.branch.points) {
-    fmt::print("  {:>10.4f} {:>10.3f} {:>9} {:>5}", p.speed, p.speed * 3.6,
-               an::to_string(p.run.outcome), p.bisection ? "yes" : "");
+    fmt::print("  {:>10.4f} {:>10.3f} {:>9} {:>5} {:>12}", p.speed, p.speed * 3.6,
+               an::to_string(p.run.outcome), p.bisection ? "yes" : "",
+               an::sustained(p.run.outcome) ? names[p.run.holder] : "");
     for (double amp : p.run.amplitude) fmt::print(" {:>14.4f}", amp * 1e3);
     fmt::print("\n");
   }
   const auto& b = row.branch;
   if (b.fold_found) {
-    fmt::print("  nonlinear critical speed (lowest sustained oscillation): {:.4f} m/s = {:.2f} km/h, "
-               "fold in [{:.4f}, {:.4f}] m/s\n",
-               *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high);
-    if (!std::isnan(b.amplitude_squared_zero)) {
+    const double a_fold = [&] {
+      for (const auto& p : b.points)
+        if (p.speed == *b.lowest_sustained && an::sustained(p.run.outcome))
+          return p.run.amplitude[p.run.holder];
+      return std::numeric_limits<double>::quiet_NaN();
+    }();
+    fmt::print("  nonlinear critical speed (lowest speed where any wheelset keeps a limit cycle): "
+               "{:.4f} m/s = {:.2f} km/h, fold in [{:.4f}, {:.4f}] m/s, cycle held by {} "
+               "({:.3f} mm)\n",
+               *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high,
+               names[b.holder], a_fold * 1e3);
+    // The A^2 line to zero is a result only where its assumption holds: a supercritical onset,
+    // the amplitude growing from zero at the fold.
+    if (b.supercritical) {
       fmt::print(
-          "  onset     amplitude^2 of the lowest cycles extrapolates to zero at {:.4f} m/s = "
-          "{:.2f} km/h: {}\n",
-          b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
-          b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
-                          : "subcritical (a finite cycle at the fold)");
+          "  onset     supercritical: amplitude^2 of the lowest cycles falls linearly to zero at "
+          "{:.4f} m/s, inside the fold bracket\n",
+          b.amplitude_squared_zero);
     } else {
-      fmt::print(
-          "  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
-          "does not fall towards the fold (subcritical)\n");
+      fmt::print("  onset     subcritical: the amplitude jumps from 0 to {:.3f} mm at the fold\n",
+                 a_fold * 1e3);
     }
   } else if (b.lowest_sustained) {
-    fmt::print("  sustained down to the lowest speed followed ({:.4f} m/s): the fold lies below\n",
-               *b.lowest_sustained);
+    fmt::print("  sustained down to the lowest speed followed ({:.4f} m/s, held by {}): the fold "
+               "lies below\n",
+               *b.lowest_sustained, names[b.holder]);
   } else {
     fmt::print("  no sustained oscillation at the start speed {:.4f} m/s: the fold lies above\n",
                b.bracket_high);
   }
   if (row.hopf_speed) {
-    fmt::print("  linear (Hopf) critical speed: {:.4f} m/s = {:.2f} km/h\n", *row.hopf_speed,
-               *row.hopf_speed * 3.6);
+    const std::string relation = linear_against_nonlinear(b, *row.hopf_speed);
+    fmt::print("  linear (Hopf) critical speed: {:.4f} m/s = {:.2f} km/h{}{}\n", *row.hopf_speed,
+               *row.hopf_speed * 3.6, relation.empty() ? "" : ": ", relation);
   }
 }
 
@@ -359,7 +450,8 @@ int do_branch(const BranchArgs& a) {
              scene.path, a.settle.k11, a.settle.k22);
   std::vector<std::string> names;
   const auto row =
-      run_branch(scene, a, {a.settle.k11, a.settle.k22}, !a.no_hopf, &names, true);
+      run_branch(scene, a, fc::ReductionFactors::following_k22(a.settle.k11, a.settle.k22),
+                 !a.no_hopf, &names, true);
   print_branch(row, names);
   const Scene reduced = an::with_reduction(scene, row.k);
   an::write_branch(reduced, row.branch, names, row.hopf_speed, out.write_path());
@@ -379,7 +471,8 @@ struct EigenArgs {
 };
 
 int do_eigen(const EigenArgs& a) {
-  Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
+  Scene scene = an::with_reduction(scenarios::load_scene(a.scene),
+                                   fc::ReductionFactors::following_k22(a.k11, a.k22));
   if (!(a.speed_min > 0.0 && a.speed_max > a.speed_min) || a.points < 2)
     throw std::invalid_argument("--speed-min/--speed-max/--points: need 0 < min < max, points >= 2");
   scene.eigen.speed_min = a.speed_min;
@@ -390,12 +483,7 @@ int do_eigen(const EigenArgs& a) {
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.k11, a.k22);
-  if (r.critical_speed) {
-    fmt::print("  Hopf speed (least damped mode crosses zero): {:.4f} m/s = {:.2f} km/h\n",
-               *r.critical_speed, *r.critical_speed * 3.6);
-  } else {
-    fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", a.speed_min, a.speed_max);
-  }
+  print_eigen_report(scene, r, 16);
   scenarios::write_eigen_report(scene, r, out.write_path());
   out.file->commit();
   fmt::print("  output    {}\n", out.path());
@@ -416,12 +504,13 @@ int do_kij(const KijArgs& a) {
   if (a.coefficient != "both" && a.coefficient != "k11" && a.coefficient != "k22")
     throw std::invalid_argument(
         fmt::format("--coefficient: unknown '{}'; allowed: both, k11, k22", a.coefficient));
-  std::vector<an::Reduction> ks;
+  std::vector<fc::ReductionFactors> ks;
   for (double k : a.k) {
-    an::Reduction r{a.branch.settle.k11, a.branch.settle.k22};
-    if (a.coefficient == "both") r = an::Reduction::uniform(k);
+    fc::ReductionFactors r =
+        fc::ReductionFactors::following_k22(a.branch.settle.k11, a.branch.settle.k22);
+    if (a.coefficient == "both") r = fc::ReductionFactors::uniform(k);
     if (a.coefficient == "k11") r.k11 = k;
-    if (a.coefficient == "k22") r.k22 = k;
+    if (a.coefficient == "k22") r = fc::ReductionFactors::following_k22(r.k11, k);
     ks.push_back(r);
   }
   (void)branch_options(scene, a.branch);  // validate before starting
@@ -468,6 +557,13 @@ int do_kij(const KijArgs& a) {
   }
   if (std::abs(a.k.front() - 1.0) > 1e-12)
     fmt::print("  (ratios are to the first K in the list, {})\n", a.k.front());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].hopf_speed) continue;
+    const std::string relation = linear_against_nonlinear(rows[i].branch, *rows[i].hopf_speed);
+    if (!relation.empty())
+      fmt::print("  K = ({:.2f}, {:.2f}): Hopf speed {}\n", rows[i].k.k11, rows[i].k.k22,
+                 relation.substr(0, relation.find(" (")));
+  }
   an::write_kij_study(scene, rows, out.write_path());
   out.file->commit();
   fmt::print("  output    {}\n", out.path());
@@ -566,10 +662,10 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   const auto settle = settle_options(scene, a.settle);
   std::vector<an::SweepPoint> points;
   for (double k : a.k) {
-    an::Reduction r{a.settle.k11, a.settle.k22};
-    if (a.coefficient == "both") r = an::Reduction::uniform(k);
+    fc::ReductionFactors r = fc::ReductionFactors::following_k22(a.settle.k11, a.settle.k22);
+    if (a.coefficient == "both") r = fc::ReductionFactors::uniform(k);
     if (a.coefficient == "k11") r.k11 = k;
-    if (a.coefficient == "k22") r.k22 = k;
+    if (a.coefficient == "k22") r = fc::ReductionFactors::following_k22(r.k11, k);
     (void)an::with_reduction(scene, r);  // validates the factors
     for (int i = 0; i < a.points; ++i) {
       const double v = a.points == 1 ? a.speed_min
@@ -587,7 +683,7 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_sweep.h5") : a.output;
   const std::string journal_dir = out + ".points";
   // Everything that changes the numbers identifies the sweep.
-  std::string signature = scene.text;
+  std::string signature = scene.text + " records-with-holder";
   for (const auto& p : points) signature += fmt::format(" {:.17g}/{:.17g}/{:.17g}", p.speed, p.k.k11, p.k.k22);
   signature += fmt::format(" {} {} {} {} {} {} {} {}", a.settle.disturbance, settle.segment,
                            settle.max_time, settle.output_interval, settle.zero_amplitude,
@@ -628,9 +724,10 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
     if (!a.quiet) {
       const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       fmt::print(stderr, "[rank {} {:>4}/{:<4} {:6.1f} s] V = {:8.4f} m/s K = ({:.3f}, {:.3f}): {} "
-                 "{:.4f} mm\n",
+                 "{:.4f} mm (wheelset {})\n",
                  mpi.rank, done, todo.size(), el, r.point.speed, r.point.k.k11, r.point.k.k22,
-                 an::to_string(r.outcome), r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3);
+                 an::to_string(r.outcome),
+                 r.amplitude.empty() ? NAN : r.amplitude[r.holder] * 1e3, r.holder + 1);
     }
   };
   const auto resources = scenarios::build_resources(scene);
@@ -682,12 +779,16 @@ int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
   fs::remove_all(journal_dir);  // complete: the HDF5 file holds every point
   fmt::print("ferrodyn sweep: {} ({}), {} points, {} rank(s) x {} thread(s)\n", scene.name,
              scene.path, points.size(), mpi.size, a.jobs);
-  fmt::print("  {:>10} {:>6} {:>6} {:>9} {:>14} {:>9}\n", "V [m/s]", "K11", "K22", "outcome",
-             names.front() + " [mm]", "cpu [s]");
+  fmt::print("  {:>10} {:>6} {:>6} {:>9} {:>12}", "V [m/s]", "K11", "K22", "outcome", "held by");
+  for (const auto& n : names) fmt::print(" {:>14}", n + " [mm]");
+  fmt::print(" {:>9}\n", "cpu [s]");
   for (const auto& r : results) {
-    fmt::print("  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>14.5f} {:>9.3f}\n", r.point.speed,
-               r.point.k.k11, r.point.k.k22, an::to_string(r.outcome),
-               r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3, r.cpu_seconds);
+    fmt::print("  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>12}", r.point.speed, r.point.k.k11,
+               r.point.k.k22, an::to_string(r.outcome),
+               an::sustained(r.outcome) && r.holder < names.size() ? names[r.holder] : "");
+    for (std::size_t j = 0; j < names.size(); ++j)
+      fmt::print(" {:>14.5f}", j < r.amplitude.size() ? r.amplitude[j] * 1e3 : NAN);
+    fmt::print(" {:>9.3f}\n", r.cpu_seconds);
   }
   fmt::print("  wall      {:.2f} s this invocation; CPU {:.2f} s over all points\n", wall, cpu);
   fmt::print("  output    {}\n", out);
@@ -725,29 +826,125 @@ void add_k_options(CLI::App* c, std::vector<double>& k, std::string& coefficient
 
 }  // namespace
 
+void print_eigen_report(const Scene& scene, const scenarios::EigenReport& r,
+                        std::size_t max_rows) {
+  using vehicle::ModeClass;
+  const auto cell = [](const vehicle::Mode& m) {
+    return std::isnan(m.damping_ratio) ? fmt::format("{:>10} {:>8}", "-", "-")
+                                       : fmt::format("{:>+10.5f} {:>8.3f}", m.damping_ratio,
+                                                     m.frequency_hz);
+  };
+  const bool classified = !r.sweep.empty() && r.sweep.front().least_damped.kind !=
+                                                  ModeClass::unclassified;
+  const std::size_t stride = std::max<std::size_t>(1, (r.sweep.size() + max_rows - 1) / max_rows);
+  if (classified) {
+    // Classes other than hunting and contact only where the model has such modes.
+    std::vector<ModeClass> shown = {ModeClass::hunting, ModeClass::contact};
+    for (const auto c : {ModeClass::longitudinal, ModeClass::body, ModeClass::track}) {
+      for (const auto& p : r.sweep) {
+        if (!std::isnan(p.of(c).damping_ratio)) {
+          shown.push_back(c);
+          break;
+        }
+      }
+    }
+    fmt::print("  hunting mode (followed down from the highest speed by its shape) and the least "
+               "damped mode of each other class: damping ratio, frequency [Hz]; shapes as "
+               "kinetic-energy shares\n");
+    fmt::print("  {:>8} {:>8}", "V [m/s]", "V [km/h]");
+    for (const auto c : shown) fmt::print(" | {:<19}", vehicle::to_string(c));
+    fmt::print(" | hunting mode shape\n");
+    for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
+      const auto& p = r.sweep[i];
+      fmt::print("  {:>8.3f} {:>8.2f}", p.speed, p.speed * 3.6);
+      for (const auto c : shown) fmt::print(" | {}", cell(c == ModeClass::hunting ? p.hunting : p.of(c)));
+      fmt::print(" | {}{}\n", p.hunting.shape(),
+                 p.hunting_correlation < vehicle::kShapeTracked
+                     ? " (branch lost above: least damped hunting-class mode)"
+                     : "");
+    }
+  } else {
+    fmt::print("  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
+               "freq [Hz]");
+    for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
+      const auto& p = r.sweep[i];
+      fmt::print("  {:>10.3f} {:>10.2f} {:>+14.5f} {:>12.4f}\n", p.speed, p.speed * 3.6,
+                 p.least_damped.damping_ratio, p.least_damped.frequency_hz);
+    }
+  }
+  if (r.critical_speed) {
+    fmt::print("  Hopf speed ({} mode crosses zero damping): {:.6f} m/s = {:.3f} km/h\n",
+               classified ? "a hunting" : "the least damped", *r.critical_speed,
+               *r.critical_speed * 3.6);
+  } else {
+    fmt::print("  no {}critical speed in [{:g}, {:g}] m/s\n", classified ? "hunting " : "",
+               scene.eigen.speed_min, scene.eigen.speed_max);
+  }
+  if (classified) {
+    // Other classes that are unstable somewhere: reported, not taken for hunting.
+    for (const auto c : {ModeClass::contact, ModeClass::longitudinal, ModeClass::body,
+                         ModeClass::track}) {
+      for (const auto& p : r.sweep) {
+        if (p.of(c).damping_ratio <= -vehicle::kNeutralDamping) {
+          fmt::print("  note      a {} mode is unstable at {:.3f} m/s ({:.3f} Hz, damping {:+.5f}, "
+                     "{})\n",
+                     vehicle::to_string(c), p.speed, p.of(c).frequency_hz, p.of(c).damping_ratio,
+                     p.of(c).shape());
+          break;
+        }
+      }
+    }
+    if (!r.modes_at_scene_speed.empty()) {
+      fmt::print("  modes at the scene's speed {:.3f} m/s, least damped first (up to 12):\n",
+                 scene.simulation.speed);
+      std::size_t shown = 0;
+      for (const auto& m : r.modes_at_scene_speed) {
+        if (m.eigenvalue.imag() < 0.0) continue;  // one of each complex pair
+        fmt::print("    {:<12} {:>+10.5f} {:>9.3f} Hz  {}\n", vehicle::to_string(m.kind),
+                   m.damping_ratio, m.frequency_hz, m.shape());
+        if (++shown == 12) break;
+      }
+    }
+  }
+}
+
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
-  auto d = std::make_shared<DerailArgs>();
-  auto* der = app.add_subcommand(
-      "derailment", "Derailment assessment of a run: Y/Q (2 m mean), Nadal, sum Y, dQ/Q0, plot");
-  der->add_option("run", d->file, "HDF5 output of `ferrodyn run`")->required();
-  der->add_option("--mu", d->mu, "Friction coefficient in Nadal's formula")
-      ->check(number_in(0.0, 2.0, false, true, ""))
-      ->capture_default_str();
-  der->add_option("--flange-angle-deg", d->flange_angle_deg,
-                  "Flange angle [deg] (default: largest contact angle of each wheel)")
+  auto d = std::make_shared<AssessArgs>();
+  auto* as = app.add_subcommand(
+      "assess",
+      "Assessment of a run as EN 14363 / UIC 518 / EN 12299 define it: running safety, track "
+      "loading, stability, ride; table, HDF5 and plots along the track");
+  as->add_option("run", d->file, "HDF5 output of `ferrodyn run` (vehicle scene)")->required();
+  as->add_option("--category", d->category,
+                 "Vehicle category (coach, locomotive, power_car, wagon); default: the vehicle "
+                 "file's")
+      ->check(CLI::IsMember({"coach", "locomotive", "power_car", "wagon"}));
+  as->add_option("--mu", d->mu, "Friction coefficient in Nadal's limit (default: the run's)")
+      ->check(number_in(0.0, 2.0, false, true, ""));
+  as->add_option("--flange-angle-deg", d->flange_angle_deg,
+                 "Flange angle in Nadal's limit [deg] (default: largest contact angle of each "
+                 "wheel)")
       ->check(number_in(0.0, 90.0, true, true, "deg"));
-  der->add_option("--q0", d->q0, "Static wheel load Q0 [N] (default: first sample)")
-      ->check(number_in(0.0, INFINITY, true, true, "N"));
-  der->add_option("--window", d->window, "Sliding-mean window [m]")
-      ->check(number_in(0.0, INFINITY, true, true, "m"))
+  as->add_option("--section-length", d->section_length,
+                 "Statistics over windows of this length [m] instead of the scene's sections")
+      ->check(number_in(0.0, INFINITY, true, true, "m"));
+  as->add_option("--f0", d->f0, "Instability frequency [Hz] (default: from the run's spectrum)")
+      ->check(number_in(0.0, INFINITY, true, true, "Hz"));
+  as->add_option("--floor-offset", d->floor_offset,
+                 "Lateral offset of the vertical floor points [m] (0: centre line only)")
+      ->check(number_in(0.0, INFINITY, false, true, "m"))
       ->capture_default_str();
-  der->add_option("--step", d->step, "Sliding-mean sampling step [m]")
-      ->check(number_in(0.0, INFINITY, true, true, "m"))
+  as->add_option("--y-over-q-limit", d->y_over_q_limit, "(Y/Q) limit of the 2 m mean")
+      ->check(number_in(0.0, INFINITY, true, true, ""))
       ->capture_default_str();
-  der->add_option("-o,--output", d->output, "Report file (default: <run>_derailment.h5)");
-  der->add_flag("--no-plots", d->no_plots, "Do not draw plots");
-  add_overwrite_flag(der, d->overwrite);
-  der->callback([&handler, d] { handler = [d] { return do_derailment(*d); }; });
+  as->add_flag("--twist-test", d->twist_test, "Assess the wheel unloading dQ/Q0 too");
+  as->add_flag("--no-twist-test", d->no_twist_test,
+               "Do not assess dQ/Q0 even when the scene says it is the twist test");
+  as->add_flag("--all", d->all_rows, "Print every section's row (default: the worst per item)");
+  as->add_option("-o,--output", d->output, "Report file (default: <run>_assessment.h5)");
+  as->add_flag("--no-plots", d->no_plots, "Do not draw plots");
+  add_overwrite_flag(as, d->overwrite);
+  as->callback([&handler, d] { handler = [d] { return do_assess(*d); }; });
 
   auto* cs = app.add_subcommand("critical-speed", "Critical speed: ramp, bifurcation, eigen");
   cs->require_subcommand(1);

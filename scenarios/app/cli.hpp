@@ -7,6 +7,7 @@
 // std::runtime_error for a failed run -> exit code 1. Handlers return their own exit code.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ class Validator;
 
 namespace ferro::scenarios {
 struct Scene;
+struct EigenReport;
 }
 
 namespace ferro::cli {
@@ -28,6 +30,19 @@ using VerbHandler = std::function<int()>;
 /// scene's value), validated with option-named messages.
 void apply_run_overrides(scenarios::Scene& scene, double t_end, double speed,
                          const std::string& tangential);
+
+/// What the environment gives a tangential model the command line names (the program reads the
+/// environment, the library never does): mim_table without a "table" option gets
+/// table = $FERRO_MIM_TABLE when that is set. Other models: `options` unchanged.
+[[nodiscard]] std::map<std::string, std::string> with_environment_options(
+    const std::string& model, std::map<std::string, std::string> options = {});
+
+/// The eigenvalue sweep as `eig` and `critical-speed eigen` print it: per speed (at most
+/// `max_rows`, evenly strided) the least damped hunting mode (damping ratio, frequency, shape)
+/// and the least damped mode of each other class apart; the Hopf speed (a hunting mode
+/// crossing zero); the least damped modes at the scene's own speed.
+void print_eigen_report(const scenarios::Scene& scene, const scenarios::EigenReport& report,
+                        std::size_t max_rows);
 
 /// Exit codes of the ferrodyn program.
 inline constexpr int kExitOk = 0;
@@ -84,7 +99,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
 void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler);   // fe-kij
-/// derailment, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
+/// assess, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
 void add_analysis_commands(CLI::App& app, VerbHandler& handler);
 
 }  // namespace ferro::cli

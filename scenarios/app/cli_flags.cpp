@@ -1,4 +1,5 @@
-// Flags shared by every verb, and the strict reading of every option value (see cli.hpp).
+// Flags shared by every verb, what the environment adds to them, and the strict reading of
+// every option value (see cli.hpp).
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -126,6 +127,15 @@ void strict_values(CLI::App& app) {
     }
   }
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) strict_values(*sub);
+}
+
+std::map<std::string, std::string> with_environment_options(
+    const std::string& model, std::map<std::string, std::string> options) {
+  if (model == "mim_table" && options.count("table") == 0) {
+    const char* table = std::getenv("FERRO_MIM_TABLE");
+    if (table != nullptr && *table != '\0') options["table"] = table;
+  }
+  return options;
 }
 
 }  // namespace ferro::cli

@@ -6,22 +6,22 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "ferro/contact/hertz.hpp"
-#include "ferro/contact/reduction_factors.hpp"
-#include "ferro/contact/tangential_model.hpp"
 #include "cli.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
@@ -109,10 +109,11 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   eval->add_option("--option", *opts,
                    "model option key=value (repeatable), e.g. mx=40, "
                    "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
-  eval->add_option("--k11", in->k11, "reduction factor K11")->capture_default_str();
-  eval->add_option("--k22", in->k22, "reduction factor K22")->capture_default_str();
-  eval->add_option("--k23", in->k23, "reduction factor K23 (default: K22, as in the thesis 4.2.4)");
-  eval->add_option("--k33", in->k33, "reduction factor K33")->capture_default_str();
+  eval->add_option("--k11", in->reduction.k11, "reduction factor K11")->capture_default_str();
+  eval->add_option("--k22", in->reduction.k22, "reduction factor K22")->capture_default_str();
+  eval->add_option("--k23", in->reduction.k23,
+                   "reduction factor K23 (default: K22, as in the thesis 4.2.4)");
+  eval->add_option("--k33", in->reduction.k33, "reduction factor K33")->capture_default_str();
   eval->add_option("--kij-table", *kij_table,
                    "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
   eval->add_option("--kij-at", *kij_at,
@@ -142,7 +143,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
                                           std::cout);
         return kExitOk;
       }
-      const auto model = fc::make_tangential_model(input.model, options);
+      const auto model =
+          fc::make_tangential_model(input.model, with_environment_options(input.model, options));
       print_json(input, scenarios::evaluate_contact(input, *model, source));
       return kExitOk;
     };

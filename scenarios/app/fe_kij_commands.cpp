@@ -22,6 +22,7 @@
 
 #include "cli.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/fe_contact/kij_sweep.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/plotting.hpp"

@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +19,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -30,8 +30,8 @@
 #include "cli.hpp"
 #include "ferro/contact/geometry/contact_table.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "ferro/contact/io/text_writer.hpp"
-#include "ferro/scenarios/csv_batch.hpp"
+#include "ferro/io/csv.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
@@ -110,9 +110,9 @@ PoseResult solve_pose(const fc::WheelRailPair& pair, const PoseInput& in, double
 
 double lead_of(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
                const fc::ContactPoint& p) {
-  const double sgn = p.side == fc::Side::right ? 1.0 : -1.0;
-  const double Y = sgn * (pair.wheel_offset() + p.wheel_y);
-  return p.x + std::sin(pose.yaw) * std::cos(pose.roll) * Y;
+  // The point's distance ahead of its wheel section's centre, which sits Y along the axle.
+  const double Y = fc::side_sign(p.side) * (pair.wheel_offset() + p.wheel_y);
+  return p.x - fc::WheelsetFrame(pose, pair.params().nominal_radius).axle().x() * Y;
 }
 
 constexpr const char* kCsvPointHeader =
@@ -166,7 +166,7 @@ int run_batch(const fc::WheelRailPair& pair, const std::string& in_path,
               bool overwrite) {
   std::ifstream in(in_path);
   if (!in) throw std::invalid_argument(fmt::format("--batch: cannot open '{}'", in_path));
-  scenarios::CsvBatchReader reader(in, in_path);
+  io::CsvReader reader(in, in_path);
   const std::vector<std::string>& header = reader.header();
   // Column -> pose field and the factor to SI (the mm/unit-suffixed names are read as well).
   struct Column {

@@ -9,14 +9,13 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <stdexcept>
 #include <thread>
 #include <utility>
 #include <vector>
 
-#include "ferro/contact/mim_table.hpp"
 #include "cli.hpp"
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/output_file.hpp"
 
 namespace ferro::cli {

@@ -96,7 +96,10 @@ void apply_run_overrides(Scene& scene, double t_end, double speed, const std::st
     }
     scene.simulation.speed = speed;
   }
-  if (!tangential.empty()) scenarios::override_tangential(scene, tangential, "--tangential");
+  if (!tangential.empty()) {
+    scenarios::override_tangential(scene, tangential, "--tangential",
+                                   with_environment_options(tangential));
+  }
   if (!std::isnan(t_end) || !std::isnan(speed)) {
     const std::string problem = scenarios::track_extent_problem(scene, scene.simulation.t_end);
     if (!problem.empty()) {
@@ -234,7 +237,10 @@ int do_run(const RunArgs& a) {
 
 int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
-  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
+  if (!a.tangential.empty()) {
+    scenarios::override_tangential(scene, a.tangential, "--tangential",
+                                   with_environment_options(a.tangential));
+  }
   if (!std::isnan(a.speed_min)) scene.eigen.speed_min = a.speed_min;
   if (!std::isnan(a.speed_max)) scene.eigen.speed_max = a.speed_max;
   if (a.points > 0) scene.eigen.points = a.points;
@@ -257,21 +263,7 @@ int do_eig(const EigArgs& a) {
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn eig: {} ({}), {} speeds in [{:g}, {:g}] m/s\n", scene.name, scene.path,
              scene.eigen.points, scene.eigen.speed_min, scene.eigen.speed_max);
-  fmt::print("  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
-             "freq [Hz]");
-  const std::size_t stride = std::max<std::size_t>(1, r.sweep.size() / 15);
-  for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
-    const auto& p = r.sweep[i];
-    fmt::print("  {:>10.3f} {:>10.2f} {:>+14.5f} {:>12.4f}\n", p.speed, p.speed * 3.6,
-               p.least_damped.damping_ratio, p.least_damped.frequency_hz);
-  }
-  if (r.critical_speed) {
-    fmt::print("  critical speed (least damped mode crosses zero): {:.6f} m/s = {:.3f} km/h\n",
-               *r.critical_speed, *r.critical_speed * 3.6);
-  } else {
-    fmt::print("  no critical speed in [{:g}, {:g}] m/s\n", scene.eigen.speed_min,
-               scene.eigen.speed_max);
-  }
+  print_eigen_report(scene, r, 16);
   if (r.closed_form_critical_speed) {
     fmt::print("  closed form eq. (151): {:.6f} m/s", *r.closed_form_critical_speed);
     if (r.critical_speed) {

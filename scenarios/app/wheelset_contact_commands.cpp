@@ -18,14 +18,14 @@
 #include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/plotting.hpp"
-#include "ferro/scenarios/wheelset_contact.hpp"
+#include "ferro/scenarios/wheelset_contact_file.hpp"
 
 namespace ferro::cli {
 namespace {
 
 namespace fc = ferro::contact;
 
-void print_table(const std::vector<scenarios::WheelsetContact>& results) {
+void print_table(const std::vector<fc::WheelsetContact>& results) {
   fmt::print(
       "{:>4} {:>5} {:>5} {:>2} {:>8} {:>8} {:>8} {:>7} {:>8} {:>10} {:>10} {:>9} {:>8} {:>8} "
       "{:>8} {:>6} {:>7} {:>8}\n",
@@ -64,7 +64,7 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
   if (!only.empty()) {
     std::set<int> known;
     for (const auto& c : in.cases) known.insert(c.id);
-    std::vector<scenarios::WheelsetCase> kept;
+    std::vector<fc::WheelsetCase> kept;
     for (int id : only) {
       if (!known.count(id)) {
         throw std::invalid_argument(fmt::format("--cases: case {} is not in {} (ids {}..{})", id,
@@ -77,9 +77,10 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
     in.cases = kept;
   }
   const fc::WheelRailPair pair = scenarios::make_wheel_rail_pair(in.pair);
-  const auto results = scenarios::solve_wheelset_contacts(pair, in);
+  const auto results = fc::solve_wheelset_contacts(pair, in.spec, in.cases);
   print_table(results);
-  scenarios::write_wheelset_contacts(results, in, h5_file.write_path(), csv_file.write_path());
+  fc::write_wheelset_contacts(results, in.spec, in.pair.path, h5_file.write_path(),
+                              csv_file.write_path());
   outputs.commit_all();
   fmt::print("wrote {}, {}\n", h5.string(), csv.string());
   if (plot) {

@@ -9,9 +9,10 @@
 #include <optional>
 #include <set>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/run.hpp"
+#include "ferro/scenarios/sensors.hpp"
 #include "ferro/scenarios/vehicle_file.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 #include "located.hpp"
@@ -80,13 +81,13 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
                                     file.string()));
     }
     model.vehicle_file = file.string();
-    model.vehicle = load_vehicle_file(model.vehicle_file);
+    model.vehicle = load_vehicle_file(model.vehicle_file, &model.category);
     keep.push_back(load_yaml_file(model.vehicle_file));
     scene.text += fmt::format("\n# ---- included: {} ----\n{}", model.vehicle_file,
                               keep.back().text);
   } else {
     MapReader v = m.map("vehicle");
-    model.vehicle = read_vehicle(v);
+    model.vehicle = read_vehicle(v, &model.category);
   }
   auto& sel = model.selection;
   sel.scope = m.string_or("scope", sel.scope, {"vehicle", "bogie", "wheelset"});
@@ -123,6 +124,69 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
     }
   }
   m.finish();
+}
+
+// The output block's sensors and anti-alias filter of a vehicle scene.
+void read_sensors(MapReader& o, Scene& scene) {
+  auto& v = scene.output;
+  v.anti_alias_frequency = o.number_or("anti_alias_frequency", v.anti_alias_frequency);
+  if (!(v.anti_alias_frequency >= 0.0))
+    o.fail("anti_alias_frequency", "must be >= 0 Hz (0: no anti-alias filters)");
+  v.anti_alias_order = static_cast<int>(o.integer_or("anti_alias_order", v.anti_alias_order));
+  v.contact_points = o.boolean_or("contact_points", v.contact_points);
+  if (v.anti_alias_order < 2 || v.anti_alias_order > 8 || v.anti_alias_order % 2 != 0)
+    o.fail("anti_alias_order", fmt::format("allowed 2, 4, 6, 8, got {}", v.anti_alias_order));
+
+  v.floor_height = o.number_or("floor_height", v.floor_height, true);
+  if (!std::isnan(v.floor_height) && !(v.floor_height > 0.0))
+    o.fail("floor_height", "must be > 0 m above the top of rail");
+  const auto& vehicle = scene.model.vehicle;
+  const YAML::Node n = o.node("sensors");
+  if (!n.IsDefined() || n.IsNull()) {
+    v.sensors = default_sensors(vehicle, scene.model.selection, v.floor_height);
+    return;
+  }
+  if (!n.IsSequence())
+    detail::fail_at(o, n, "sensors",
+                    "expected a list of standard positions (e.g. floor_front) or {name, body, "
+                    "point: [x, y, z]} mappings");
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::string key = fmt::format("sensors[{}]", i);
+    if (n[i].IsScalar()) {
+      try {
+        const auto s = preset_sensors(vehicle, n[i].Scalar(), v.floor_height);
+        v.sensors.insert(v.sensors.end(), s.begin(), s.end());
+      } catch (const std::invalid_argument& e) {
+        detail::fail_at(o, n[i], key, e.what());
+      }
+      continue;
+    }
+    if (!n[i].IsMap())
+      detail::fail_at(o, n[i], key, "expected a standard position name or {name, body, point}");
+    MapReader s(n[i], o.file(), o.key_path(key));
+    vehicle::SensorSpec spec;
+    spec.name = s.string("name");
+    spec.body = s.string("body");
+    if (body_index(vehicle, spec.body) < 0) {
+      std::vector<std::string> names;
+      for (const auto& b : vehicle.bodies) names.push_back(b.name);
+      s.fail("body", fmt::format("no body '{}'; bodies: {}", spec.body, fmt::join(names, ", ")));
+    }
+    spec.point = detail::vector3(s, "point");
+    const auto axes = s.string_list_or("filtered_axes", {"x", "y", "z"});
+    spec.filtered_axes.clear();
+    for (const auto& a : axes) {
+      if (a != "x" && a != "y" && a != "z")
+        s.fail("filtered_axes", fmt::format("'{}': allowed x, y, z", a));
+      spec.filtered_axes += a;
+    }
+    s.finish();
+    v.sensors.push_back(spec);
+  }
+  for (std::size_t i = 0; i < v.sensors.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (v.sensors[i].name == v.sensors[j].name)
+        detail::fail_at(o, n, "sensors", fmt::format("sensor '{}' appears twice", v.sensors[i].name));
 }
 
 // The vehicle must stay on the designed track for the whole run.
@@ -238,10 +302,11 @@ Scene load_scene(const std::string& path) {
       cr.semi_axis_a = c.number("semi_axis_a");
       cr.semi_axis_b = c.number("semi_axis_b");
       cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
-      cr.k11 = c.number_or("k11", cr.k11);
-      cr.k22 = c.number_or("k22", cr.k22);
+      cr.reduction.k11 = c.number_or("k11", cr.reduction.k11);
+      cr.reduction.k22 = c.number_or("k22", cr.reduction.k22);
       // Reduction factors (docs/SCENES.md): (0, 1], as for vehicles.
-      for (const auto& [key, k] : {std::pair{"k11", cr.k11}, std::pair{"k22", cr.k22}}) {
+      for (const auto& [key, k] :
+           {std::pair{"k11", cr.reduction.k11}, std::pair{"k22", cr.reduction.k22}}) {
         if (!(k > 0.0 && k <= 1.0)) c.fail(key, fmt::format("must lie in (0, 1], got {}", k));
       }
       read_material(c.map_or_empty("wheel"), cr.wheel);
@@ -329,6 +394,13 @@ Scene load_scene(const std::string& path) {
       o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));
     v.csv = o.string_list_or("csv", {});
     v.plots = o.string_list_or("plots", {});
+    if (vehicle_model) {
+      read_sensors(o, scene);
+    } else {
+      for (const char* k : {"sensors", "anti_alias_frequency", "anti_alias_order", "floor_height",
+                            "contact_points"})
+        if (o.has(k)) o.fail(k, "applies to vehicle scenes (model.type vehicle) only");
+    }
     o.finish();
     const auto names = vehicle_model ? std::vector<std::string>{} : signal_names(scene.model);
     auto check_names = [&](const std::vector<std::string>& list, const char* key) {
@@ -361,6 +433,9 @@ Scene load_scene(const std::string& path) {
     if (scene.eigen.points < 2 || scene.eigen.points > kMaxEigenPoints)
       e.fail("points", fmt::format("must lie in 2..{}", kMaxEigenPoints));
     e.finish();
+    MapReader as = a.map_or_empty("assessment");
+    scene.assessment.twist_test = as.boolean_or("twist_test", scene.assessment.twist_test);
+    as.finish();
     a.finish();
   }
   top.finish();
@@ -383,6 +458,8 @@ std::vector<std::string> scene_inputs(const Scene& scene) {
        {&w.wheel_profile, &w.rail_profile, &w.imported_table, &w.table_file, &w.reduction_table}) {
     if (!f->empty()) files.push_back(*f);
   }
+  if (const auto table = w.tangential_options.find("table"); table != w.tangential_options.end())
+    files.push_back(table->second);
   for (const auto& irregularity : scene.track.irregularities) {
     if (!irregularity.measured_file.empty()) files.push_back(irregularity.measured_file);
   }
@@ -405,7 +482,8 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
   return out;
 }
 
-void override_tangential(Scene& scene, const std::string& name, const std::string& flag) {
+void override_tangential(Scene& scene, const std::string& name, const std::string& flag,
+                         const contact::ModelOptions& options) {
   if (scene.model.type != "vehicle") {
     throw std::invalid_argument(fmt::format(
         "{}: only vehicle scenes choose a tangential model (this one is {})", flag,
@@ -418,6 +496,7 @@ void override_tangential(Scene& scene, const std::string& name, const std::strin
   }
   auto& w = scene.model.vehicle.wheel_rail;
   if (w.tangential_model != name) w.tangential_options.clear();
+  w.tangential_options.insert(options.begin(), options.end());  // keeps the keys already set
   w.tangential_model = name;
   try {
     (void)contact::make_tangential_model(name, w.tangential_options);

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "located.hpp"
 #include "yaml_values.hpp"
 
@@ -110,13 +110,19 @@ BodyBlock read_body(MapReader b, BodyKind kind) {
     out.inertia[2] = in.number("yaw");
     in.finish();
   }
+  // Default degrees of freedom: every body free but the car body's x (the vehicle's
+  // longitudinal position, neutral: nothing holds it lengthwise) and the wheelset's pitch (its
+  // rotation about the axle is the spin). Bogie frames and wheelsets move lengthwise on the
+  // secondary and primary longitudinal suspension, and the wheelsets' spin speed is free, so
+  // longitudinal creep forces pass through the suspension instead of into a constraint.
   std::vector<std::string> dof_names = {"x", "y", "z", "roll", "pitch", "yaw"};
   std::vector<std::string> defaults = {"y", "z", "roll", "pitch", "yaw"};
+  if (kind == BodyKind::bogie_frame) defaults = {"x", "y", "z", "roll", "pitch", "yaw"};
   if (kind == BodyKind::wheelset) {
     out.rolling_radius = b.number("nominal_rolling_radius");
     out.flange_back_distance = b.number_or("flange_back_distance", out.flange_back_distance);
     dof_names = {"x", "y", "z", "roll", "yaw", "spin", "spin_perturbation"};
-    defaults = {"y", "z", "roll", "yaw"};
+    defaults = {"x", "y", "z", "roll", "yaw", "spin"};
   } else {
     // Above top of rail: a centre of mass at or below the rails is a sign slip.
     out.cg_height = positive(b, "cg_height", "m (above top of rail)");
@@ -335,10 +341,11 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   }
   if (r.has("reduction")) {
     MapReader k = r.map("reduction");
-    const char* names[] = {"k11", "k22", "k23", "k33"};
-    for (int i = 0; i < 4; ++i) {
-      w.reduction[static_cast<std::size_t>(i)] = k.number_or(names[i], 1.0);
-    }
+    const std::pair<const char*, double*> factors[] = {{"k11", &w.reduction.k11},
+                                                       {"k22", &w.reduction.k22},
+                                                       {"k23", &w.reduction.k23},
+                                                       {"k33", &w.reduction.k33}};
+    for (const auto& [name, value] : factors) *value = k.number_or(name, 1.0);
     k.finish();
   } else {
     r.allow("reduction");
@@ -376,9 +383,16 @@ int body_index(const VehicleConfig& config, const std::string& name) {
   return -1;
 }
 
-VehicleConfig read_vehicle(MapReader& r) {
+const std::vector<std::string>& vehicle_categories() {
+  static const std::vector<std::string> k{"coach", "locomotive", "power_car", "wagon"};
+  return k;
+}
+
+VehicleConfig read_vehicle(MapReader& r, std::string* category) {
   VehicleConfig v;
   v.name = r.string_or("name", fs::path(r.file()).stem().string());
+  const std::string cat = r.string_or("category", "", vehicle_categories());
+  if (category != nullptr) *category = cat;
   r.allow("schema_version");
   r.allow("description");
   v.gravity = r.number_or("gravity", kStandardGravity);
@@ -577,7 +591,7 @@ VehicleConfig read_vehicle(MapReader& r) {
   return v;
 }
 
-VehicleConfig load_vehicle_file(const std::string& path) {
+VehicleConfig load_vehicle_file(const std::string& path, std::string* category) {
   const YamlFile file = load_yaml_file(path);
   MapReader r(file.root, path, "");
   const long version = r.integer_or("schema_version", -1);
@@ -585,7 +599,7 @@ VehicleConfig load_vehicle_file(const std::string& path) {
     r.fail("schema_version", fmt::format("required in a vehicle file; supported: {}, got {}",
                                          kVehicleSchemaVersion, version));
   }
-  return read_vehicle(r);
+  return read_vehicle(r, category);
 }
 
 }  // namespace ferro::scenarios

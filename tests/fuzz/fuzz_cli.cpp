@@ -1,5 +1,5 @@
 // Fuzz target: the command line of the verbs that take a scene or a run (the options of `run`,
-// `eig`, `derailment`), through the program's own registration and strict option reading
+// `eig`, `assess`), through the program's own registration and strict option reading
 // (scenarios/app/cli.hpp), and for `run` the overrides it applies to a scene. The first byte
 // picks the verb (kVerbs; adding a verb is one line there), the rest are the arguments,
 // separated by newlines or NUL bytes. No verb runs: a bad value must surface as a CLI11 parse
@@ -22,7 +22,7 @@ namespace {
 const std::vector<std::vector<std::string>> kVerbs = {
     {"run"},
     {"eig"},
-    {"derailment"},
+    {"assess"},
 };
 
 // The options of `run` that override a scene, read back after parsing.

@@ -124,7 +124,7 @@ TEST(OutputContract, an_output_never_replaces_an_input_or_another_output) {
             0);
   const std::string before = file_text(run);
   const auto d = test::run_capture(
-      {test::ferrodyn_exe(), "derailment", run, "-o", run, "--overwrite", "--no-plots"});
+      {test::ferrodyn_exe(), "assess", run, "-o", run, "--overwrite", "--no-plots"});
   EXPECT_EQ(d.exit_code, 2) << d.output;
   EXPECT_EQ(file_text(run), before);
   EXPECT_EQ(H5File::open_read(run).string_attribute("/", "status"), "completed");

@@ -48,6 +48,51 @@ std::string edited(const std::string& source, const std::string& from, const std
   return (dir / name).string();
 }
 
+// Copies the attributes of `object` (a group or a dataset) from `in` to `out`.
+void copy_attributes(const H5File& in, H5File& out, const std::string& object) {
+  for (const auto& attr : in.attribute_names(object)) {
+    try {
+      out.set_attribute(object, attr, in.integer_attribute(object, attr));
+      continue;
+    } catch (const std::exception&) {
+    }
+    try {
+      out.set_attribute(object, attr, in.number_attribute(object, attr));
+    } catch (const std::exception&) {
+      out.set_attribute(object, attr, in.string_attribute(object, attr));
+    }
+  }
+}
+
+// Copies `group` of `in` with everything under it (numeric and text datasets) into `out`, but
+// /signals/position, which the caller writes.
+void copy_object(const H5File& in, H5File& out, const std::string& group) {
+  out.ensure_group(group);
+  copy_attributes(in, out, group);
+  for (const auto& name : in.members(group)) {
+    const std::string path = (group == "/" ? "" : group) + "/" + name;
+    if (path == "/signals/position") continue;
+    bool is_group = true;
+    try {
+      (void)in.members(path);
+    } catch (const std::exception&) {
+      is_group = false;
+    }
+    if (is_group) {
+      copy_object(in, out, path);
+      continue;
+    }
+    try {
+      io::Dims dims;
+      const auto values = in.read_array(path, &dims);
+      out.write_array(path, values, dims);
+    } catch (const std::exception&) {
+      out.write_text(path, in.read_text(path));
+    }
+    copy_attributes(in, out, path);
+  }
+}
+
 struct Refusal {
   std::vector<std::string> args;  // after the program
   std::string names;              // the message must name this
@@ -82,12 +127,19 @@ TEST(StrictInput, option_values_that_mean_nothing_are_refused) {
       {{"eig", kHunting, "--points", "0", "-o", out}, "--points"},
       {{"eig", kHunting, "--points", "-3", "-o", out}, "--points"},
       {{"eig", kHunting, "--speed-min", "nan", "-o", out}, "--speed-min"},
-      {{"derailment", out, "--q0", "0"}, "--q0"},
-      {{"derailment", out, "--q0", "-1"}, "--q0"},
-      {{"derailment", out, "--q0", "nan"}, "--q0"},
-      {{"derailment", out, "--flange-angle-deg", "0"}, "--flange-angle-deg"},
-      {{"derailment", out, "--flange-angle-deg", "-10"}, "--flange-angle-deg"},
-      {{"derailment", out, "--flange-angle-deg", "nan"}, "--flange-angle-deg"},
+      {{"assess", out, "--mu", "nan"}, "--mu"},
+      {{"assess", out, "--mu", "-1"}, "--mu"},
+      {{"assess", out, "--flange-angle-deg", "0"}, "--flange-angle-deg"},
+      {{"assess", out, "--flange-angle-deg", "-10"}, "--flange-angle-deg"},
+      {{"assess", out, "--flange-angle-deg", "nan"}, "--flange-angle-deg"},
+      {{"assess", out, "--section-length", "0"}, "--section-length"},
+      {{"assess", out, "--section-length", "-1"}, "--section-length"},
+      {{"assess", out, "--f0", "0"}, "--f0"},
+      {{"assess", out, "--f0", "nan"}, "--f0"},
+      {{"assess", out, "--floor-offset", "-1"}, "--floor-offset"},
+      {{"assess", out, "--y-over-q-limit", "0"}, "--y-over-q-limit"},
+      {{"assess", out, "--category", ""}, "--category"},
+      {{"assess", out, "-o", ""}, "--output"},
       {{"sweep", kHunting, "--speed-min", "10", "--speed-max", "20", "--max-new-points", "-1"},
        "--max-new-points"},
       {{"critical-speed", "ramp", kHunting, "--disturbance", "nan"}, "--disturbance"},
@@ -98,7 +150,7 @@ TEST(StrictInput, option_values_that_mean_nothing_are_refused) {
 
 TEST(StrictInput, work_is_bounded_before_it_starts) {
   const fs::path dir = scratch();
-  // A run file whose positions span 2e15 m, for the derailment assessment.
+  // A run file whose positions span 2e15 m, for the assessment.
   const std::string run = (dir / "bounded_run.h5").string();
   fs::remove(run);
   ASSERT_EQ(test::run_capture({test::ferrodyn_exe(), "run", "scenarios/scenes/thesis_derailment.yaml",
@@ -109,30 +161,18 @@ TEST(StrictInput, work_is_bounded_before_it_starts) {
   fs::copy_file(run, far, fs::copy_options::overwrite_existing);
   {
     // Positions stretched to 2e15 m: the assessment must refuse the means it would compute.
-    H5File in = H5File::open_read(run);
-    auto t = in.read_vector("/time");
+    const H5File in = H5File::open_read(run);
+    H5File f = H5File::create(far);
+    copy_object(in, f, "/");
     auto pos = in.read_vector("/signals/position");
     for (std::size_t i = 0; i < pos.size(); ++i) pos[i] = 2e15 * static_cast<double>(i) / pos.size();
-    std::vector<std::string> names = in.members("/signals");
-    H5File f = H5File::create(far);
-    for (const auto& attr : in.attribute_names("/")) {
-      try {
-        f.set_attribute("/", attr, in.string_attribute("/", attr));
-      } catch (const std::exception&) {
-        f.set_attribute("/", attr, in.number_attribute("/", attr));
-      }
-    }
-    f.write_vector("/time", t, "s");
-    for (const auto& n : names) {
-      const auto v = n == "position" ? pos : in.read_vector("/signals/" + n);
-      f.write_vector("/signals/" + n, v, in.string_attribute("/signals/" + n, "unit"));
-    }
+    f.write_vector("/signals/position", pos, in.string_attribute("/signals/position", "unit"));
     f.close();
   }
   const std::vector<Refusal> cases = {
-      {{"derailment", run, "--step", "1e-9", "--no-plots", "-o", (dir / "d1.h5").string()},
-       "--step"},
-      {{"derailment", far, "--no-plots", "-o", (dir / "d2.h5").string()}, "--step"},
+      {{"assess", run, "--section-length", "1e-9", "--no-plots", "-o", (dir / "d1.h5").string()},
+       "--section-length"},
+      {{"assess", far, "--no-plots", "-o", (dir / "d2.h5").string()}, "windows; at most"},
       {{"geometry", "search", "--wheel", "data/profiles/MBench_S1002_v3.prw", "--rail",
         "data/profiles/MBench_UIC60_v3.prr", "--section-step", "1e-9"},
        "--section-step"},

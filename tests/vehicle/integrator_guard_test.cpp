@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/conical_source.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"

@@ -20,7 +20,8 @@
 // points; converged when the weighted RMS norm of the correction (weights 1 / (rtol |y_i| +
 // atol_i), atol_i = atol times the system's tolerance scale of state i) falls below 0.1 (1 - rho)
 // / rho given the observed contraction rho, or below 0.01 when the corrected iterate's residual
-// is already within the tolerance. A Newton that diverges (a correction more than twice the
+// is already within the tolerance. The system's output states stay out of both tests: linear with
+// a constant Jacobian, Newton solves them exactly for the iterate of the other states. A Newton that diverges (a correction more than twice the
 // previous one) or takes more than 8 iterations is restarted with a fresh Jacobian, then the
 // step is taken as two implicit-Euler halves (recursively, down to h / 2^20). Outputs between two
 // steps come from the quadratic
@@ -38,6 +39,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -117,7 +119,7 @@ class Bdf2 final : public Integrator {
       const double w = d[i] / (s_.rtol * std::abs(y[i]) + atol_[i]);
       sum += w * w;
     }
-    return std::sqrt(sum / static_cast<double>(d.size()));
+    return std::sqrt(sum / static_cast<double>(tested_));
   }
 
   /// Solves y - psi - gamma h f(t, y) = 0 from the predictor y; false when Newton fails.
@@ -167,6 +169,7 @@ class Bdf2 final : public Integrator {
   const StepMonitor* monitor_ = nullptr;  ///< stop request and divergence guard
   std::size_t n_ = 0;
   Vector atol_;  ///< atol per state (the system's tolerance scales)
+  std::size_t tested_ = 0;  ///< states in the convergence test (all but the output states)
   std::vector<std::vector<int>> pattern_, groups_;  ///< Jacobian sparsity and column groups
   Eigen::MatrixXd jacobian_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
@@ -216,6 +219,12 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   if (const auto scales = system.tolerance_scales(); !scales.empty()) {
     for (Eigen::Index i = 0; i < n; ++i) atol_[i] *= scales[static_cast<std::size_t>(i)];
   }
+  // Output states (filters of the model's own quantities, linear with a constant Jacobian) out
+  // of the convergence test: Newton solves them exactly for the iterate of the other states.
+  const auto outputs = system.output_states();
+  for (const std::size_t i : outputs)
+    atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
+  tested_ = std::max<std::size_t>(1, n_ - outputs.size());
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
   IntegrationResult result;
   const double h = s_.fixed_step;

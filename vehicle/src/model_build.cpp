@@ -9,8 +9,10 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/contact_geometry_source.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "model_data.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle::detail {
 
@@ -161,6 +163,7 @@ void lay_out_states(ModelData& m, const std::vector<int>& position_of,
       b.track = next;
       next += 2 * track::kTrackPositions;
     }
+    next = lay_out_output_filters(m, i, next);
     b.block_end = next;
   }
   m.n_states = static_cast<std::size_t>(next);
@@ -197,8 +200,7 @@ void build_contact_mechanics(ModelData& m) {
   }
   c.material = contact::Material{wr.shear_modulus, wr.poisson};
   c.contact_modulus = contact::combine(c.material, c.material).contact_modulus;
-  c.reduction = contact::ReductionFactors{wr.reduction[0], wr.reduction[1], wr.reduction[2],
-                                          wr.reduction[3]};
+  c.reduction = wr.reduction;
   if (!wr.reduction_table.empty()) {
     try {
       c.reduction_table.emplace(contact::KijTable::read_hdf5(wr.reduction_table),
@@ -230,6 +232,7 @@ std::shared_ptr<const ModelData> build_model_data(VehicleModelInputs inputs) {
   ModelData& m = *data;
   m.in = std::move(inputs);
   const std::vector<int> position_of = order_bodies(m);
+  resolve_output_signals(m);
   // Elements (validated against the config's indices, stored with model indices).
   for (const SuspensionElementSpec& s : m.in.config.elements) {
     ElementData e;

@@ -1,9 +1,5 @@
 // Creep curves and patch pictures for `ferrodyn contact curve|patch`.
 #include "ferro/scenarios/contact_analysis.hpp"
-#include "ferro/scenarios/plotting.hpp"
-
-#include "ferro/contact/io/hdf5.hpp"
-#include "ferro/contact/io/text_writer.hpp"
 
 #include <fmt/format.h>
 
@@ -14,6 +10,10 @@
 #include <numbers>
 #include <stdexcept>
 #include <utility>
+
+#include "ferro/io/hdf5.hpp"
+#include "ferro/io/text_writer.hpp"
+#include "ferro/scenarios/plotting.hpp"
 
 namespace ferro::scenarios {
 namespace {

@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ferro/contact/hertz.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
-#include "ferro/scenarios/csv_batch.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -64,7 +64,8 @@ EvalOutput evaluate_contact(const EvalInput& in, const fc::TangentialModel& mode
   p.friction = in.mu;
   p.body1 = body1;
   p.body2 = body2;
-  p.reduction = {in.k11, in.k22, std::isnan(in.k23) ? in.k22 : in.k23, in.k33};
+  p.reduction = in.reduction;
+  if (std::isnan(p.reduction.k23)) p.reduction.k23 = p.reduction.k22;
   if (in.table) p.reduction = in.table->at_patch(out.patch, in.table_point);
   if (!(in.mu >= 0.0))
     throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
@@ -77,7 +78,7 @@ EvalOutput evaluate_contact(const EvalInput& in, const fc::TangentialModel& mode
 void evaluate_contact_batch(std::istream& in, const std::string& input_name,
                             const EvalInput& defaults, const fc::ModelOptions& options,
                             fc::CoefficientSource source, std::ostream& out) {
-  CsvBatchReader reader(in, input_name);
+  io::CsvReader reader(in, input_name);
   const std::map<std::string, double EvalInput::*> numeric = {
       {"a", &EvalInput::a},
       {"b", &EvalInput::b},
@@ -92,13 +93,15 @@ void evaluate_contact_batch(std::istream& in, const std::string& input_name,
       {"xi_x", &EvalInput::xi_x},
       {"xi_y", &EvalInput::xi_y},
       {"phi", &EvalInput::phi},
-      {"spin", &EvalInput::phi},
-      {"k11", &EvalInput::k11},
-      {"k22", &EvalInput::k22},
-      {"k23", &EvalInput::k23},
-      {"k33", &EvalInput::k33}};
+      {"spin", &EvalInput::phi}};
+  const std::map<std::string, double fc::ReductionFactors::*> factors = {
+      {"k11", &fc::ReductionFactors::k11},
+      {"k22", &fc::ReductionFactors::k22},
+      {"k23", &fc::ReductionFactors::k23},
+      {"k33", &fc::ReductionFactors::k33}};
   std::set<std::string> allowed = {"model"};
   for (const auto& kv : numeric) allowed.insert(kv.first);
+  for (const auto& kv : factors) allowed.insert(kv.first);
   reader.require_known_columns(allowed);
   const std::vector<std::string>& header = reader.header();
   std::map<std::string, std::unique_ptr<fc::TangentialModel>> models;
@@ -114,7 +117,12 @@ void evaluate_contact_batch(std::istream& in, const std::string& input_name,
         row_in.model = cells[i];
         continue;
       }
-      row_in.*(numeric.at(header[i])) = reader.number(cells, i);
+      const auto factor = factors.find(header[i]);
+      if (factor != factors.end()) {
+        row_in.reduction.*(factor->second) = reader.number(cells, i);
+      } else {
+        row_in.*(numeric.at(header[i])) = reader.number(cells, i);
+      }
     }
     try {
       auto it = models.find(row_in.model);

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace ferro::scenarios {
 
