@@ -36,6 +36,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -110,7 +111,7 @@ class Bdf2 final : public Integrator {
     double gamma_h = 0.0;
     Eigen::PartialPivLU<Eigen::MatrixXd> states;   ///< I - gamma_h J over the states
     Eigen::PartialPivLU<Eigen::MatrixXd> outputs;  ///< over the output states (block case)
-    Eigen::MatrixXd coupling;                      ///< -gamma_h J(outputs, states) (block case)
+    Eigen::SparseMatrix<double> coupling;          ///< -gamma_h J(outputs, states) (block case)
   };
 
   /// A step alternates between a few values of gamma_h (BDF2's 2h/3, the implicit-Euler halves
@@ -133,7 +134,17 @@ class Bdf2 final : public Integrator {
                        gamma_h * jacobian_(state_index_, state_index_));
       f.outputs.compute(Eigen::MatrixXd::Identity(no, no) -
                         gamma_h * jacobian_(output_index_, output_index_));
-      f.coupling = -gamma_h * jacobian_(output_index_, state_index_);
+      // The outputs' dependence on the states, by the pattern's entries (a few per row).
+      std::vector<Eigen::Triplet<double>> entries;
+      for (std::size_t k = 0; k < state_index_.size(); ++k) {
+        const auto j = state_index_[k];
+        for (const int i : pattern_[static_cast<std::size_t>(j)]) {
+          const Eigen::Index slot = output_slot_[static_cast<std::size_t>(i)];
+          if (slot >= 0) entries.emplace_back(slot, static_cast<Eigen::Index>(k), -gamma_h * jacobian_(i, j));
+        }
+      }
+      f.coupling.resize(no, ns);
+      f.coupling.setFromTriplets(entries.begin(), entries.end());
     }
     factors_.push_back(std::move(f));
     return factors_.back();
@@ -211,6 +222,7 @@ class Bdf2 final : public Integrator {
   std::vector<Factor> factors_;
   /// The output states and the others, when the outputs feed nothing back (else both empty).
   std::vector<Eigen::Index> state_index_, output_index_;
+  std::vector<Eigen::Index> output_slot_;  ///< per state: its index among the outputs, or -1
   long jacobian_age_ = 0, jacobians_ = 0, rhs_count_ = 0, splits_ = 0, iterations_ = 0;
   bool slow_ = false;
 };
@@ -272,7 +284,9 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
       for (const int i : pattern_[j]) feeds_back = feeds_back || !is_output[static_cast<std::size_t>(i)];
     }
     if (!feeds_back) {
+      output_slot_.assign(n_, -1);
       for (std::size_t i = 0; i < n_; ++i) {
+        if (is_output[i] != 0) output_slot_[i] = static_cast<Eigen::Index>(output_index_.size());
         (is_output[i] ? output_index_ : state_index_).push_back(static_cast<Eigen::Index>(i));
       }
     }
