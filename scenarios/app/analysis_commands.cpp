@@ -15,15 +15,13 @@
 #include "ferro/scenarios/analysis/critical_speed.hpp"
 #include "ferro/scenarios/analysis/derailment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
+#include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
-#include "ferro/scenarios/model_factory.hpp"
-#include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/overrides.hpp"
 #include "ferro/scenarios/run.hpp"
+#include "plotting.hpp"
 #include "terminal.hpp"
 
-#ifdef FERRO_WITH_MPI
-#include <mpi.h>
-#endif
 
 namespace ferro::cli {
 namespace {
@@ -31,6 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace an = scenarios::analysis;
 using scenarios::Scene;
+constexpr scenarios::Spelling kOption = scenarios::Spelling::option;
 
 std::string sibling(const std::string& file, const std::string& suffix) {
   const fs::path p(file);
@@ -41,7 +40,7 @@ void plot(const std::string& h5, bool no_plots) {
   if (no_plots) return;
   std::fflush(stdout);  // the report before the script's list of files
   const std::string dir = sibling(h5, "_plots");
-  if (scenarios::run_python_tool("ferroplot.py", {"auto", h5, "--out", dir, "--format", "png,svg"}) ==
+  if (run_python_tool("ferroplot.py", {"auto", h5, "--out", dir, "--format", "png,svg"}) ==
       0) {
     fmt::print("  plots     {}/\n", dir);
   } else {
@@ -49,34 +48,17 @@ void plot(const std::string& h5, bool no_plots) {
   }
 }
 
-void positive(double v, const char* option) {
-  if (!(v > 0.0) || !std::isfinite(v))
-    throw std::invalid_argument(fmt::format("{}: must be > 0, got {}", option, v));
-}
-
 // ---------------------------------------------------------------- derailment
 struct DerailArgs {
   std::string file, output;
-  double mu = 0.36, flange_angle_deg = -1.0, q0 = -1.0, window = 2.0, step = 0.5;
+  an::DerailmentRequest request;
   bool no_plots = false;
 };
 
 int do_derailment(const DerailArgs& a) {
   if (!fs::exists(a.file))
     throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.file));
-  an::DerailmentOptions o;
-  if (!(a.mu >= 0.0 && a.mu < 2.0)) throw std::invalid_argument("--mu: allowed [0, 2)");
-  o.mu = a.mu;
-  if (a.flange_angle_deg > 0.0) {
-    if (!(a.flange_angle_deg < 90.0))
-      throw std::invalid_argument("--flange-angle-deg: allowed (0, 90)");
-    o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
-  }
-  o.wheel_load_static = a.q0;
-  positive(a.window, "--window");
-  positive(a.step, "--step");
-  o.window = a.window;
-  o.step = a.step;
+  const an::DerailmentOptions o = an::derailment_options(a.request, kOption);
   const auto r = an::assess_derailment_file(a.file, o);
   fmt::print("ferrodyn derailment: {} (mu = {}, {} m sliding mean every {} m)\n", a.file, o.mu,
              o.window, o.step);
@@ -103,47 +85,18 @@ int do_derailment(const DerailArgs& a) {
 }
 
 // ---------------------------------------------------------------- settle options
-struct SettleArgs {
-  double segment = 10.0, t_max = 60.0, interval = 2e-3, zero = 1e-5, max = 0.05, rel_tol = 2e-3;
-  int periods = 5;
-  double disturbance = 0.01;
-  double k11 = 1.0, k22 = 1.0;
-};
-
-void add_settle_options(CLI::App* c, SettleArgs& s) {
+void add_settle_options(CLI::App* c, an::SettleRequest& s) {
   c->add_option("--disturbance", s.disturbance,
                 "Lateral offset added to the leading wheelset at the start [m]")->capture_default_str();
   c->add_option("--segment", s.segment, "Simulated time per convergence check [s]")->capture_default_str();
   c->add_option("--t-max", s.t_max, "Simulated time limit per speed [s]")->capture_default_str();
-  c->add_option("--output-interval", s.interval, "Sampling of the lateral states [s]")->capture_default_str();
-  c->add_option("--zero-amplitude", s.zero, "Below: oscillation decayed [m]")->capture_default_str();
-  c->add_option("--max-amplitude", s.max, "Above: diverged [m]")->capture_default_str();
+  c->add_option("--output-interval", s.output_interval, "Sampling of the lateral states [s]")->capture_default_str();
+  c->add_option("--zero-amplitude", s.zero_amplitude, "Below: oscillation decayed [m]")->capture_default_str();
+  c->add_option("--max-amplitude", s.max_amplitude, "Above: diverged [m]")->capture_default_str();
   c->add_option("--periods", s.periods, "Periods the steady amplitude is measured over")->capture_default_str();
   c->add_option("--rel-tol", s.rel_tol, "Relative amplitude change that counts as settled")->capture_default_str();
   c->add_option("--k11", s.k11, "Reduction factor on C11")->capture_default_str();
   c->add_option("--k22", s.k22, "Reduction factor on C22")->capture_default_str();
-}
-
-an::SettleOptions settle_options(const Scene& scene, const SettleArgs& s) {
-  positive(s.segment, "--segment");
-  positive(s.t_max, "--t-max");
-  positive(s.interval, "--output-interval");
-  positive(s.zero, "--zero-amplitude");
-  positive(s.max, "--max-amplitude");
-  positive(s.rel_tol, "--rel-tol");
-  if (s.periods < 1) throw std::invalid_argument("--periods: must be >= 1");
-  if (s.t_max < s.segment) throw std::invalid_argument("--t-max: must be >= --segment");
-  if (s.max <= s.zero) throw std::invalid_argument("--max-amplitude: must be > --zero-amplitude");
-  an::SettleOptions o;
-  o.solver = scene.solver;
-  o.segment = s.segment;
-  o.max_time = s.t_max;
-  o.output_interval = s.interval;
-  o.zero_amplitude = s.zero;
-  o.max_amplitude = s.max;
-  o.amplitude.periods = s.periods;
-  o.amplitude.rel_tol = s.rel_tol;
-  return o;
 }
 
 // ---------------------------------------------------------------- ramp
@@ -153,47 +106,25 @@ constexpr double kGrowthShown = 1.0;
 
 struct RampArgs {
   std::string scene, output;
-  double speed_initial = 110.0, deceleration = 1.0, speed_final = NAN, hold = 0.1,
-         threshold = 1e-4, max_amplitude = 0.05, window = 2.0, interval = 2e-3, disturbance = 0.01, k11 = 1.0, k22 = 1.0;
+  an::RampRequest request;
   bool no_plots = false;
 };
 
 int do_ramp(const RampArgs& a) {
-  const Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
-  an::RampOptions o;
-  o.speed_initial = a.speed_initial;
-  o.deceleration = a.deceleration;
-  o.speed_final = std::isnan(a.speed_final) ? 0.1 * a.speed_initial : a.speed_final;
-  positive(a.speed_initial, "--speed-initial");
-  positive(a.deceleration, "--deceleration");
-  positive(a.hold, "--hold");
-  positive(a.threshold, "--threshold");
-  positive(a.window, "--envelope-window");
-  positive(a.interval, "--output-interval");
-  if (!(o.speed_final >= 0.0 && o.speed_final < o.speed_initial))
-    throw std::invalid_argument("--speed-final: allowed [0, --speed-initial)");
-  o.hold = a.hold;
-  o.threshold = a.threshold;
-  o.max_amplitude = a.max_amplitude;
-  o.envelope_window = a.window;
-  o.output_interval = a.interval;
-  o.solver = scene.solver;
-  const auto family = an::speed_family(scene);
-  const auto probe = family(o.speed_initial);
-  const auto lateral = an::lateral_states(*probe);
-  o.observed = lateral.index.front();
-  const auto x0 = an::disturbed_state(scene, *probe, a.disturbance);
-  const auto r = an::ramp_down(family, x0, o);
+  const auto study = an::run_ramp(scenarios::load_scene(a.scene), a.request, kOption);
+  const Scene& scene = study.scene;
+  const auto& o = study.options;
+  const auto& r = study.result;
   fmt::print("ferrodyn critical-speed ramp: {} ({}), K11 = {}, K22 = {}\n", scene.name, scene.path,
-             a.k11, a.k22);
+             a.request.k11, a.request.k22);
   fmt::print("  ramp      {:.3f} -> {:.3f} m/s at -{} m/s^2, pieces of {} s, {} + {} m at start\n",
-             o.speed_initial, o.speed_final, o.deceleration, o.hold, lateral.name.front(),
-             a.disturbance);
+             o.speed_initial, o.speed_final, o.deceleration, o.hold, study.observed,
+             a.request.disturbance);
   if (!r.completed) fmt::print("  stopped   {}\n", r.message);
   if (r.decay_speed) {
     fmt::print("  decay     {} envelope below {} m for good at t = {:.3f} s: V = {:.3f} m/s = "
                "{:.2f} km/h\n",
-               lateral.name.front(), o.threshold, r.decay_time, *r.decay_speed,
+               study.observed, o.threshold, r.decay_time, *r.decay_speed,
                *r.decay_speed * 3.6);
   } else {
     fmt::print("  decay     none: the envelope {} below {} m over the whole ramp\n",
@@ -215,7 +146,7 @@ int do_ramp(const RampArgs& a) {
         "decays or settles)\n");
   }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
-  an::write_ramp(scene, r, o, lateral.name.front(), out);
+  an::write_ramp(scene, r, o, study.observed, out);
   fmt::print("  output    {}\n", out);
   plot(out, a.no_plots);
   return r.completed ? kExitOk : kExitRunFailure;
@@ -224,55 +155,22 @@ int do_ramp(const RampArgs& a) {
 // ---------------------------------------------------------------- bifurcation
 struct BranchArgs {
   std::string scene, output;
-  double speed_max = NAN, speed_min = NAN, step = 2.0, bracket = 0.1;
-  SettleArgs settle;
-  bool no_plots = false, no_hopf = false;
+  an::BranchRequest request;
+  bool no_plots = false;
 };
 
-an::BranchOptions branch_options(const Scene& scene, const BranchArgs& a) {
-  an::BranchOptions o;
-  o.speed_start = a.speed_max;
-  o.speed_stop = a.speed_min;
-  if (std::isnan(a.speed_max) || std::isnan(a.speed_min))
-    throw std::invalid_argument("--speed-max and --speed-min are required");
-  if (!(a.speed_max > a.speed_min && a.speed_min > 0.0))
-    throw std::invalid_argument("--speed-max/--speed-min: need speed-max > speed-min > 0");
-  positive(a.step, "--step");
-  positive(a.bracket, "--bracket");
-  o.speed_step = a.step;
-  o.bracket = a.bracket;
-  o.settle = settle_options(scene, a.settle);
-  return o;
-}
-
-an::KijRow run_branch(const Scene& base, const BranchArgs& a, const an::Reduction& k,
-                      bool with_hopf, std::vector<std::string>* names, bool progress) {
-  const Scene scene = an::with_reduction(base, k);
-  auto o = branch_options(scene, a);
-  const auto family = an::speed_family(scene);
-  const auto probe = family(a.speed_max);
-  const auto lateral = an::lateral_states(*probe);
-  if (names) *names = lateral.name;
-  o.settle.observed = lateral.index;
-  const auto x0 = an::disturbed_state(scene, *probe, a.settle.disturbance);
-  if (progress) {
-    o.on_point = [&](const an::BranchPoint& p) {
-      const auto& fit = p.run.fit;
-      const std::string growth =
-          fit.valid() ? fmt::format(" (sigma = {:.3g} +- {:.2g} /s, beta = {:.3g} /(s mm^2))",
-                                    fit.sigma, fit.sigma_error, fit.beta * 1e-6)
-                      : std::string();
-      fmt::print(stderr, "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm after {:.1f} s{}\n",
-                 k.k11, k.k22, p.speed, p.bisection ? " (bisection)" : "",
-                 an::to_string(p.run.outcome), p.run.amplitude.front() * 1e3, p.run.time, growth);
-    };
-  }
-  an::KijRow row;
-  row.k = k;
-  row.branch = an::follow_periodic_branch(family, x0, o);
-  if (with_hopf)
-    row.hopf_speed = scenarios::hopf_speed(scene, 0.5 * a.speed_min, 1.5 * a.speed_max, 64);
-  return row;
+// Progress of the branch of factors k, on stderr.
+std::function<void(const an::BranchPoint&)> branch_progress(const an::Reduction& k) {
+  return [k](const an::BranchPoint& p) {
+    const auto& fit = p.run.fit;
+    const std::string growth =
+        fit.valid() ? fmt::format(" (sigma = {:.3g} +- {:.2g} /s, beta = {:.3g} /(s mm^2))",
+                                  fit.sigma, fit.sigma_error, fit.beta * 1e-6)
+                    : std::string();
+    fmt::print(stderr, "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm after {:.1f} s{}\n",
+               k.k11, k.k22, p.speed, p.bisection ? " (bisection)" : "",
+               an::to_string(p.run.outcome), p.run.amplitude.front() * 1e3, p.run.time, growth);
+  };
 }
 
 void print_branch(const an::KijRow& row, const std::vector<std::string>& names) {
@@ -317,11 +215,12 @@ void print_branch(const an::KijRow& row, const std::vector<std::string>& names) 
 
 int do_branch(const BranchArgs& a) {
   const Scene scene = scenarios::load_scene(a.scene);
+  const an::SettleRequest& settle = a.request.settle;
   fmt::print("ferrodyn critical-speed bifurcation: {} ({}), K11 = {}, K22 = {}\n", scene.name,
-             scene.path, a.settle.k11, a.settle.k22);
+             scene.path, settle.k11, settle.k22);
   std::vector<std::string> names;
-  const auto row =
-      run_branch(scene, a, {a.settle.k11, a.settle.k22}, !a.no_hopf, &names, true);
+  const an::Reduction k{settle.k11, settle.k22};
+  const auto row = an::run_bifurcation(scene, a.request, k, &names, branch_progress(k), kOption);
   print_branch(row, names);
   const Scene reduced = an::with_reduction(scene, row.k);
   const std::string out =
@@ -333,22 +232,25 @@ int do_branch(const BranchArgs& a) {
 }
 
 // ---------------------------------------------------------------- eigen
+// The verb's own range, whatever the scene's analysis.eigen says.
+scenarios::RunOverrides eigen_range_defaults() {
+  scenarios::RunOverrides r;
+  r.speed_min = 1.0;
+  r.speed_max = 150.0;
+  r.points = 150;
+  return r;
+}
+
 struct EigenArgs {
-  std::string scene;
-  double speed_min = 1.0, speed_max = 150.0;
-  int points = 150;
+  std::string scene, output;
   double k11 = 1.0, k22 = 1.0;
-  std::string output;
+  scenarios::RunOverrides range = eigen_range_defaults();
   bool no_plots = false;
 };
 
 int do_eigen(const EigenArgs& a) {
   Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
-  if (!(a.speed_min > 0.0 && a.speed_max > a.speed_min) || a.points < 2)
-    throw std::invalid_argument("--speed-min/--speed-max/--points: need 0 < min < max, points >= 2");
-  scene.eigen.speed_min = a.speed_min;
-  scene.eigen.speed_max = a.speed_max;
-  scene.eigen.points = a.points;
+  scenarios::apply_overrides(scene, a.range, kOption);
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.k11, a.k22);
@@ -356,7 +258,8 @@ int do_eigen(const EigenArgs& a) {
     fmt::print("  Hopf speed (least damped mode crosses zero): {:.4f} m/s = {:.2f} km/h\n",
                *r.critical_speed, *r.critical_speed * 3.6);
   } else {
-    fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", a.speed_min, a.speed_max);
+    fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", scene.eigen.speed_min,
+               scene.eigen.speed_max);
   }
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_eig.h5") : a.output;
   scenarios::write_eigen_report(scene, r, out);
@@ -367,48 +270,25 @@ int do_eigen(const EigenArgs& a) {
 
 // ---------------------------------------------------------------- K_ij study
 struct KijArgs {
-  BranchArgs branch;
-  std::vector<double> k;
-  std::string coefficient = "both";
-  int jobs = 1;
+  std::string scene, output;
+  an::KijStudyRequest request;
+  bool no_plots = false;
 };
 
 int do_kij(const KijArgs& a) {
-  const Scene scene = scenarios::load_scene(a.branch.scene);
-  if (a.k.empty()) throw std::invalid_argument("--k: give at least one reduction factor");
-  if (a.coefficient != "both" && a.coefficient != "k11" && a.coefficient != "k22")
-    throw std::invalid_argument(
-        fmt::format("--coefficient: unknown '{}'; allowed: both, k11, k22", a.coefficient));
-  std::vector<an::Reduction> ks;
-  for (double k : a.k) {
-    an::Reduction r{a.branch.settle.k11, a.branch.settle.k22};
-    if (a.coefficient == "both") r = an::Reduction::uniform(k);
-    if (a.coefficient == "k11") r.k11 = k;
-    if (a.coefficient == "k22") r.k22 = k;
-    ks.push_back(r);
-  }
-  (void)branch_options(scene, a.branch);  // validate before starting
-  std::vector<an::KijRow> rows(ks.size());
-  std::vector<std::string> names;
-  std::mutex m;
+  const Scene scene = scenarios::load_scene(a.scene);
   InterruptGuard guard;
-  std::size_t done = 0;
-  an::parallel_for(
-      ks.size(),
-      [&](std::size_t i) {
-        std::vector<std::string> n;
-        auto row = run_branch(scene, a.branch, ks[i], !a.branch.no_hopf, &n, false);
-        std::lock_guard lock(m);
-        rows[i] = std::move(row);
-        names = n;
-        ++done;
-        fmt::print(stderr, "progress: K11 = {}, K22 = {} done ({}/{})\n", ks[i].k11, ks[i].k22,
-                   done, ks.size());
+  const auto study = an::run_kij_study(
+      scene, a.request, [] { return InterruptGuard::signal_received() != 0; },
+      [](const an::KijRow& row, std::size_t done, std::size_t total) {
+        fmt::print(stderr, "progress: K11 = {}, K22 = {} done ({}/{})\n", row.k.k11, row.k.k22,
+                   done, total);
       },
-      a.jobs, [] { return InterruptGuard::signal_received() != 0; });
+      kOption);
   if (InterruptGuard::signal_received() != 0) return 128 + InterruptGuard::signal_received();
+  const auto& rows = study.rows;
   fmt::print("ferrodyn kij-study: {} ({}), reduction on {}\n", scene.name, scene.path,
-             a.coefficient);
+             a.request.coefficient);
   fmt::print("  {:>5} {:>5} | {:>10} {:>10} {:>19} {:>10} {:>8} | {:>6} {:>10} {:>8}\n", "K11",
              "K22", "Vc [m/s]", "Vc [km/h]", "fold bracket [m/s]", "Hopf[km/h]", "Vc/Vc1",
              "thesis", "Vc [km/h]", "Vc/Vc1");
@@ -417,7 +297,7 @@ int do_kij(const KijArgs& a) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& b = rows[i].branch;
     const double vc = b.fold_found ? *b.lowest_sustained : NAN;
-    const double k = a.k[i];
+    const double k = a.request.k[i];
     std::string th = "      -          -        -";
     for (const auto& t : thesis) {
       if (std::abs(t.k - k) < 1e-9)
@@ -428,253 +308,103 @@ int do_kij(const KijArgs& a) {
                rows[i].k.k11, rows[i].k.k22, vc, vc * 3.6, b.bracket_low, b.bracket_high,
                rows[i].hopf_speed.value_or(NAN) * 3.6, vc / vc1, th);
   }
-  if (std::abs(a.k.front() - 1.0) > 1e-12)
-    fmt::print("  (ratios are to the first K in the list, {})\n", a.k.front());
-  const std::string out =
-      a.branch.output.empty() ? sibling(scene.output.file, "_kij.h5") : a.branch.output;
+  if (std::abs(a.request.k.front() - 1.0) > 1e-12)
+    fmt::print("  (ratios are to the first K in the list, {})\n", a.request.k.front());
+  const std::string out = a.output.empty() ? sibling(scene.output.file, "_kij.h5") : a.output;
   an::write_kij_study(scene, rows, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.branch.no_plots);
-  return kExitOk;
-}
-
-// ---------------------------------------------------------------- sweep
-struct SweepArgs {
-  std::string scene, output;
-  double speed_min = NAN, speed_max = NAN;
-  int points = 10;
-  std::vector<double> k = {1.0};
-  std::string coefficient = "both";
-  SettleArgs settle;
-  int jobs = 1;
-  int max_new_points = -1;
-  bool restart = false, quiet = false, no_plots = false;
-};
-
-struct MpiContext {
-  int rank = 0, size = 1;
-  bool active = false;
-};
-
-MpiContext mpi_start() {
-  MpiContext c;
-#ifdef FERRO_WITH_MPI
-  // Only under a launcher (mpirun sets these): a plain run stays a plain process.
-  if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr) {
-    int provided = 0;
-    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-    MPI_Comm_rank(MPI_COMM_WORLD, &c.rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &c.size);
-    c.active = true;
-  }
-#endif
-  return c;
-}
-
-// Rank 0 receives every other rank's serialised results (one string each).
-std::vector<std::string> mpi_gather(const MpiContext& c, const std::string& mine) {
-  std::vector<std::string> all = {mine};
-#ifdef FERRO_WITH_MPI
-  if (!c.active) return all;
-  int len = static_cast<int>(mine.size());
-  std::vector<int> lens(static_cast<std::size_t>(c.size));
-  MPI_Gather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::vector<int> displ(static_cast<std::size_t>(c.size), 0);
-  int total = 0;
-  for (int i = 0; i < c.size; ++i) {
-    displ[static_cast<std::size_t>(i)] = total;
-    total += lens[static_cast<std::size_t>(i)];
-  }
-  std::string buf(static_cast<std::size_t>(c.rank == 0 ? total : 0), '\0');
-  MPI_Gatherv(mine.data(), len, MPI_CHAR, buf.data(), lens.data(), displ.data(), MPI_CHAR, 0,
-              MPI_COMM_WORLD);
-  if (c.rank == 0) {
-    all.clear();
-    for (int i = 0; i < c.size; ++i)
-      all.push_back(buf.substr(static_cast<std::size_t>(displ[static_cast<std::size_t>(i)]),
-                               static_cast<std::size_t>(lens[static_cast<std::size_t>(i)])));
-  }
-#else
-  (void)c;
-#endif
-  return all;
-}
-
-void mpi_barrier(const MpiContext& c) {
-#ifdef FERRO_WITH_MPI
-  if (c.active) MPI_Barrier(MPI_COMM_WORLD);
-#else
-  (void)c;
-#endif
-}
-
-void mpi_finish(const MpiContext& c) {
-#ifdef FERRO_WITH_MPI
-  if (c.active) MPI_Finalize();
-#else
-  (void)c;
-#endif
-}
-
-int do_sweep_ranked(const SweepArgs& a, const MpiContext& mpi) {
-  const Scene scene = scenarios::load_scene(a.scene);
-  if (std::isnan(a.speed_min) || std::isnan(a.speed_max) ||
-      !(a.speed_max >= a.speed_min && a.speed_min > 0.0))
-    throw std::invalid_argument("--speed-min/--speed-max: required, 0 < min <= max");
-  if (a.points < 1 || (a.points == 1) != (a.speed_min == a.speed_max))
-    throw std::invalid_argument("--points: >= 1 (1 only when min = max)");
-  if (a.jobs < 1) throw std::invalid_argument("--jobs: must be >= 1");
-  if (a.coefficient != "both" && a.coefficient != "k11" && a.coefficient != "k22")
-    throw std::invalid_argument(
-        fmt::format("--coefficient: unknown '{}'; allowed: both, k11, k22", a.coefficient));
-  const auto settle = settle_options(scene, a.settle);
-  std::vector<an::SweepPoint> points;
-  for (double k : a.k) {
-    an::Reduction r{a.settle.k11, a.settle.k22};
-    if (a.coefficient == "both") r = an::Reduction::uniform(k);
-    if (a.coefficient == "k11") r.k11 = k;
-    if (a.coefficient == "k22") r.k22 = k;
-    (void)an::with_reduction(scene, r);  // validates the factors
-    for (int i = 0; i < a.points; ++i) {
-      const double v = a.points == 1 ? a.speed_min
-                                     : a.speed_min + (a.speed_max - a.speed_min) * i /
-                                                         static_cast<double>(a.points - 1);
-      points.push_back({v, r});
-    }
-  }
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_sweep.h5") : a.output;
-  const std::string journal_dir = out + ".points";
-  // Everything that changes the numbers identifies the sweep.
-  std::string signature = scene.text;
-  for (const auto& p : points) signature += fmt::format(" {:.17g}/{:.17g}/{:.17g}", p.speed, p.k.k11, p.k.k22);
-  signature += fmt::format(" {} {} {} {} {} {} {} {}", a.settle.disturbance, settle.segment,
-                           settle.max_time, settle.output_interval, settle.zero_amplitude,
-                           settle.max_amplitude, settle.amplitude.periods, settle.amplitude.rel_tol);
-  if (mpi.rank == 0 && a.restart && fs::exists(journal_dir)) fs::remove_all(journal_dir);
-  mpi_barrier(mpi);
-  std::unique_ptr<an::SweepJournal> journal;
-  if (mpi.rank == 0) journal = std::make_unique<an::SweepJournal>(journal_dir, signature);
-  mpi_barrier(mpi);
-  if (mpi.rank != 0) journal = std::make_unique<an::SweepJournal>(journal_dir, signature);
-  const auto finished = journal->load();
-  std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (finished.count(i) == 0 && static_cast<int>(i % static_cast<std::size_t>(mpi.size)) == mpi.rank)
-      todo.push_back(i);
-  }
-  // Fastest first: above the critical speed a run hunts into flange contact and costs several
-  // times a decaying one, so starting those first keeps the threads busy to the end instead of
-  // leaving the dearest points for last (results are stored by index, whatever the order).
-  std::stable_sort(todo.begin(), todo.end(), [&points](std::size_t l, std::size_t r) {
-    return points[l].speed > points[r].speed;
-  });
-  if (a.max_new_points >= 0 && todo.size() > static_cast<std::size_t>(a.max_new_points))
-    todo.resize(static_cast<std::size_t>(a.max_new_points));
-  if (mpi.rank == 0) {
-    fmt::print(stderr, "ferrodyn sweep: {} points ({} already finished in {}), {} rank(s) x {} "
-               "thread(s)\n",
-               points.size(), finished.size(), journal_dir, mpi.size, a.jobs);
-  }
-  const auto wall0 = std::chrono::steady_clock::now();
-  std::size_t done = 0;
-  an::PoolOptions pool;
-  pool.jobs = a.jobs;
-  InterruptGuard guard;
-  pool.should_stop = [] { return InterruptGuard::signal_received() != 0; };
-  pool.on_done = [&](const an::SweepPointResult& r) {
-    journal->record(r);
-    ++done;
-    if (!a.quiet) {
-      const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-      fmt::print(stderr, "[rank {} {:>4}/{:<4} {:6.1f} s] V = {:8.4f} m/s K = ({:.3f}, {:.3f}): {} "
-                 "{:.4f} mm\n",
-                 mpi.rank, done, todo.size(), el, r.point.speed, r.point.k.k11, r.point.k.k22,
-                 an::to_string(r.outcome), r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3);
-    }
-  };
-  const auto resources = scenarios::build_resources(scene);
-  const auto mine = an::run_pool(
-      todo,
-      [&](std::size_t i) {
-        return an::run_sweep_point(scene, resources, i, points[i], a.settle.disturbance, settle);
-      },
-      pool);
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::string text;
-  for (const auto& r : mine) text += an::serialize(r) + "\n";
-  const int sig = InterruptGuard::signal_received();
-  const auto gathered = mpi_gather(mpi, text);
-  if (mpi.rank != 0) return sig != 0 ? 128 + sig : kExitOk;
-  // Rank 0: merge the journal (earlier runs) with what every rank computed now.
-  std::map<std::size_t, an::SweepPointResult> all = finished;
-  for (const auto& chunk : gathered) {
-    std::size_t pos = 0;
-    while (pos < chunk.size()) {
-      const auto end = chunk.find('\n', pos);
-      const auto line = chunk.substr(pos, end - pos);
-      if (!line.empty()) {
-        auto r = an::deserialize(line, "sweep gather");
-        all[r.index] = r;
-      }
-      pos = end == std::string::npos ? chunk.size() : end + 1;
-    }
-  }
-  for (const auto& [i, r] : journal->load()) all.emplace(i, r);  // other ranks' records
-  if (sig != 0 || all.size() < points.size()) {
-    fmt::print(stderr,
-               "ferrodyn sweep: stopped with {} of {} points finished (recorded in {}); run the "
-               "same command again to resume\n",
-               all.size(), points.size(), journal_dir);
-    return sig != 0 ? 128 + sig : kExitRunFailure;
-  }
-  std::vector<an::SweepPointResult> results;
-  double cpu = 0.0;
-  for (auto& [i, r] : all) {
-    cpu += r.cpu_seconds;
-    results.push_back(r);
-  }
-  const auto probe = scenarios::build_system(scene, points.front().speed);
-  const auto names = an::lateral_states(*probe).name;
-  an::write_sweep(scene, names, results, out);
-  fs::remove_all(journal_dir);  // complete: the HDF5 file holds every point
-  fmt::print("ferrodyn sweep: {} ({}), {} points, {} rank(s) x {} thread(s)\n", scene.name,
-             scene.path, points.size(), mpi.size, a.jobs);
-  fmt::print("  {:>10} {:>6} {:>6} {:>9} {:>14} {:>9}\n", "V [m/s]", "K11", "K22", "outcome",
-             names.front() + " [mm]", "cpu [s]");
-  for (const auto& r : results) {
-    fmt::print("  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>14.5f} {:>9.3f}\n", r.point.speed,
-               r.point.k.k11, r.point.k.k22, an::to_string(r.outcome),
-               r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3, r.cpu_seconds);
-  }
-  fmt::print("  wall      {:.2f} s this invocation; CPU {:.2f} s over all points\n", wall, cpu);
   fmt::print("  output    {}\n", out);
   plot(out, a.no_plots);
   return kExitOk;
 }
 
+// ---------------------------------------------------------------- sweep
+struct SweepArgs {
+  std::string scene;
+  an::SweepRequest request;
+  bool quiet = false, no_plots = false;
+};
+
+// mpirun (OpenMPI) and PMI launchers set these: a plain run stays a plain process.
+bool launched_by_mpi() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr;
+}
+
+int report_sweep(const Scene& scene, const an::SweepRequest& a, const an::SweepOutcome& r,
+                 int ranks, bool no_plots) {
+  fmt::print("ferrodyn sweep: {} ({}), {} points, {} rank(s) x {} thread(s)\n", scene.name,
+             scene.path, r.total, ranks, a.jobs);
+  fmt::print("  {:>10} {:>6} {:>6} {:>9} {:>14} {:>9}\n", "V [m/s]", "K11", "K22", "outcome",
+             r.wheelset_names.front() + " [mm]", "cpu [s]");
+  for (const auto& p : r.results) {
+    fmt::print("  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>14.5f} {:>9.3f}\n", p.point.speed,
+               p.point.k.k11, p.point.k.k22, an::to_string(p.outcome),
+               p.amplitude.empty() ? NAN : p.amplitude.front() * 1e3, p.cpu_seconds);
+  }
+  fmt::print("  wall      {:.2f} s this invocation; CPU {:.2f} s over all points\n",
+             r.wall_seconds, r.cpu_seconds);
+  fmt::print("  output    {}\n", a.output);
+  plot(a.output, no_plots);
+  return kExitOk;
+}
+
+int do_sweep_ranked(const SweepArgs& args, an::SweepExecutor& ex) {
+  const Scene scene = scenarios::load_scene(args.scene);
+  an::SweepRequest a = args.request;
+  if (a.output.empty()) a.output = sibling(scene.output.file, "_sweep.h5");
+  a.journal = a.output + ".points";
+  InterruptGuard guard;
+  an::SweepCallbacks cb;
+  cb.should_stop = [] { return InterruptGuard::signal_received() != 0; };
+  std::size_t todo = 0;
+  cb.on_start = [&](std::size_t total, std::size_t finished, std::size_t mine) {
+    todo = mine;
+    if (ex.rank() != 0) return;
+    fmt::print(stderr, "ferrodyn sweep: {} points ({} already finished in {}), {} rank(s) x {} "
+               "thread(s)\n",
+               total, finished, a.journal, ex.size(), a.jobs);
+  };
+  const auto wall0 = std::chrono::steady_clock::now();
+  if (!args.quiet) {
+    cb.on_done = [&](const an::SweepPointResult& r, std::size_t done) {
+      const double el =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      fmt::print(stderr, "[rank {} {:>4}/{:<4} {:6.1f} s] V = {:8.4f} m/s K = ({:.3f}, {:.3f}): {} "
+                 "{:.4f} mm\n",
+                 ex.rank(), done, todo, el, r.point.speed, r.point.k.k11, r.point.k.k22,
+                 an::to_string(r.outcome), r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3);
+    };
+  }
+  const auto r = an::run_sweep(scene, a, ex, cb, kOption);
+  const int sig = InterruptGuard::signal_received();
+  if (!r.root) return sig != 0 ? 128 + sig : kExitOk;
+  if (!r.complete) {
+    fmt::print(stderr,
+               "ferrodyn sweep: stopped with {} of {} points finished (recorded in {}); run the "
+               "same command again to resume\n",
+               r.finished, r.total, a.journal);
+    return sig != 0 ? 128 + sig : kExitRunFailure;
+  }
+  return report_sweep(scene, a, r, ex.size(), args.no_plots);
+}
+
 int do_sweep(const SweepArgs& a) {
-  const MpiContext mpi = mpi_start();
-  int rc = kExitRunFailure;
+  const auto ex = an::make_sweep_executor(launched_by_mpi());
   try {
-    rc = do_sweep_ranked(a, mpi);
-  } catch (...) {
-#ifdef FERRO_WITH_MPI
-    if (mpi.active && mpi.size > 1) {
+    return do_sweep_ranked(a, *ex);
+  } catch (const std::exception& e) {
+    if (ex->size() > 1) {
       // Another rank may wait in a collective: take the job down with this rank's error.
-      try {
-        throw;
-      } catch (const std::exception& e) {
-        fmt::print(stderr, "ferrodyn: rank {}: {}\n", mpi.rank, e.what());
-      }
-      MPI_Abort(MPI_COMM_WORLD, kExitRunFailure);
+      fmt::print(stderr, "ferrodyn: rank {}: {}\n", ex->rank(), e.what());
+      ex->abort(kExitRunFailure);
     }
-#endif
-    mpi_finish(mpi);
     throw;
   }
-  mpi_finish(mpi);
-  return rc;
+}
+
+// --no-hopf clears `hopf`.
+void add_no_hopf_flag(CLI::App* c, bool& hopf) {
+  c->add_flag_function(
+      "--no-hopf", [&hopf](std::int64_t) { hopf = false; }, "Skip the eigenvalue (Hopf) speed");
 }
 
 void add_k_options(CLI::App* c, std::vector<double>& k, std::string& coefficient) {
@@ -689,12 +419,12 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   auto* der = app.add_subcommand(
       "derailment", "Derailment assessment of a run: Y/Q (2 m mean), Nadal, sum Y, dQ/Q0, plot");
   der->add_option("run", d->file, "HDF5 output of `ferrodyn run`")->required();
-  der->add_option("--mu", d->mu, "Friction coefficient in Nadal's formula")->capture_default_str();
-  der->add_option("--flange-angle-deg", d->flange_angle_deg,
+  der->add_option("--mu", d->request.mu, "Friction coefficient in Nadal's formula")->capture_default_str();
+  der->add_option("--flange-angle-deg", d->request.flange_angle_deg,
                   "Flange angle [deg] (default: largest contact angle of each wheel)");
-  der->add_option("--q0", d->q0, "Static wheel load Q0 [N] (default: first sample)");
-  der->add_option("--window", d->window, "Sliding-mean window [m]")->capture_default_str();
-  der->add_option("--step", d->step, "Sliding-mean sampling step [m]")->capture_default_str();
+  der->add_option("--q0", d->request.q0, "Static wheel load Q0 [N] (default: first sample)");
+  der->add_option("--window", d->request.window, "Sliding-mean window [m]")->capture_default_str();
+  der->add_option("--step", d->request.step, "Sliding-mean sampling step [m]")->capture_default_str();
   der->add_option("-o,--output", d->output, "Report file (default: <run>_derailment.h5)");
   der->add_flag("--no-plots", d->no_plots, "Do not draw plots");
   der->callback([&handler, d] { handler = [d] { return do_derailment(*d); }; });
@@ -705,19 +435,19 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   auto r = std::make_shared<RampArgs>();
   auto* ramp = cs->add_subcommand("ramp", "Decelerating run after a lateral disturbance");
   ramp->add_option("scene", r->scene, "Scene YAML file")->required();
-  ramp->add_option("--speed-initial", r->speed_initial, "Start speed [m/s]")->capture_default_str();
-  ramp->add_option("--deceleration", r->deceleration, "[m/s^2]")->capture_default_str();
-  ramp->add_option("--speed-final", r->speed_final, "End speed [m/s] (default: 0.1 x start)");
-  ramp->add_option("--hold", r->hold, "Constant-speed piece duration [s]")->capture_default_str();
-  ramp->add_option("--threshold", r->threshold, "Envelope below which the oscillation died [m]")
+  ramp->add_option("--speed-initial", r->request.speed_initial, "Start speed [m/s]")->capture_default_str();
+  ramp->add_option("--deceleration", r->request.deceleration, "[m/s^2]")->capture_default_str();
+  ramp->add_option("--speed-final", r->request.speed_final, "End speed [m/s] (default: 0.1 x start)");
+  ramp->add_option("--hold", r->request.hold, "Constant-speed piece duration [s]")->capture_default_str();
+  ramp->add_option("--threshold", r->request.threshold, "Envelope below which the oscillation died [m]")
       ->capture_default_str();
-  ramp->add_option("--max-amplitude", r->max_amplitude, "Stop as diverged above this [m]")
+  ramp->add_option("--max-amplitude", r->request.max_amplitude, "Stop as diverged above this [m]")
       ->capture_default_str();
-  ramp->add_option("--envelope-window", r->window, "Envelope trailing window [s]")->capture_default_str();
-  ramp->add_option("--output-interval", r->interval, "Sampling [s]")->capture_default_str();
-  ramp->add_option("--disturbance", r->disturbance, "Initial lateral offset [m]")->capture_default_str();
-  ramp->add_option("--k11", r->k11, "Reduction factor on C11")->capture_default_str();
-  ramp->add_option("--k22", r->k22, "Reduction factor on C22")->capture_default_str();
+  ramp->add_option("--envelope-window", r->request.envelope_window, "Envelope trailing window [s]")->capture_default_str();
+  ramp->add_option("--output-interval", r->request.output_interval, "Sampling [s]")->capture_default_str();
+  ramp->add_option("--disturbance", r->request.disturbance, "Initial lateral offset [m]")->capture_default_str();
+  ramp->add_option("--k11", r->request.k11, "Reduction factor on C11")->capture_default_str();
+  ramp->add_option("--k22", r->request.k22, "Reduction factor on C22")->capture_default_str();
   ramp->add_option("-o,--output", r->output, "HDF5 output (default: <output.file stem>_ramp.h5)");
   ramp->add_flag("--no-plots", r->no_plots, "Do not draw plots");
   ramp->callback([&handler, r] { handler = [r] { return do_ramp(*r); }; });
@@ -726,23 +456,23 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   auto* bif = cs->add_subcommand(
       "bifurcation", "Limit-cycle amplitudes followed down the periodic branch to the fold");
   bif->add_option("scene", b->scene, "Scene YAML file")->required();
-  bif->add_option("--speed-max", b->speed_max, "First (highest) speed [m/s]")->required();
-  bif->add_option("--speed-min", b->speed_min, "Lowest speed followed [m/s]")->required();
-  bif->add_option("--step", b->step, "Downward speed step [m/s]")->capture_default_str();
-  bif->add_option("--bracket", b->bracket, "Fold bracket width [m/s]")->capture_default_str();
-  add_settle_options(bif, b->settle);
+  bif->add_option("--speed-max", b->request.speed_max, "First (highest) speed [m/s]")->required();
+  bif->add_option("--speed-min", b->request.speed_min, "Lowest speed followed [m/s]")->required();
+  bif->add_option("--step", b->request.step, "Downward speed step [m/s]")->capture_default_str();
+  bif->add_option("--bracket", b->request.bracket, "Fold bracket width [m/s]")->capture_default_str();
+  add_settle_options(bif, b->request.settle);
   bif->add_option("-o,--output", b->output,
                   "HDF5 output (default: <output.file stem>_bifurcation.h5)");
-  bif->add_flag("--no-hopf", b->no_hopf, "Skip the eigenvalue (Hopf) speed");
+  add_no_hopf_flag(bif, b->request.hopf);
   bif->add_flag("--no-plots", b->no_plots, "Do not draw plots");
   bif->callback([&handler, b] { handler = [b] { return do_branch(*b); }; });
 
   auto e = std::make_shared<EigenArgs>();
   auto* eig = cs->add_subcommand("eigen", "Linear eigenvalues against speed: the Hopf speed");
   eig->add_option("scene", e->scene, "Scene YAML file")->required();
-  eig->add_option("--speed-min", e->speed_min, "[m/s]")->capture_default_str();
-  eig->add_option("--speed-max", e->speed_max, "[m/s]")->capture_default_str();
-  eig->add_option("--points", e->points, "Speeds in the sweep")->capture_default_str();
+  eig->add_option("--speed-min", e->range.speed_min, "[m/s]")->capture_default_str();
+  eig->add_option("--speed-max", e->range.speed_max, "[m/s]")->capture_default_str();
+  eig->add_option("--points", e->range.points, "Speeds in the sweep")->capture_default_str();
   eig->add_option("--k11", e->k11, "Reduction factor on C11")->capture_default_str();
   eig->add_option("--k22", e->k22, "Reduction factor on C22")->capture_default_str();
   eig->add_option("-o,--output", e->output, "HDF5 output (default: <output.file stem>_eig.h5)");
@@ -750,20 +480,19 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   eig->callback([&handler, e] { handler = [e] { return do_eigen(*e); }; });
 
   auto k = std::make_shared<KijArgs>();
-  k->k = {1.0, 0.9, 0.8, 0.7, 0.6, 0.5};
   auto* kij = app.add_subcommand(
       "kij-study", "Nonlinear critical speed against Kalker reduction factors (Table 4.1 layout)");
-  kij->add_option("scene", k->branch.scene, "Scene YAML file")->required();
-  add_k_options(kij, k->k, k->coefficient);
-  kij->add_option("--speed-max", k->branch.speed_max, "First (highest) speed [m/s]")->required();
-  kij->add_option("--speed-min", k->branch.speed_min, "Lowest speed followed [m/s]")->required();
-  kij->add_option("--step", k->branch.step, "Downward speed step [m/s]")->capture_default_str();
-  kij->add_option("--bracket", k->branch.bracket, "Fold bracket width [m/s]")->capture_default_str();
-  add_settle_options(kij, k->branch.settle);
-  kij->add_option("-j,--jobs", k->jobs, "Worker threads (one K per thread)")->capture_default_str();
-  kij->add_option("-o,--output", k->branch.output, "HDF5 output (default: <stem>_kij.h5)");
-  kij->add_flag("--no-hopf", k->branch.no_hopf, "Skip the eigenvalue (Hopf) speeds");
-  kij->add_flag("--no-plots", k->branch.no_plots, "Do not draw plots");
+  kij->add_option("scene", k->scene, "Scene YAML file")->required();
+  add_k_options(kij, k->request.k, k->request.coefficient);
+  kij->add_option("--speed-max", k->request.branch.speed_max, "First (highest) speed [m/s]")->required();
+  kij->add_option("--speed-min", k->request.branch.speed_min, "Lowest speed followed [m/s]")->required();
+  kij->add_option("--step", k->request.branch.step, "Downward speed step [m/s]")->capture_default_str();
+  kij->add_option("--bracket", k->request.branch.bracket, "Fold bracket width [m/s]")->capture_default_str();
+  add_settle_options(kij, k->request.branch.settle);
+  kij->add_option("-j,--jobs", k->request.jobs, "Worker threads (one K per thread)")->capture_default_str();
+  kij->add_option("-o,--output", k->output, "HDF5 output (default: <stem>_kij.h5)");
+  add_no_hopf_flag(kij, k->request.branch.hopf);
+  kij->add_flag("--no-plots", k->no_plots, "Do not draw plots");
   kij->callback([&handler, k] { handler = [k] { return do_kij(*k); }; });
 
   auto s = std::make_shared<SweepArgs>();
@@ -771,19 +500,19 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
       "sweep", "Independent constant-speed runs over speeds x reduction factors, on threads and "
                "MPI ranks, resumable");
   sw->add_option("scene", s->scene, "Scene YAML file")->required();
-  sw->add_option("--speed-min", s->speed_min, "[m/s]")->required();
-  sw->add_option("--speed-max", s->speed_max, "[m/s]")->required();
-  sw->add_option("--points", s->points, "Speeds between min and max")->capture_default_str();
-  add_k_options(sw, s->k, s->coefficient);
-  add_settle_options(sw, s->settle);
-  sw->add_option("-j,--jobs", s->jobs, "Worker threads per process")->capture_default_str();
-  sw->add_option("-o,--output", s->output,
+  sw->add_option("--speed-min", s->request.speed_min, "[m/s]")->required();
+  sw->add_option("--speed-max", s->request.speed_max, "[m/s]")->required();
+  sw->add_option("--points", s->request.points, "Speeds between min and max")->capture_default_str();
+  add_k_options(sw, s->request.k, s->request.coefficient);
+  add_settle_options(sw, s->request.settle);
+  sw->add_option("-j,--jobs", s->request.jobs, "Worker threads per process")->capture_default_str();
+  sw->add_option("-o,--output", s->request.output,
                  "HDF5 output (default: <output.file stem>_sweep.h5); finished points are kept "
                  "in <output>.points/ until the sweep completes");
-  sw->add_option("--max-new-points", s->max_new_points,
+  sw->add_option("--max-new-points", s->request.max_new_points,
                  "Compute at most this many new points per process, then stop (resumable; for "
                  "batch-queue time limits)");
-  sw->add_flag("--restart", s->restart, "Forget finished points and start over");
+  sw->add_flag("--restart", s->request.restart, "Forget finished points and start over");
   sw->add_flag("-q,--quiet", s->quiet, "No progress display");
   sw->add_flag("--no-plots", s->no_plots, "Do not draw plots");
   sw->callback([&handler, s] { handler = [s] { return do_sweep(*s); }; });

@@ -14,7 +14,8 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
-#include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/overrides.hpp"
+#include "plotting.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/scenarios/work_precision.hpp"
 
@@ -59,45 +60,23 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       }
       const scenarios::ContactBenchResult r = scenarios::run_contact_bench(*opt);
       const int n = r.reference_elements;
-      // Grid study: pure spin (phi* = 1) and a transition creepage (0.8 at 30 deg) per a/b, at
-      // N/2, N, 2N; observed order p = log2(|F_N/2 - F_N| / |F_N - F_2N|).
-      {
-        std::vector<scenarios::ContactBenchCase> study;
-        std::vector<std::size_t> index;
-        for (std::size_t k = 0; k < r.cases.size(); ++k) {
-          const auto& c = r.cases[k];
-          const bool spin = c.kind == "spin" && c.spin == 1.0;
-          const bool creep = c.spin == 0.0 && c.kind == "x+y" && c.xi_y > 0.0 &&
-                             std::abs(std::hypot(c.xi_x, c.xi_y) - 0.8) < 1e-9 && c.xi_x > c.xi_y;
-          if (spin || creep) {
-            study.push_back(c);
-            index.push_back(k);
-          }
-        }
-        if (!study.empty() && n >= 16) {
-          const auto half = scenarios::contact_bench_reference(study, n / 2, opt->threads);
-          fmt::print("Reference grid study (MIM over the patch; F in mu F_n):\n");
-          fmt::print("| a/b | case | F_y ({0}) | F_y ({1}) | F_y ({2}) | extrapolated | order |\n"
-                     "|---|---|---|---|---|---|---|\n",
-                     n / 2, n, 2 * n);
-          for (std::size_t j = 0; j < study.size(); ++j) {
-            const auto& ref = r.reference[index[j]];
-            const double d1 = std::hypot(half[j].fx_n - ref.fx_n, half[j].fy_n - ref.fy_n);
-            const double d2 = std::hypot(ref.fx_n - ref.fx_2n, ref.fy_n - ref.fy_2n);
-            fmt::print("| {} | {} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {:.2f} |\n",
-                       study[j].ratio, study[j].kind == "spin" ? "spin 1" : "creep 0.8 @ 30 deg",
-                       half[j].fy_n, ref.fy_n, ref.fy_2n, ref.fy,
-                       d2 > 0.0 ? std::log2(d1 / d2) : 0.0);
-          }
+      const auto study = scenarios::contact_bench_grid_study(r, opt->threads);
+      if (!study.empty()) {
+        fmt::print("Reference grid study (MIM over the patch; F in mu F_n):\n");
+        fmt::print("| a/b | case | F_y ({0}) | F_y ({1}) | F_y ({2}) | extrapolated | order |\n"
+                   "|---|---|---|---|---|---|---|\n",
+                   n / 2, n, 2 * n);
+        for (const auto& g : study) {
+          fmt::print("| {} | {} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {:.2f} |\n", g.c.ratio,
+                     g.c.kind == "spin" ? "spin 1" : "creep 0.8 @ 30 deg", g.fy_half, g.fy_n,
+                     g.fy_2n, g.fy_extrapolated, g.order);
         }
       }
-      double corr = 0.0;
-      for (const auto& ref : r.reference) corr += std::hypot(ref.fx - ref.fx_2n, ref.fy - ref.fy_2n);
       fmt::print("{} Hertzian cases; reference MIM {} / {} over the patch{}, mean Richardson "
                  "correction {:.5f} mu F_n; error = |F_t - F_t,ref| / (mu F_n); CPU time per "
                  "evaluation\n",
                  r.cases.size(), n, 2 * n, r.reference_from_file ? " (from file)" : "",
-                 corr / static_cast<double>(r.reference.size()));
+                 scenarios::contact_bench_mean_correction(r));
       fmt::print("| model | us / eval | mean | 95th pct | max | mean no spin | mean spin | M_z mean "
                  "| max abs F |\n|---|---|---|---|---|---|---|---|---|\n");
       for (const auto& row : r.rows) {
@@ -112,10 +91,10 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       fmt::print("wrote {}\n", csv);
       if (!*no_png) {
         const std::string png = (std::filesystem::path(*out) / "bench_contact.png").string();
-        if (scenarios::run_python_tool("bench_contact_plot.py", {csv, png}) != 0) {
+        if (run_python_tool("bench_contact_plot.py", {csv, png}) != 0) {
           throw std::runtime_error(fmt::format(
               "bench_contact_plot.py failed (python {} with matplotlib needed; --no-plots skips)",
-              scenarios::python_program()));
+              python_program()));
         }
         fmt::print("wrote {}\n", png);
       }
@@ -125,8 +104,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
 
   struct WpArgs {
     std::string scene, output;
-    double t_end = NAN, speed = NAN;
-    std::string tangential;
+    scenarios::RunOverrides overrides;
     scenarios::WorkPrecisionOptions options;
   };
   auto wp = std::make_shared<WpArgs>();
@@ -137,9 +115,10 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       "of the integration, steps; names the cheapest setting within --target-error");
   work->add_option("scene", wp->scene, "Scene YAML file")->required();
   add_output_option(work, wp->output, "CSV file of the table (default: none)");
-  work->add_option("--t-end", wp->t_end, "Override simulation.t_end [s]");
-  work->add_option("--speed", wp->speed, "Override simulation.speed [m/s]");
-  work->add_option("--tangential", wp->tangential, "Override the tangential contact model");
+  work->add_option("--t-end", wp->overrides.t_end, "Override simulation.t_end [s]");
+  work->add_option("--speed", wp->overrides.speed, "Override simulation.speed [m/s]");
+  work->add_option("--tangential", wp->overrides.tangential,
+                   "Override the tangential contact model");
   work->add_option("--integrators", wp->options.integrators,
                    "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
                    "odeint_rosenbrock4 arkode_erk@5e-4 odeint_bs3@1e-3")
@@ -171,7 +150,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
   work->callback([&handler, wp] {
     handler = [wp] {
       scenarios::Scene scene = scenarios::load_scene(wp->scene);
-      apply_run_overrides(scene, wp->t_end, wp->speed, wp->tangential);
+      scenarios::apply_overrides(scene, wp->overrides, scenarios::Spelling::option);
       if (wp->options.settle > 0.0) {
         const std::string problem = scenarios::track_extent_problem(
             scene, wp->options.settle + scene.simulation.t_end);

@@ -15,18 +15,9 @@ class App;
 class Option;
 }
 
-namespace ferro::scenarios {
-struct Scene;
-}
-
 namespace ferro::cli {
 
 using VerbHandler = std::function<int()>;
-
-/// The run-time overrides of a scene (--t-end, --speed, --tangential; NaN / empty: keep the
-/// scene's value), validated with option-named messages.
-void apply_run_overrides(scenarios::Scene& scene, double t_end, double speed,
-                         const std::string& tangential);
 
 /// Exit codes of the ferrodyn program.
 inline constexpr int kExitOk = 0;

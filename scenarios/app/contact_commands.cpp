@@ -25,6 +25,7 @@
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
+#include "plotting.hpp"
 
 namespace ferro::cli {
 namespace {
@@ -175,7 +176,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       if (!*no_png) {
         const std::string png = output_path(*curve_out, c.name, "_curves.png");
         const fc::ContactPatch& p = normal.patches.at(0);
-        scenarios::run_plot_script(
+        run_plot_script(
             "curves", csv, png,
             fmt::format("{}: a = {:.3g} mm, b = {:.3g} mm, Fn = {:.4g} kN, mu = {}", c.name,
                         p.semi_axis_x * 1e3, p.semi_axis_y * 1e3, c.normal.normal_force * 1e-3,
@@ -221,7 +222,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       fmt::print("{}\n{}\n", summary.dump(2), csv);
       if (!*patch_no_png) {
         const std::string png = output_path(*patch_out, c.name, "_patch.png");
-        scenarios::run_plot_script(
+        run_plot_script(
             "patch", csv, png,
             fmt::format("{}: {} + {}, xi_x = {:.3g}, xi_y = {:.3g}, phi = {:.3g} 1/m", c.name,
                         c.normal_model, c.patch_model.label(), c.patch_creepage.longitudinal,

@@ -8,7 +8,8 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/model_factory.hpp"
-#include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/overrides.hpp"
+#include "plotting.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "terminal.hpp"
@@ -20,16 +21,16 @@ namespace fs = std::filesystem;
 using scenarios::Scene;
 
 struct RunArgs {
-  std::string scene, output, plot_dir, integrator, tangential, normal;
+  std::string scene, output, plot_dir;
   std::vector<std::string> csv;
-  double t_end = NAN, speed = NAN, pace = 0.0, rtol = NAN, atol = NAN, fixed_step = NAN;
+  scenarios::RunOverrides overrides;
+  double pace = 0.0;
   bool no_plots = false, quiet = false;
 };
 
 struct EigArgs {
-  std::string scene, output, tangential;
-  double speed_min = NAN, speed_max = NAN;
-  int points = 0;
+  std::string scene, output;
+  scenarios::RunOverrides overrides;
   bool no_plots = false;
 };
 
@@ -51,70 +52,12 @@ int make_plots(const std::string& mode, const std::string& h5,
     args.emplace_back("--signals");
     args.insert(args.end(), signals.begin(), signals.end());
   }
-  return scenarios::run_python_tool("ferroplot.py", args);
+  return run_python_tool("ferroplot.py", args);
 }
-
-}  // namespace
-
-void apply_run_overrides(Scene& scene, double t_end, double speed, const std::string& tangential) {
-  if (!std::isnan(t_end)) {
-    if (!(t_end > 0.0))
-      throw std::invalid_argument(fmt::format("--t-end: must be > 0 s, got {}", t_end));
-    scene.simulation.t_end = t_end;
-    (void)scenarios::output_sample_count(t_end, scene.output.interval, "--t-end");
-  }
-  if (!std::isnan(speed)) {
-    if (!(speed > 0.0))
-      throw std::invalid_argument(fmt::format("--speed: must be > 0 m/s, got {}", speed));
-    scene.simulation.speed = speed;
-  }
-  if (!tangential.empty()) scenarios::override_tangential(scene, tangential, "--tangential");
-  if (!std::isnan(t_end) || !std::isnan(speed)) {
-    const std::string problem = scenarios::track_extent_problem(scene, scene.simulation.t_end);
-    if (!problem.empty()) {
-      throw std::invalid_argument(
-          fmt::format("{}: {}", !std::isnan(t_end) ? "--t-end" : "--speed", problem));
-    }
-  }
-}
-
-namespace {
 
 int do_run(const RunArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
-  apply_run_overrides(scene, a.t_end, a.speed, a.tangential);
-  if (!a.normal.empty()) scenarios::override_normal(scene, a.normal, "--normal");
-  if (!a.integrator.empty()) {
-    scene.solver.method = a.integrator;
-    // A scene's fixed step belongs to its explicit or implicit Runge-Kutta method: another
-    // method given here runs with its error control (--fixed-step sets a step explicitly).
-    if (std::isnan(a.fixed_step) && !vehicle::takes_fixed_step(a.integrator))
-      scene.solver.fixed_step = 0.0;
-  }
-  if (!std::isnan(a.fixed_step)) {
-    if (!(a.fixed_step >= 0.0) || !std::isfinite(a.fixed_step))
-      throw std::invalid_argument(fmt::format(
-          "--fixed-step: must be >= 0 s (0: adaptive steps), got {}", a.fixed_step));
-    if (a.fixed_step > 0.0 && !vehicle::takes_fixed_step(scene.solver.method))
-      throw std::invalid_argument(fmt::format(
-          "--fixed-step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} "
-          "needs 0, got {}",
-          scene.solver.method, a.fixed_step));
-    scene.solver.fixed_step = a.fixed_step;
-  }
-  if (!a.integrator.empty() || !std::isnan(a.fixed_step)) {
-    scene.solver.validate(!a.integrator.empty() ? "--integrator" : "--fixed-step");
-  }
-  if (!std::isnan(a.rtol)) {
-    if (!(a.rtol > 0.0 && a.rtol < 1.0))
-      throw std::invalid_argument(fmt::format("--rtol: must lie in (0, 1), got {}", a.rtol));
-    scene.solver.rtol = a.rtol;
-  }
-  if (!std::isnan(a.atol)) {
-    if (!(a.atol > 0.0) || !std::isfinite(a.atol))
-      throw std::invalid_argument(fmt::format("--atol: must be finite and > 0, got {}", a.atol));
-    scene.solver.atol = a.atol;
-  }
+  scenarios::apply_overrides(scene, a.overrides, scenarios::Spelling::option);
   scenarios::RunOptions opt;
   opt.output_file = a.output;
   if (!(a.pace >= 0.0))
@@ -205,16 +148,7 @@ int do_run(const RunArgs& a) {
 
 int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
-  if (!a.tangential.empty()) scenarios::override_tangential(scene, a.tangential, "--tangential");
-  if (!std::isnan(a.speed_min)) scene.eigen.speed_min = a.speed_min;
-  if (!std::isnan(a.speed_max)) scene.eigen.speed_max = a.speed_max;
-  if (a.points > 0) scene.eigen.points = a.points;
-  if (!(scene.eigen.speed_min > 0.0 && scene.eigen.speed_max > scene.eigen.speed_min)) {
-    throw std::invalid_argument(
-        fmt::format("--speed-min/--speed-max: need 0 < min < max, got {} and {}",
-                    scene.eigen.speed_min, scene.eigen.speed_max));
-  }
-  if (scene.eigen.points < 2) throw std::invalid_argument("--points: must be >= 2");
+  scenarios::apply_overrides(scene, a.overrides, scenarios::Spelling::option);
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn eig: {} ({}), {} speeds in [{:g}, {:g}] m/s\n", scene.name, scene.path,
              scene.eigen.points, scene.eigen.speed_min, scene.eigen.speed_max);
@@ -298,17 +232,17 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
                   "HDF5 output file (default: the scene's output.file)");
   run->add_option("--csv", run_args->csv,
                   "Also write these signals to CSV ('all' for every signal)");
-  run->add_option("--t-end", run_args->t_end, "Override simulation.t_end [s]");
-  run->add_option("--speed", run_args->speed, "Override simulation.speed [m/s]");
-  run->add_option("--integrator", run_args->integrator, "Override solver.integrator");
-  run->add_option("--fixed-step", run_args->fixed_step,
+  run->add_option("--t-end", run_args->overrides.t_end, "Override simulation.t_end [s]");
+  run->add_option("--speed", run_args->overrides.speed, "Override simulation.speed [m/s]");
+  run->add_option("--integrator", run_args->overrides.integrator, "Override solver.integrator");
+  run->add_option("--fixed-step", run_args->overrides.fixed_step,
                   "Override solver.fixed_step [s] (arkode_erk, arkode_dirk, odeint_bs3; 0: "
                   "adaptive steps)");
-  run->add_option("--rtol", run_args->rtol, "Override solver.rtol [-]");
-  run->add_option("--atol", run_args->atol, "Override solver.atol [state units, SI]");
-  run->add_option("--tangential", run_args->tangential,
+  run->add_option("--rtol", run_args->overrides.rtol, "Override solver.rtol [-]");
+  run->add_option("--atol", run_args->overrides.atol, "Override solver.atol [state units, SI]");
+  run->add_option("--tangential", run_args->overrides.tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
-  run->add_option("--normal", run_args->normal,
+  run->add_option("--normal", run_args->overrides.normal,
                   "Override the scene's normal contact model: hertz, semi_hertz (vehicle scenes)");
   run->add_option("--pace", run_args->pace,
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
@@ -327,10 +261,10 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("scene", eig_args->scene, "Scene YAML file")->required();
   eig->add_option("-o,--output", eig_args->output,
                   "HDF5 output (default: <output.file stem>_eig.h5)");
-  eig->add_option("--speed-min", eig_args->speed_min, "Lowest speed [m/s]");
-  eig->add_option("--speed-max", eig_args->speed_max, "Highest speed [m/s]");
-  eig->add_option("--points", eig_args->points, "Number of speeds in the sweep");
-  eig->add_option("--tangential", eig_args->tangential,
+  eig->add_option("--speed-min", eig_args->overrides.speed_min, "Lowest speed [m/s]");
+  eig->add_option("--speed-max", eig_args->overrides.speed_max, "Highest speed [m/s]");
+  eig->add_option("--points", eig_args->overrides.points, "Number of speeds in the sweep");
+  eig->add_option("--tangential", eig_args->overrides.tangential,
                   "Override the scene's tangential contact model (vehicle scenes)");
   add_no_plots_flag(eig, eig_args->no_plots);
   eig->callback([&handler, eig_args] { handler = [eig_args] { return do_eig(*eig_args); }; });

@@ -16,7 +16,7 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/pair_file.hpp"
-#include "ferro/scenarios/plotting.hpp"
+#include "plotting.hpp"
 #include "ferro/scenarios/wheelset_contact.hpp"
 
 namespace ferro::cli {
@@ -78,11 +78,11 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
   scenarios::write_wheelset_contacts(results, in, h5.string(), csv.string());
   fmt::print("wrote {}, {}\n", h5.string(), csv.string());
   if (plot) {
-    if (scenarios::run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
+    if (run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
       fmt::print(stderr,
                  "plotting failed ({} tools/wheelset_contact_plot.py {}); the table is "
                  "written\n",
-                 scenarios::python_program(), h5.string());
+                 python_program(), h5.string());
       return kExitRunFailure;
     }
   }

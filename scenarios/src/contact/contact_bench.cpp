@@ -387,4 +387,38 @@ void write_contact_bench_csv(const ContactBenchResult& result, const std::string
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
 }
 
+std::vector<ContactBenchGridRow> contact_bench_grid_study(const ContactBenchResult& r,
+                                                          int threads) {
+  const int n = r.reference_elements;
+  std::vector<ContactBenchCase> study;
+  std::vector<std::size_t> index;
+  for (std::size_t k = 0; k < r.cases.size(); ++k) {
+    const auto& c = r.cases[k];
+    const bool spin = c.kind == "spin" && c.spin == 1.0;
+    const bool creep = c.spin == 0.0 && c.kind == "x+y" && c.xi_y > 0.0 &&
+                       std::abs(std::hypot(c.xi_x, c.xi_y) - 0.8) < 1e-9 && c.xi_x > c.xi_y;
+    if (spin || creep) {
+      study.push_back(c);
+      index.push_back(k);
+    }
+  }
+  std::vector<ContactBenchGridRow> rows;
+  if (study.empty() || n < 16) return rows;
+  const auto half = contact_bench_reference(study, n / 2, threads);
+  for (std::size_t j = 0; j < study.size(); ++j) {
+    const auto& ref = r.reference[index[j]];
+    const double d1 = std::hypot(half[j].fx_n - ref.fx_n, half[j].fy_n - ref.fy_n);
+    const double d2 = std::hypot(ref.fx_n - ref.fx_2n, ref.fy_n - ref.fy_2n);
+    rows.push_back({study[j], half[j].fy_n, ref.fy_n, ref.fy_2n, ref.fy,
+                    d2 > 0.0 ? std::log2(d1 / d2) : 0.0});
+  }
+  return rows;
+}
+
+double contact_bench_mean_correction(const ContactBenchResult& r) {
+  double corr = 0.0;
+  for (const auto& ref : r.reference) corr += std::hypot(ref.fx - ref.fx_2n, ref.fy - ref.fy_2n);
+  return corr / static_cast<double>(r.reference.size());
+}
+
 }  // namespace ferro::scenarios

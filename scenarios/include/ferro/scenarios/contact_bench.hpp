@@ -82,6 +82,20 @@ struct ContactBenchResult {
 [[nodiscard]] std::vector<ContactBenchReference> contact_bench_reference(
     const std::vector<ContactBenchCase>& cases, int elements, int threads);
 
+/// One case of the reference's grid study: F_y / (mu F_n) by MIM over the patch at N/2, N and
+/// 2N elements, the extrapolated value and the observed order p = log2(|F_N/2 - F_N| /
+/// |F_N - F_2N|) (of the force vector; 0 when the last difference is 0).
+struct ContactBenchGridRow {
+  ContactBenchCase c;
+  double fy_half = 0.0, fy_n = 0.0, fy_2n = 0.0, fy_extrapolated = 0.0, order = 0.0;
+};
+/// The grid study of `result`'s reference over pure spin (phi* = 1) and a transition creepage
+/// (0.8 at 30 deg) for each a/b: empty when the reference has fewer than 16 elements.
+[[nodiscard]] std::vector<ContactBenchGridRow> contact_bench_grid_study(
+    const ContactBenchResult& result, int threads);
+/// Mean |F(extrapolated) - F(2N)| / (mu F_n) over the cases: the size of the Richardson step.
+[[nodiscard]] double contact_bench_mean_correction(const ContactBenchResult& result);
+
 /// Reference CSV I/O (ratio, xi_x, xi_y, spin, fx, fy, mz, fx_n, fy_n, fx_2n, fy_2n; '#' lines
 /// are comments; the first comment names N). read returns false when the file is missing or its
 /// cases differ from `cases`.

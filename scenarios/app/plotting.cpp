@@ -1,4 +1,4 @@
-#include "ferro/scenarios/plotting.hpp"
+#include "plotting.hpp"
 
 #include <fmt/format.h>
 #include <spawn.h>
@@ -10,7 +10,7 @@
 
 extern char** environ;
 
-namespace ferro::scenarios {
+namespace ferro::cli {
 
 std::string python_program() {
   if (const char* env = std::getenv("FERRO_PYTHON"); env != nullptr && *env != '\0') return env;
@@ -54,4 +54,14 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
   return run_program(argv);
 }
 
-}  // namespace ferro::scenarios
+void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
+                     const std::string& title) {
+  if (run_python_tool("plot_contact.py", {mode, csv, png, title}) != 0) {
+    throw std::runtime_error(fmt::format(
+        "could not draw {} ({} with matplotlib needed; set FERRO_PYTHON to choose another); the "
+        "CSV {} is written",
+        png, python_program(), csv));
+  }
+}
+
+}  // namespace ferro::cli

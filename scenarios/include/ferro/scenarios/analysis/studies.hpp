@@ -1,0 +1,115 @@
+#pragma once
+// The critical-speed studies of a scene as the command line and the Python module ask for
+// them: a decelerating ramp, the periodic branch followed down to its fold (bifurcation), and
+// the fold against the Kalker reduction factors (K_ij study, over threads); and the options of
+// the derailment assessment of a run. Each request holds
+// the user's numbers (SI) and checks them; errors name the value as a key or as an option
+// (see Spelling). The sweep of independent points is in sweep.hpp.
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ferro/scenarios/analysis/critical_speed.hpp"
+#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/output.hpp"
+#include "ferro/scenarios/analysis/scene_analysis.hpp"
+#include "ferro/scenarios/overrides.hpp"
+
+namespace ferro::scenarios::analysis {
+
+/// Settling of constant-speed runs (bifurcation, K_ij study, sweep).
+struct SettleRequest {
+  double disturbance = 0.01;       ///< lateral offset added to the leading wheelset [m]
+  double segment = 10.0;           ///< simulated time per convergence check [s]
+  double t_max = 60.0;             ///< simulated time limit per speed [s]
+  double output_interval = 2e-3;   ///< sampling of the lateral states [s]
+  double zero_amplitude = 1e-5;    ///< below: oscillation decayed [m]
+  double max_amplitude = 0.05;     ///< above: diverged [m]
+  int periods = 5;                 ///< periods the steady amplitude is measured over
+  double rel_tol = 2e-3;           ///< relative amplitude change that counts as settled [-]
+  double k11 = 1.0, k22 = 1.0;     ///< reduction factors on C11, C22 [-]
+};
+/// The settle options of `scene`'s solver; throws std::invalid_argument naming the bad value.
+[[nodiscard]] SettleOptions settle_options(const Scene& scene, const SettleRequest& request,
+                                           Spelling spelling = Spelling::key);
+
+/// A decelerating run after a lateral disturbance.
+struct RampRequest {
+  double speed_initial = 110.0;   ///< [m/s]
+  double deceleration = 1.0;      ///< [m/s^2]
+  double speed_final = NAN;       ///< [m/s] (NaN: 0.1 x speed_initial)
+  double hold = 0.1;              ///< constant-speed piece duration [s]
+  double threshold = 1e-4;        ///< envelope below which the oscillation died [m]
+  double max_amplitude = 0.05;    ///< stop as diverged above this [m]
+  double envelope_window = 2.0;   ///< envelope trailing window [s]
+  double output_interval = 2e-3;  ///< sampling [s]
+  double disturbance = 0.01;      ///< initial lateral offset [m]
+  double k11 = 1.0, k22 = 1.0;    ///< reduction factors [-]
+};
+struct RampStudy {
+  Scene scene;                  ///< with the reduction factors applied
+  RampOptions options;
+  RampResult result;
+  std::string observed;         ///< name of the state whose envelope is followed
+};
+[[nodiscard]] RampStudy run_ramp(const Scene& scene, const RampRequest& request,
+                                 Spelling spelling = Spelling::key);
+
+/// The periodic branch followed down from speed_max to its fold.
+struct BranchRequest {
+  double speed_max = NAN;  ///< first (highest) speed [m/s]
+  double speed_min = NAN;  ///< lowest speed followed [m/s]
+  double step = 2.0;       ///< downward speed step [m/s]
+  double bracket = 0.1;    ///< fold bracket width [m/s]
+  SettleRequest settle;
+  bool hopf = true;        ///< also the eigenvalue (Hopf) speed in [0.5 min, 1.5 max]
+};
+[[nodiscard]] BranchOptions branch_options(const Scene& scene, const BranchRequest& request,
+                                           Spelling spelling = Spelling::key);
+/// The branch of `base` with reduction factors `k`; `names` receives the wheelset lateral
+/// states (the amplitude columns); `on_point` is called after each run.
+[[nodiscard]] KijRow run_bifurcation(const Scene& base, const BranchRequest& request,
+                                     const Reduction& k, std::vector<std::string>* names,
+                                     const std::function<void(const BranchPoint&)>& on_point = {},
+                                     Spelling spelling = Spelling::key);
+
+/// The reduction factors of a study: one per value of `k`, set on both (K11 = K22 = K23 = K33),
+/// on k11 only or on k22 only (`coefficient`), the other from `base`.
+[[nodiscard]] std::vector<Reduction> study_reductions(const std::vector<double>& k,
+                                                      const std::string& coefficient,
+                                                      const Reduction& base,
+                                                      Spelling spelling = Spelling::key);
+
+/// The fold against reduction factors, one branch per factor, over `jobs` threads.
+struct KijStudyRequest {
+  BranchRequest branch;
+  std::vector<double> k = {1.0, 0.9, 0.8, 0.7, 0.6, 0.5};
+  std::string coefficient = "both";  ///< both | k11 | k22
+  int jobs = 1;                      ///< worker threads
+};
+struct KijStudy {
+  std::vector<KijRow> rows;         ///< in the order of request.k
+  std::vector<std::string> names;   ///< wheelset lateral states
+  bool interrupted = false;         ///< should_stop fired: rows are incomplete
+};
+/// `on_row(row, done, total)` is called (serialised) as each branch finishes.
+[[nodiscard]] KijStudy run_kij_study(
+    const Scene& scene, const KijStudyRequest& request,
+    const std::function<bool()>& should_stop = {},
+    const std::function<void(const KijRow&, std::size_t, std::size_t)>& on_row = {},
+    Spelling spelling = Spelling::key);
+
+/// The derailment assessment's options as a user gives them.
+struct DerailmentRequest {
+  double mu = 0.36;                ///< friction coefficient in Nadal's formula [-], [0, 2)
+  double flange_angle_deg = -1.0;  ///< [deg] in (0, 90); <= 0: each wheel's largest angle
+  double q0 = -1.0;                ///< static wheel load Q0 [N]; < 0: the first sample
+  double window = 2.0;             ///< sliding-mean window [m]
+  double step = 0.5;               ///< sliding-mean sampling step [m]
+};
+[[nodiscard]] DerailmentOptions derailment_options(const DerailmentRequest& request,
+                                                   Spelling spelling = Spelling::key);
+
+}  // namespace ferro::scenarios::analysis

@@ -1,0 +1,185 @@
+// The critical-speed studies of a scene (see the header).
+#include "ferro/scenarios/analysis/studies.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+
+#include "ferro/scenarios/analysis/sweep.hpp"
+#include "ferro/scenarios/run.hpp"
+
+namespace ferro::scenarios::analysis {
+namespace {
+
+void positive(double v, const char* key, Spelling sp) {
+  if (!(v > 0.0) || !std::isfinite(v))
+    throw std::invalid_argument(fmt::format("{}: must be > 0, got {}", spelled(key, sp), v));
+}
+
+}  // namespace
+
+SettleOptions settle_options(const Scene& scene, const SettleRequest& s, Spelling sp) {
+  positive(s.segment, "segment", sp);
+  positive(s.t_max, "t_max", sp);
+  positive(s.output_interval, "output_interval", sp);
+  positive(s.zero_amplitude, "zero_amplitude", sp);
+  positive(s.max_amplitude, "max_amplitude", sp);
+  positive(s.rel_tol, "rel_tol", sp);
+  if (s.periods < 1)
+    throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("periods", sp)));
+  if (s.t_max < s.segment)
+    throw std::invalid_argument(
+        fmt::format("{}: must be >= {}", spelled("t_max", sp), spelled("segment", sp)));
+  if (s.max_amplitude <= s.zero_amplitude)
+    throw std::invalid_argument(fmt::format("{}: must be > {}", spelled("max_amplitude", sp),
+                                            spelled("zero_amplitude", sp)));
+  SettleOptions o;
+  o.solver = scene.solver;
+  o.segment = s.segment;
+  o.max_time = s.t_max;
+  o.output_interval = s.output_interval;
+  o.zero_amplitude = s.zero_amplitude;
+  o.max_amplitude = s.max_amplitude;
+  o.amplitude.periods = s.periods;
+  o.amplitude.rel_tol = s.rel_tol;
+  return o;
+}
+
+RampStudy run_ramp(const Scene& base, const RampRequest& a, Spelling sp) {
+  RampStudy study;
+  study.scene = with_reduction(base, {a.k11, a.k22});
+  RampOptions& o = study.options;
+  o.speed_initial = a.speed_initial;
+  o.deceleration = a.deceleration;
+  o.speed_final = std::isnan(a.speed_final) ? 0.1 * a.speed_initial : a.speed_final;
+  positive(a.speed_initial, "speed_initial", sp);
+  positive(a.deceleration, "deceleration", sp);
+  positive(a.hold, "hold", sp);
+  positive(a.threshold, "threshold", sp);
+  positive(a.envelope_window, "envelope_window", sp);
+  positive(a.output_interval, "output_interval", sp);
+  if (!(o.speed_final >= 0.0 && o.speed_final < o.speed_initial))
+    throw std::invalid_argument(fmt::format("{}: allowed [0, {})", spelled("speed_final", sp),
+                                            spelled("speed_initial", sp)));
+  o.hold = a.hold;
+  o.threshold = a.threshold;
+  o.max_amplitude = a.max_amplitude;
+  o.envelope_window = a.envelope_window;
+  o.output_interval = a.output_interval;
+  o.solver = study.scene.solver;
+  const auto family = speed_family(study.scene);
+  const auto probe = family(o.speed_initial);
+  const auto lateral = lateral_states(*probe);
+  o.observed = lateral.index.front();
+  study.observed = lateral.name.front();
+  const auto x0 = disturbed_state(study.scene, *probe, a.disturbance);
+  study.result = ramp_down(family, x0, o);
+  return study;
+}
+
+BranchOptions branch_options(const Scene& scene, const BranchRequest& a, Spelling sp) {
+  BranchOptions o;
+  o.speed_start = a.speed_max;
+  o.speed_stop = a.speed_min;
+  const std::string max = spelled("speed_max", sp), min = spelled("speed_min", sp);
+  if (std::isnan(a.speed_max) || std::isnan(a.speed_min))
+    throw std::invalid_argument(fmt::format("{} and {} are required", max, min));
+  if (!(a.speed_max > a.speed_min && a.speed_min > 0.0))
+    throw std::invalid_argument(fmt::format("{}/{}: need {} > {} > 0", max, min, max, min));
+  positive(a.step, "step", sp);
+  positive(a.bracket, "bracket", sp);
+  o.speed_step = a.step;
+  o.bracket = a.bracket;
+  o.settle = settle_options(scene, a.settle, sp);
+  return o;
+}
+
+KijRow run_bifurcation(const Scene& base, const BranchRequest& a, const Reduction& k,
+                       std::vector<std::string>* names,
+                       const std::function<void(const BranchPoint&)>& on_point, Spelling sp) {
+  const Scene scene = with_reduction(base, k);
+  auto o = branch_options(scene, a, sp);
+  const auto family = speed_family(scene);
+  const auto probe = family(a.speed_max);
+  const auto lateral = lateral_states(*probe);
+  if (names) *names = lateral.name;
+  o.settle.observed = lateral.index;
+  const auto x0 = disturbed_state(scene, *probe, a.settle.disturbance);
+  o.on_point = on_point;
+  KijRow row;
+  row.k = k;
+  row.branch = follow_periodic_branch(family, x0, o);
+  if (a.hopf) row.hopf_speed = hopf_speed(scene, 0.5 * a.speed_min, 1.5 * a.speed_max, 64);
+  return row;
+}
+
+std::vector<Reduction> study_reductions(const std::vector<double>& k,
+                                        const std::string& coefficient, const Reduction& base,
+                                        Spelling sp) {
+  if (coefficient != "both" && coefficient != "k11" && coefficient != "k22")
+    throw std::invalid_argument(fmt::format("{}: unknown '{}'; allowed: both, k11, k22",
+                                            spelled("coefficient", sp), coefficient));
+  std::vector<Reduction> out;
+  for (double v : k) {
+    Reduction r = base;
+    if (coefficient == "both") r = Reduction::uniform(v);
+    if (coefficient == "k11") r.k11 = v;
+    if (coefficient == "k22") r.k22 = v;
+    out.push_back(r);
+  }
+  return out;
+}
+
+KijStudy run_kij_study(const Scene& scene, const KijStudyRequest& a,
+                       const std::function<bool()>& should_stop,
+                       const std::function<void(const KijRow&, std::size_t, std::size_t)>& on_row,
+                       Spelling sp) {
+  if (a.k.empty())
+    throw std::invalid_argument(
+        fmt::format("{}: give at least one reduction factor", spelled("k", sp)));
+  const auto ks = study_reductions(a.k, a.coefficient, {a.branch.settle.k11, a.branch.settle.k22},
+                                   sp);
+  (void)branch_options(scene, a.branch, sp);  // validate before starting
+  if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
+  KijStudy study;
+  study.rows.resize(ks.size());
+  std::mutex m;
+  std::size_t done = 0;
+  parallel_for(
+      ks.size(),
+      [&](std::size_t i) {
+        std::vector<std::string> n;
+        auto row = run_bifurcation(scene, a.branch, ks[i], &n, {}, sp);
+        std::lock_guard lock(m);
+        study.rows[i] = std::move(row);
+        study.names = n;
+        ++done;
+        if (on_row) on_row(study.rows[i], done, ks.size());
+      },
+      a.jobs, should_stop);
+  study.interrupted = done < ks.size() || (should_stop && should_stop());
+  return study;
+}
+
+DerailmentOptions derailment_options(const DerailmentRequest& a, Spelling sp) {
+  DerailmentOptions o;
+  if (!(a.mu >= 0.0 && a.mu < 2.0))
+    throw std::invalid_argument(fmt::format("{}: allowed [0, 2)", spelled("mu", sp)));
+  o.mu = a.mu;
+  if (a.flange_angle_deg > 0.0) {
+    if (!(a.flange_angle_deg < 90.0))
+      throw std::invalid_argument(
+          fmt::format("{}: allowed (0, 90)", spelled("flange_angle_deg", sp)));
+    o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
+  }
+  o.wheel_load_static = a.q0;
+  positive(a.window, "window", sp);
+  positive(a.step, "step", sp);
+  o.window = a.window;
+  o.step = a.step;
+  return o;
+}
+
+}  // namespace ferro::scenarios::analysis
