@@ -15,6 +15,7 @@
 #include "ferro/scenarios/analysis/critical_speed.hpp"
 #include "ferro/scenarios/analysis/derailment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
+#include "ferro/scenarios/analysis/report.hpp"
 #include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
 #include "ferro/scenarios/overrides.hpp"
@@ -31,21 +32,8 @@ namespace an = scenarios::analysis;
 using scenarios::Scene;
 constexpr scenarios::Spelling kOption = scenarios::Spelling::option;
 
-std::string sibling(const std::string& file, const std::string& suffix) {
-  const fs::path p(file);
-  return (p.parent_path() / (p.stem().string() + suffix)).string();
-}
-
 void plot(const std::string& h5, bool no_plots) {
-  if (no_plots) return;
-  std::fflush(stdout);  // the report before the script's list of files
-  const std::string dir = sibling(h5, "_plots");
-  if (run_python_tool("ferroplot.py", {"auto", h5, "--out", dir, "--format", "png,svg"}) ==
-      0) {
-    fmt::print("  plots     {}/\n", dir);
-  } else {
-    fmt::print(stderr, "ferrodyn: warning: plotting failed; the results in {} are complete\n", h5);
-  }
+  if (!no_plots) plot_after_report("auto", h5);
 }
 
 // ---------------------------------------------------------------- derailment
@@ -60,23 +48,7 @@ int do_derailment(const DerailArgs& a) {
     throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.file));
   const an::DerailmentOptions o = an::derailment_options(a.request, kOption);
   const auto r = an::assess_derailment_file(a.file, o);
-  fmt::print("ferrodyn derailment: {} (mu = {}, {} m sliding mean every {} m)\n", a.file, o.mu,
-             o.window, o.step);
-  fmt::print("  {:<18} {:>8} {:>9} {:>8} {:>9} {:>7} {:>8} {:>9}  {}\n", "wheel", "max Y/Q",
-             "at [m]", "flange", "Nadal", "raw", "dQ/Q0", "at [m]", "verdict");
-  for (const auto& w : r.wheels) {
-    fmt::print("  {:<18} {:>8.3f} {:>9.2f} {:>6.1f}deg {:>9.3f} {:>7.3f} {:>8.3f} {:>9.2f}  {}\n",
-               w.name, w.max_y_over_q, w.max_y_over_q_position, w.flange_angle * 180.0 / M_PI,
-               w.nadal, w.max_y_over_q_raw, w.max_unloading, w.max_unloading_position,
-               w.pass_nadal && w.pass_unloading ? "pass" : "FAIL");
-  }
-  fmt::print("  {:<18} {:>12} {:>9} {:>14} {:>12}  {}\n", "axle", "max sum Y [kN]", "at [m]",
-             "Prud'homme [kN]", "P [kN]", "verdict");
-  for (const auto& x : r.axles) {
-    fmt::print("  {:<18} {:>12.2f} {:>9.2f} {:>14.2f} {:>12.2f}  {}\n", x.name, x.max_sum_y / 1e3,
-               x.max_sum_y_position, x.limit / 1e3, x.axle_load / 1e3, x.pass ? "pass" : "FAIL");
-  }
-  fmt::print("  verdict   {}\n", r.pass ? "pass" : "FAIL");
+  fmt::print("{}", an::derailment_report(a.file, o, r));
   const std::string out = a.output.empty() ? sibling(a.file, "_derailment.h5") : a.output;
   an::write_derailment_report(r, a.file, out);
   fmt::print("  output    {}\n", out);
@@ -100,10 +72,6 @@ void add_settle_options(CLI::App* c, an::SettleRequest& s) {
 }
 
 // ---------------------------------------------------------------- ramp
-// Envelope growth from the first full window to the peak above which the peak is shown: any
-// growth at all (1 means the envelope is largest in its first window).
-constexpr double kGrowthShown = 1.0;
-
 struct RampArgs {
   std::string scene, output;
   an::RampRequest request;
@@ -115,36 +83,7 @@ int do_ramp(const RampArgs& a) {
   const Scene& scene = study.scene;
   const auto& o = study.options;
   const auto& r = study.result;
-  fmt::print("ferrodyn critical-speed ramp: {} ({}), K11 = {}, K22 = {}\n", scene.name, scene.path,
-             a.request.k11, a.request.k22);
-  fmt::print("  ramp      {:.3f} -> {:.3f} m/s at -{} m/s^2, pieces of {} s, {} + {} m at start\n",
-             o.speed_initial, o.speed_final, o.deceleration, o.hold, study.observed,
-             a.request.disturbance);
-  if (!r.completed) fmt::print("  stopped   {}\n", r.message);
-  if (r.decay_speed) {
-    fmt::print("  decay     {} envelope below {} m for good at t = {:.3f} s: V = {:.3f} m/s = "
-               "{:.2f} km/h\n",
-               study.observed, o.threshold, r.decay_time, *r.decay_speed,
-               *r.decay_speed * 3.6);
-  } else {
-    fmt::print("  decay     none: the envelope {} below {} m over the whole ramp\n",
-               r.envelope.empty() || r.envelope.back() >= o.threshold ? "never stays" : "stays",
-               o.threshold);
-  }
-  // The envelope's maximum is where its growth turns into decay; that is the Hopf speed only
-  // while the oscillation is small enough to be linear (not on a flange-limited cycle).
-  if (!std::isnan(r.peak_speed) && r.envelope_growth > kGrowthShown) {
-    const auto peak = std::max_element(r.envelope.begin(), r.envelope.end());
-    fmt::print(
-        "  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
-        "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
-        "still linear there)\n",
-        r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
-  } else if (!std::isnan(r.peak_speed)) {
-    fmt::print(
-        "  growth    none: the envelope is largest in its first window (the disturbance "
-        "decays or settles)\n");
-  }
+  fmt::print("{}", an::ramp_report(study, a.request));
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
   an::write_ramp(scene, r, o, study.observed, out);
   fmt::print("  output    {}\n", out);
@@ -173,46 +112,6 @@ std::function<void(const an::BranchPoint&)> branch_progress(const an::Reduction&
   };
 }
 
-void print_branch(const an::KijRow& row, const std::vector<std::string>& names) {
-  fmt::print("  {:>10} {:>10} {:>9} {:>5}", "V [m/s]", "V [km/h]", "outcome", "bis.");
-  for (const auto& n : names) fmt::print(" {:>14}", n + " [mm]");
-  fmt::print("\n");
-  for (const auto& p : row.branch.points) {
-    fmt::print("  {:>10.4f} {:>10.3f} {:>9} {:>5}", p.speed, p.speed * 3.6,
-               an::to_string(p.run.outcome), p.bisection ? "yes" : "");
-    for (double amp : p.run.amplitude) fmt::print(" {:>14.4f}", amp * 1e3);
-    fmt::print("\n");
-  }
-  const auto& b = row.branch;
-  if (b.fold_found) {
-    fmt::print("  nonlinear critical speed (lowest sustained oscillation): {:.4f} m/s = {:.2f} km/h, "
-               "fold in [{:.4f}, {:.4f}] m/s\n",
-               *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high);
-    if (!std::isnan(b.amplitude_squared_zero)) {
-      fmt::print(
-          "  onset     amplitude^2 of the lowest cycles extrapolates to zero at {:.4f} m/s = "
-          "{:.2f} km/h: {}\n",
-          b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
-          b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
-                          : "subcritical (a finite cycle at the fold)");
-    } else {
-      fmt::print(
-          "  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
-          "does not fall towards the fold (subcritical)\n");
-    }
-  } else if (b.lowest_sustained) {
-    fmt::print("  sustained down to the lowest speed followed ({:.4f} m/s): the fold lies below\n",
-               *b.lowest_sustained);
-  } else {
-    fmt::print("  no sustained oscillation at the start speed {:.4f} m/s: the fold lies above\n",
-               b.bracket_high);
-  }
-  if (row.hopf_speed) {
-    fmt::print("  linear (Hopf) critical speed: {:.4f} m/s = {:.2f} km/h\n", *row.hopf_speed,
-               *row.hopf_speed * 3.6);
-  }
-}
-
 int do_branch(const BranchArgs& a) {
   const Scene scene = scenarios::load_scene(a.scene);
   const an::SettleRequest& settle = a.request.settle;
@@ -221,7 +120,7 @@ int do_branch(const BranchArgs& a) {
   std::vector<std::string> names;
   const an::Reduction k{settle.k11, settle.k22};
   const auto row = an::run_bifurcation(scene, a.request, k, &names, branch_progress(k), kOption);
-  print_branch(row, names);
+  fmt::print("{}", an::branch_report(row, names));
   const Scene reduced = an::with_reduction(scene, row.k);
   const std::string out =
       a.output.empty() ? sibling(scene.output.file, "_bifurcation.h5") : a.output;
@@ -287,29 +186,7 @@ int do_kij(const KijArgs& a) {
       kOption);
   if (InterruptGuard::signal_received() != 0) return 128 + InterruptGuard::signal_received();
   const auto& rows = study.rows;
-  fmt::print("ferrodyn kij-study: {} ({}), reduction on {}\n", scene.name, scene.path,
-             a.request.coefficient);
-  fmt::print("  {:>5} {:>5} | {:>10} {:>10} {:>19} {:>10} {:>8} | {:>6} {:>10} {:>8}\n", "K11",
-             "K22", "Vc [m/s]", "Vc [km/h]", "fold bracket [m/s]", "Hopf[km/h]", "Vc/Vc1",
-             "thesis", "Vc [km/h]", "Vc/Vc1");
-  const auto& thesis = an::thesis_table_4_1();
-  const double vc1 = rows.front().branch.lowest_sustained.value_or(NAN);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const auto& b = rows[i].branch;
-    const double vc = b.fold_found ? *b.lowest_sustained : NAN;
-    const double k = a.request.k[i];
-    std::string th = "      -          -        -";
-    for (const auto& t : thesis) {
-      if (std::abs(t.k - k) < 1e-9)
-        th = fmt::format("{:>6.1f} {:>10.0f} {:>8.3f}", t.k, t.critical_speed_kmh,
-                         t.critical_speed_kmh / thesis.front().critical_speed_kmh);
-    }
-    fmt::print("  {:>5.2f} {:>5.2f} | {:>10.4f} {:>10.2f} [{:>8.4f}, {:>8.4f}] {:>10.2f} {:>8.3f} | {}\n",
-               rows[i].k.k11, rows[i].k.k22, vc, vc * 3.6, b.bracket_low, b.bracket_high,
-               rows[i].hopf_speed.value_or(NAN) * 3.6, vc / vc1, th);
-  }
-  if (std::abs(a.request.k.front() - 1.0) > 1e-12)
-    fmt::print("  (ratios are to the first K in the list, {})\n", a.request.k.front());
+  fmt::print("{}", an::kij_study_report(scene, a.request, study));
   const std::string out = a.output.empty() ? sibling(scene.output.file, "_kij.h5") : a.output;
   an::write_kij_study(scene, rows, out);
   fmt::print("  output    {}\n", out);
@@ -331,17 +208,7 @@ bool launched_by_mpi() {
 
 int report_sweep(const Scene& scene, const an::SweepRequest& a, const an::SweepOutcome& r,
                  int ranks, bool no_plots) {
-  fmt::print("ferrodyn sweep: {} ({}), {} points, {} rank(s) x {} thread(s)\n", scene.name,
-             scene.path, r.total, ranks, a.jobs);
-  fmt::print("  {:>10} {:>6} {:>6} {:>9} {:>14} {:>9}\n", "V [m/s]", "K11", "K22", "outcome",
-             r.wheelset_names.front() + " [mm]", "cpu [s]");
-  for (const auto& p : r.results) {
-    fmt::print("  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>14.5f} {:>9.3f}\n", p.point.speed,
-               p.point.k.k11, p.point.k.k22, an::to_string(p.outcome),
-               p.amplitude.empty() ? NAN : p.amplitude.front() * 1e3, p.cpu_seconds);
-  }
-  fmt::print("  wall      {:.2f} s this invocation; CPU {:.2f} s over all points\n",
-             r.wall_seconds, r.cpu_seconds);
+  fmt::print("{}", an::sweep_report(scene, a, r, ranks));
   fmt::print("  output    {}\n", a.output);
   plot(a.output, no_plots);
   return kExitOk;

@@ -59,32 +59,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
         throw std::invalid_argument(fmt::format("--threads: must be >= 1, got {}", opt->threads));
       }
       const scenarios::ContactBenchResult r = scenarios::run_contact_bench(*opt);
-      const int n = r.reference_elements;
-      const auto study = scenarios::contact_bench_grid_study(r, opt->threads);
-      if (!study.empty()) {
-        fmt::print("Reference grid study (MIM over the patch; F in mu F_n):\n");
-        fmt::print("| a/b | case | F_y ({0}) | F_y ({1}) | F_y ({2}) | extrapolated | order |\n"
-                   "|---|---|---|---|---|---|---|\n",
-                   n / 2, n, 2 * n);
-        for (const auto& g : study) {
-          fmt::print("| {} | {} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {:.2f} |\n", g.c.ratio,
-                     g.c.kind == "spin" ? "spin 1" : "creep 0.8 @ 30 deg", g.fy_half, g.fy_n,
-                     g.fy_2n, g.fy_extrapolated, g.order);
-        }
-      }
-      fmt::print("{} Hertzian cases; reference MIM {} / {} over the patch{}, mean Richardson "
-                 "correction {:.5f} mu F_n; error = |F_t - F_t,ref| / (mu F_n); CPU time per "
-                 "evaluation\n",
-                 r.cases.size(), n, 2 * n, r.reference_from_file ? " (from file)" : "",
-                 scenarios::contact_bench_mean_correction(r));
-      fmt::print("| model | us / eval | mean | 95th pct | max | mean no spin | mean spin | M_z mean "
-                 "| max abs F |\n|---|---|---|---|---|---|---|---|---|\n");
-      for (const auto& row : r.rows) {
-        fmt::print("| {} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
-                   "|\n",
-                   row.label, row.us_per_eval, row.mean_error, row.p95_error, row.max_error,
-                   row.mean_no_spin, row.mean_spin, row.mz_mean_error, row.max_force);
-      }
+      fmt::print("{}", scenarios::contact_bench_report(r, opt->threads));
       std::filesystem::create_directories(*out);
       const std::string csv = (std::filesystem::path(*out) / "bench_contact.csv").string();
       scenarios::write_contact_bench_csv(r, csv);
@@ -157,42 +132,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
         if (!problem.empty()) throw std::invalid_argument(fmt::format("--settle: {}", problem));
       }
       const scenarios::WorkPrecisionReport r = scenarios::run_work_precision(scene, wp->options);
-      fmt::print("work-precision: {} ({} s simulated at {} m/s); model setup {:.3f} CPU-s\n",
-                 scene.name, r.t_end, scene.simulation.speed, r.setup_cpu_seconds);
-      fmt::print("compared: {}\n", fmt::join(r.compared_states, ", "));
-      if (r.settle > 0.0) {
-        fmt::print("settled: the reference ran {} s first ({:.3f} CPU-s); compared over [{}, {}] s\n",
-                   r.settle, r.settle_cpu_seconds, r.settle, r.settle + r.t_end);
-      }
-      for (std::size_t k = 0; k < r.compared_states.size(); ++k) {
-        const auto& c = r.reference_cycles[k];
-        fmt::print("reference {}: amplitude {:.6g}, frequency {:.6g} Hz\n", r.compared_states[k],
-                   c.amplitude, c.frequency);
-      }
-      fmt::print("| integrator | max order | rtol | atol | status | steps | rhs | CPU s | CPU s per "
-                 "simulated s | error | cycle error |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-      const auto line = [&](const scenarios::WorkPrecisionPoint& p, const char* note) {
-        fmt::print("| {}{} | {} | {:.0e} | {:.0e} | {} | {} | {} | {:.3f} | {:.4f} | {:.2e} | {:.2e} |\n",
-                   p.integrator.substr(0, p.integrator.find(':')), note,
-                   p.settings.max_order == 0 ? std::string("default")
-                                             : std::to_string(p.settings.max_order),
-                   p.settings.rtol, p.settings.atol,
-                   p.status == "completed" ? p.status
-                                           : fmt::format("{} at {:.4g} s", p.status, p.t_reached),
-                   p.steps, p.rhs_evaluations, p.cpu_seconds, p.cpu_seconds / r.t_end, p.error,
-                   p.cycle_error);
-      };
-      line(r.reference, " (reference)");
-      for (const auto& p : r.points) line(p, "");
-      if (r.best) {
-        const auto& b = r.points[*r.best];
-        fmt::print("cheapest within {} error {:.1e}: {} (max order {}) at rtol {:.0e}: {:.4f} "
-                   "CPU-s per simulated s, error {:.2e}, cycle error {:.2e}\n",
-                   r.metric, wp->options.target_error, b.integrator, b.settings.max_order,
-                   b.settings.rtol, b.cpu_seconds / r.t_end, b.error, b.cycle_error);
-      } else {
-        fmt::print("no setting met {} error {:.1e}\n", r.metric, wp->options.target_error);
-      }
+      fmt::print("{}", scenarios::work_precision_report(scene, r, wp->options));
       if (!wp->output.empty()) {
         scenarios::write_work_precision_csv(r, wp->output);
         fmt::print("wrote {}\n", wp->output);

@@ -4,6 +4,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -52,6 +53,37 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
   std::vector<std::string> argv = {python_program(), tool_script(script)};
   argv.insert(argv.end(), args.begin(), args.end());
   return run_program(argv);
+}
+
+std::string sibling(const std::string& file, const std::string& suffix) {
+  const std::filesystem::path p(file);
+  return (p.parent_path() / (p.stem().string() + suffix)).string();
+}
+
+int plot_file(const std::string& mode, const std::string& h5,
+              const std::vector<std::string>& signals, std::string dir,
+              const std::string& format) {
+  if (dir.empty()) dir = sibling(h5, "_plots");
+  std::vector<std::string> args = {mode, h5, "--out", dir, "--format", format};
+  if (!signals.empty()) {
+    args.emplace_back("--signals");
+    args.insert(args.end(), signals.begin(), signals.end());
+  }
+  return run_python_tool("ferroplot.py", args);
+}
+
+void plot_after_report(const std::string& mode, const std::string& h5,
+                       const std::vector<std::string>& signals, const std::string& dir) {
+  std::fflush(stdout);  // the report before the script's list of files
+  const std::string folder = dir.empty() ? sibling(h5, "_plots") : dir;
+  if (plot_file(mode, h5, signals, folder) == 0) {
+    fmt::print("  plots     {}/\n", folder);
+  } else {
+    fmt::print(stderr,
+               "ferrodyn: warning: plotting failed (python3 with matplotlib and h5py needed); the "
+               "results in {} are complete\n",
+               h5);
+  }
 }
 
 void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,

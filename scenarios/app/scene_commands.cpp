@@ -9,6 +9,7 @@
 #include "cli.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/report.hpp"
 #include "plotting.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/scene.hpp"
@@ -39,22 +40,6 @@ struct PlotArgs {
   std::vector<std::string> signals;
 };
 
-std::string default_plot_dir(const std::string& h5) {
-  fs::path p(h5);
-  return (p.parent_path() / (p.stem().string() + "_plots")).string();
-}
-
-int make_plots(const std::string& mode, const std::string& h5,
-               const std::vector<std::string>& signals, const std::string& out_dir,
-               const std::string& format) {
-  std::vector<std::string> args = {mode, h5, "--out", out_dir, "--format", format};
-  if (!signals.empty()) {
-    args.emplace_back("--signals");
-    args.insert(args.end(), signals.begin(), signals.end());
-  }
-  return run_python_tool("ferroplot.py", args);
-}
-
 int do_run(const RunArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
   scenarios::apply_overrides(scene, a.overrides, scenarios::Spelling::option);
@@ -72,69 +57,13 @@ int do_run(const RunArgs& a) {
   progress.finish();
   const int sig = InterruptGuard::signal_received();
 
-  const double v = scene.simulation.speed;
-  fmt::print("ferrodyn run: {} ({})\n", scene.name, scene.path);
-  fmt::print("  model     {}, V = {:.3f} m/s ({:.1f} km/h)\n", scene.model.type, v, v * 3.6);
-  if (scene.model.type == "vehicle") {
-    fmt::print("  vehicle   {} (scope {}), contact {} geometry, {} creep forces\n",
-               scene.model.vehicle.name, scene.model.selection.scope,
-               scene.model.vehicle.wheel_rail.geometry, scene.model.vehicle.wheel_rail.tangential_model);
-  } else {
-    const auto sys = scenarios::build_system(scene, v);
-    const auto modes = vehicle::linear_modes(*sys, 0.0, scenarios::equilibrium_state(scene, *sys));
-    if (!modes.empty()) {
-      fmt::print("  linear    least damped mode at V: damping ratio {:+.4f}, {:.3f} Hz ({})\n",
-                 modes.front().damping_ratio, modes.front().frequency_hz,
-                 modes.front().damping_ratio > 0.0 ? "stable" : "unstable");
-    }
-  }
-  if (scene.solver.fixed_step > 0.0) {
-    fmt::print("  solver    {} (fixed step {:g} s, no error control): {} steps, {} rhs evaluations\n",
-               scene.solver.method, scene.solver.fixed_step, s.steps, s.rhs_evaluations);
-  } else {
-    fmt::print("  solver    {} (rtol {:g}, atol {:g}): {} steps, {} rhs evaluations\n",
-               scene.solver.method, scene.solver.rtol, scene.solver.atol, s.steps,
-               s.rhs_evaluations);
-  }
-  fmt::print("  status    {} at t = {:.6g} s: {} samples in {:.3f} s wall ({:.1f}x real time)\n",
-             s.status_text, s.t_reached, s.samples, s.wall_seconds,
-             s.wall_seconds > 0 ? s.t_reached / s.wall_seconds : 0.0);
-  if (!s.message.empty()) fmt::print("  cause     {}\n", s.message);
-  fmt::print("  {:<30} {:<6} {:>12} {:>12}\n", "signal", "unit", "peak |x|", "final");
-  // A vehicle has many channels: the summary shows wheel forces, wheelset displacements and
-  // car-body acceleration (the HDF5 file has them all).
-  const auto shown = [&](const std::string& name) {
-    if (scene.model.type != "vehicle") return true;
-    for (const char* end : {".Y", ".Q", ".points", "ay"}) {
-      const std::string e(end);
-      if (name.size() >= e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0)
-        return true;
-    }
-    return name.rfind("wheelset_", 0) == 0 &&
-           (name.size() > 2 && (name.substr(name.size() - 2) == ".y" ||
-                                (name.size() > 4 && name.substr(name.size() - 4) == ".yaw")));
-  };
-  for (std::size_t i = 0; i < s.channels.size(); ++i) {
-    if (!shown(s.channels[i].name)) continue;
-    fmt::print("  {:<30} {:<6} {:>12.5g} {:>12.5g}\n", s.channels[i].name, s.channels[i].unit,
-               s.peak_abs[i], s.final_values[i]);
-  }
+  fmt::print("{}", scenarios::run_report(scene, s));
   fmt::print("  output    {}{}\n", s.output_file, s.csv_file.empty() ? "" : " and " + s.csv_file);
   if (!a.no_plots && s.samples > 1) {
-    const std::string dir = a.plot_dir.empty() ? default_plot_dir(s.output_file) : a.plot_dir;
-    std::vector<std::string> signals = scene.output.plots;
-    if (signals.empty()) {
+    std::vector<std::string> signals = scene.output.plots;  // default: every state
+    if (signals.empty())
       for (std::size_t i = 0; i < s.state_count; ++i) signals.push_back(s.channels[i].name);
-    }
-    const int rc = make_plots("timeseries", s.output_file, signals, dir, "png,svg");
-    if (rc == 0) {
-      fmt::print("  plots     {}/\n", dir);
-    } else {
-      fmt::print(stderr,
-                 "ferrodyn: warning: plotting failed (python3 with matplotlib and h5py needed); "
-                 "the results in {} are complete\n",
-                 s.output_file);
-    }
+    plot_after_report("timeseries", s.output_file, signals, a.plot_dir);
   }
   std::fflush(stdout);
   if (s.status == vehicle::IntegrationResult::Status::kInterrupted)
@@ -150,49 +79,11 @@ int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
   scenarios::apply_overrides(scene, a.overrides, scenarios::Spelling::option);
   const auto r = scenarios::run_eigen(scene);
-  fmt::print("ferrodyn eig: {} ({}), {} speeds in [{:g}, {:g}] m/s\n", scene.name, scene.path,
-             scene.eigen.points, scene.eigen.speed_min, scene.eigen.speed_max);
-  fmt::print("  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
-             "freq [Hz]");
-  const std::size_t stride = std::max<std::size_t>(1, r.sweep.size() / 15);
-  for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
-    const auto& p = r.sweep[i];
-    fmt::print("  {:>10.3f} {:>10.2f} {:>+14.5f} {:>12.4f}\n", p.speed, p.speed * 3.6,
-               p.least_damped.damping_ratio, p.least_damped.frequency_hz);
-  }
-  if (r.critical_speed) {
-    fmt::print("  critical speed (least damped mode crosses zero): {:.6f} m/s = {:.3f} km/h\n",
-               *r.critical_speed, *r.critical_speed * 3.6);
-  } else {
-    fmt::print("  no critical speed in [{:g}, {:g}] m/s\n", scene.eigen.speed_min,
-               scene.eigen.speed_max);
-  }
-  if (r.closed_form_critical_speed) {
-    fmt::print("  closed form eq. (151): {:.6f} m/s", *r.closed_form_critical_speed);
-    if (r.critical_speed) {
-      fmt::print(" (relative difference {:.2e})",
-                 *r.critical_speed / *r.closed_form_critical_speed - 1.0);
-    }
-    fmt::print("\n");
-  } else if (!r.closed_form_note.empty()) {
-    fmt::print("  {}\n", r.closed_form_note);
-  }
-  const std::string out = a.output.empty()
-                              ? (fs::path(scene.output.file).parent_path() /
-                                 (fs::path(scene.output.file).stem().string() + "_eig.h5"))
-                                    .string()
-                              : a.output;
+  fmt::print("{}", scenarios::eigen_sweep_report(scene, r));
+  const std::string out = a.output.empty() ? sibling(scene.output.file, "_eig.h5") : a.output;
   scenarios::write_eigen_report(scene, r, out);
   fmt::print("  output    {}\n", out);
-  if (!a.no_plots) {
-    const std::string dir = default_plot_dir(out);
-    if (make_plots("eigen", out, {}, dir, "png,svg") == 0) {
-      fmt::print("  plots     {}/\n", dir);
-    } else {
-      fmt::print(stderr, "ferrodyn: warning: plotting failed; the results in {} are complete\n",
-                 out);
-    }
-  }
+  if (!a.no_plots) plot_after_report("eigen", out);
   return kExitOk;
 }
 
@@ -203,8 +94,8 @@ int do_plot(const PlotArgs& a) {
     throw std::invalid_argument(
         fmt::format("--format: unknown '{}'; allowed: png, svg, png,svg", a.format));
   }
-  const std::string dir = a.out_dir.empty() ? default_plot_dir(a.file) : a.out_dir;
-  const int rc = make_plots("auto", a.file, a.signals, dir, a.format);
+  const std::string dir = a.out_dir.empty() ? sibling(a.file, "_plots") : a.out_dir;
+  const int rc = plot_file("auto", a.file, a.signals, dir, a.format);
   if (rc == 2) return kExitBadInput;
   if (rc != 0)
     throw std::runtime_error("plotting failed (python3 with matplotlib and h5py needed)");

@@ -64,8 +64,7 @@ FeKijConfig read_config(const std::string& path) {
     MapReader l = top.map_or_empty("layer");
     s.layer.thickness = l.number_or("thickness", 0.0);
     s.layer.shear_modulus = l.number_or("shear_modulus", fe_contact::kNaN, true);
-    s.layer.yield_shear =
-        l.number_or("yield_shear", std::numeric_limits<double>::infinity(), true);
+    s.layer.yield_shear = l.number_or("yield_shear", std::numeric_limits<double>::infinity(), true);
     l.finish();
   }
   {
@@ -78,8 +77,9 @@ FeKijConfig read_config(const std::string& path) {
     }
     a.finish();
     if (s.axis_names.empty()) {
-      top.fail("axes", "give at least one of normal_force, layer_thickness, "
-                       "layer_shear_modulus, layer_yield_shear, yield_stress");
+      top.fail("axes",
+               "give at least one of normal_force, layer_thickness, "
+               "layer_shear_modulus, layer_yield_shear, yield_stress");
     }
   }
   {
@@ -213,7 +213,6 @@ void write_curves(const fs::path& dir, std::size_t i, const std::vector<double>&
   if (!out) throw std::runtime_error(fmt::format("{}: cannot write creep curves", dir.string()));
 }
 
-
 // Runs point i, records it in the journal (and its curves), keeps its K and load cycle.
 void compute_point(const FeKijConfig& cfg, const fs::path& work, std::size_t i,
                    contact::ReductionFactors& k, PlasticRecord* record, GridNote& grid) {
@@ -254,10 +253,11 @@ void write_elastoplastic_csv(const fe_contact::KijSweepSpec& spec, const fs::pat
     for (double x : spec.coordinates(i)) csv << fmt::format("{:.9g},", x);
     for (double v : records[i].cycle) csv << fmt::format("{:.9g},", v);
     const contact::ReductionFactors& f = records[i].first_pass;
-    csv << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", f.k11,
-                       f.k22, f.k23, f.k33, k[i].k11, k[i].k22, k[i].k23, k[i].k33);
+    csv << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", f.k11, f.k22,
+                       f.k23, f.k33, k[i].k11, k[i].k22, k[i].k23, k[i].k33);
   }
-  if (!csv) throw std::runtime_error(fmt::format("{}: cannot write elastoplastic.csv", work.string()));
+  if (!csv)
+    throw std::runtime_error(fmt::format("{}: cannot write elastoplastic.csv", work.string()));
 }
 
 std::map<std::string, std::string> provenance(const fe_contact::KijSweepSpec& spec,
@@ -336,10 +336,18 @@ FeKijStudy::FeKijStudy(const std::string& config_path, bool restart)
 
 FeKijStudy::~FeKijStudy() = default;
 
-std::size_t FeKijStudy::points() const { return impl_->done.size(); }
-std::size_t FeKijStudy::resumed() const { return impl_->resumed; }
-const std::string& FeKijStudy::output() const { return impl_->cfg.output; }
-const std::string& FeKijStudy::work_dir() const { return impl_->work; }
+std::size_t FeKijStudy::points() const {
+  return impl_->done.size();
+}
+std::size_t FeKijStudy::resumed() const {
+  return impl_->resumed;
+}
+const std::string& FeKijStudy::output() const {
+  return impl_->cfg.output;
+}
+const std::string& FeKijStudy::work_dir() const {
+  return impl_->work;
+}
 bool FeKijStudy::wants_curve_plots() const {
   return impl_->cfg.plots && !impl_->cfg.spec.curve_creepages.empty();
 }

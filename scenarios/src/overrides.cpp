@@ -47,8 +47,8 @@ void apply_solver(Scene& scene, const RunOverrides& o, Spelling sp) {
   if (!std::isnan(o.fixed_step)) {
     const std::string name = spelled("fixed_step", sp);
     if (!(o.fixed_step >= 0.0) || !std::isfinite(o.fixed_step))
-      throw std::invalid_argument(fmt::format(
-          "{}: must be >= 0 s (0: adaptive steps), got {}", name, o.fixed_step));
+      throw std::invalid_argument(
+          fmt::format("{}: must be >= 0 s (0: adaptive steps), got {}", name, o.fixed_step));
     if (o.fixed_step > 0.0 && !vehicle::takes_fixed_step(solver.method))
       throw std::invalid_argument(fmt::format(
           "{}: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} needs 0, got {}",

@@ -2,10 +2,12 @@
 #include "ferro/scenarios/work_precision.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -315,14 +317,58 @@ void write_work_precision_csv(const WorkPrecisionReport& report, const std::stri
       "cpu_s_per_simulated_s,error,cycle_error\n");
   const auto row = [&](const WorkPrecisionPoint& p) {
     out.print("{},{},{:.3g},{:.3g},{},{:.9g},{},{},{:.6g},{:.6g},{:.6g},{:.6g}\n",
-              p.integrator.substr(0, p.integrator.find(':')), p.settings.max_order,
-              p.settings.rtol, p.settings.atol, p.status, p.t_reached, p.steps,
-              p.rhs_evaluations, p.cpu_seconds,
+              p.integrator.substr(0, p.integrator.find(':')), p.settings.max_order, p.settings.rtol,
+              p.settings.atol, p.status, p.t_reached, p.steps, p.rhs_evaluations, p.cpu_seconds,
               report.t_end > 0.0 ? p.cpu_seconds / report.t_end : 0.0, p.error, p.cycle_error);
   };
   row(report.reference);
   for (const auto& p : report.points) row(p);
   out.close();
+}
+
+std::string work_precision_report(const Scene& scene, const WorkPrecisionReport& r,
+                                  const WorkPrecisionOptions& options) {
+  std::string text;
+  auto out = std::back_inserter(text);
+  fmt::format_to(out, "work-precision: {} ({} s simulated at {} m/s); model setup {:.3f} CPU-s\n",
+                 scene.name, r.t_end, scene.simulation.speed, r.setup_cpu_seconds);
+  fmt::format_to(out, "compared: {}\n", fmt::join(r.compared_states, ", "));
+  if (r.settle > 0.0) {
+    fmt::format_to(
+        out, "settled: the reference ran {} s first ({:.3f} CPU-s); compared over [{}, {}] s\n",
+        r.settle, r.settle_cpu_seconds, r.settle, r.settle + r.t_end);
+  }
+  for (std::size_t k = 0; k < r.compared_states.size(); ++k) {
+    const auto& c = r.reference_cycles[k];
+    fmt::format_to(out, "reference {}: amplitude {:.6g}, frequency {:.6g} Hz\n",
+                   r.compared_states[k], c.amplitude, c.frequency);
+  }
+  fmt::format_to(
+      out,
+      "| integrator | max order | rtol | atol | status | steps | rhs | CPU s | CPU s per "
+      "simulated s | error | cycle error |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const auto line = [&](const WorkPrecisionPoint& p, const char* note) {
+    fmt::format_to(
+        out, "| {}{} | {} | {:.0e} | {:.0e} | {} | {} | {} | {:.3f} | {:.4f} | {:.2e} | {:.2e} |\n",
+        p.integrator.substr(0, p.integrator.find(':')), note,
+        p.settings.max_order == 0 ? std::string("default") : std::to_string(p.settings.max_order),
+        p.settings.rtol, p.settings.atol,
+        p.status == "completed" ? p.status : fmt::format("{} at {:.4g} s", p.status, p.t_reached),
+        p.steps, p.rhs_evaluations, p.cpu_seconds, p.cpu_seconds / r.t_end, p.error, p.cycle_error);
+  };
+  line(r.reference, " (reference)");
+  for (const auto& p : r.points) line(p, "");
+  if (r.best) {
+    const auto& b = r.points[*r.best];
+    fmt::format_to(out,
+                   "cheapest within {} error {:.1e}: {} (max order {}) at rtol {:.0e}: {:.4f} "
+                   "CPU-s per simulated s, error {:.2e}, cycle error {:.2e}\n",
+                   r.metric, options.target_error, b.integrator, b.settings.max_order,
+                   b.settings.rtol, b.cpu_seconds / r.t_end, b.error, b.cycle_error);
+  } else {
+    fmt::format_to(out, "no setting met {} error {:.1e}\n", r.metric, options.target_error);
+  }
+  return text;
 }
 
 }  // namespace ferro::scenarios

@@ -139,8 +139,8 @@ KijStudy run_kij_study(const Scene& scene, const KijStudyRequest& a,
   if (a.k.empty())
     throw std::invalid_argument(
         fmt::format("{}: give at least one reduction factor", spelled("k", sp)));
-  const auto ks = study_reductions(a.k, a.coefficient, {a.branch.settle.k11, a.branch.settle.k22},
-                                   sp);
+  const auto ks =
+      study_reductions(a.k, a.coefficient, {a.branch.settle.k11, a.branch.settle.k22}, sp);
   (void)branch_options(scene, a.branch, sp);  // validate before starting
   if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
   KijStudy study;

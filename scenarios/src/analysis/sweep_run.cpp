@@ -22,9 +22,10 @@ std::string sweep_signature(const Scene& scene, const std::vector<SweepPoint>& p
   std::string signature = scene.text;
   for (const auto& p : points)
     signature += fmt::format(" {:.17g}/{:.17g}/{:.17g}", p.speed, p.k.k11, p.k.k22);
-  signature += fmt::format(" {} {} {} {} {} {} {} {}", a.settle.disturbance, settle.segment,
-                           settle.max_time, settle.output_interval, settle.zero_amplitude,
-                           settle.max_amplitude, settle.amplitude.periods, settle.amplitude.rel_tol);
+  signature +=
+      fmt::format(" {} {} {} {} {} {} {} {}", a.settle.disturbance, settle.segment, settle.max_time,
+                  settle.output_interval, settle.zero_amplitude, settle.max_amplitude,
+                  settle.amplitude.periods, settle.amplitude.rel_tol);
   return signature;
 }
 
@@ -82,8 +83,7 @@ std::vector<SweepPoint> sweep_points(const Scene& scene, const SweepRequest& a, 
     throw std::invalid_argument(
         fmt::format("{}: >= 1 (1 only when min = max)", spelled("points", sp)));
   if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
-  const auto factors =
-      study_reductions(a.k, a.coefficient, {a.settle.k11, a.settle.k22}, sp);
+  const auto factors = study_reductions(a.k, a.coefficient, {a.settle.k11, a.settle.k22}, sp);
   std::vector<SweepPoint> points;
   for (const Reduction& r : factors) {
     (void)with_reduction(scene, r);  // validates the factors

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <cstdio>
 #include <ctime>
 #include <exception>
@@ -409,8 +410,8 @@ std::vector<ContactBenchGridRow> contact_bench_grid_study(const ContactBenchResu
     const auto& ref = r.reference[index[j]];
     const double d1 = std::hypot(half[j].fx_n - ref.fx_n, half[j].fy_n - ref.fy_n);
     const double d2 = std::hypot(ref.fx_n - ref.fx_2n, ref.fy_n - ref.fy_2n);
-    rows.push_back({study[j], half[j].fy_n, ref.fy_n, ref.fy_2n, ref.fy,
-                    d2 > 0.0 ? std::log2(d1 / d2) : 0.0});
+    rows.push_back(
+        {study[j], half[j].fy_n, ref.fy_n, ref.fy_2n, ref.fy, d2 > 0.0 ? std::log2(d1 / d2) : 0.0});
   }
   return rows;
 }
@@ -419,6 +420,43 @@ double contact_bench_mean_correction(const ContactBenchResult& r) {
   double corr = 0.0;
   for (const auto& ref : r.reference) corr += std::hypot(ref.fx - ref.fx_2n, ref.fy - ref.fy_2n);
   return corr / static_cast<double>(r.reference.size());
+}
+
+std::string contact_bench_report(const ContactBenchResult& r, int threads) {
+  std::string text;
+  auto out = std::back_inserter(text);
+  const int n = r.reference_elements;
+  const auto study = contact_bench_grid_study(r, threads);
+  if (!study.empty()) {
+    fmt::format_to(out, "Reference grid study (MIM over the patch; F in mu F_n):\n");
+    fmt::format_to(out,
+                   "| a/b | case | F_y ({0}) | F_y ({1}) | F_y ({2}) | extrapolated | order |\n"
+                   "|---|---|---|---|---|---|---|\n",
+                   n / 2, n, 2 * n);
+    for (const auto& g : study) {
+      fmt::format_to(out, "| {} | {} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {:.2f} |\n", g.c.ratio,
+                     g.c.kind == "spin" ? "spin 1" : "creep 0.8 @ 30 deg", g.fy_half, g.fy_n,
+                     g.fy_2n, g.fy_extrapolated, g.order);
+    }
+  }
+  fmt::format_to(out,
+                 "{} Hertzian cases; reference MIM {} / {} over the patch{}, mean Richardson "
+                 "correction {:.5f} mu F_n; error = |F_t - F_t,ref| / (mu F_n); CPU time per "
+                 "evaluation\n",
+                 r.cases.size(), n, 2 * n, r.reference_from_file ? " (from file)" : "",
+                 contact_bench_mean_correction(r));
+  fmt::format_to(
+      out,
+      "| model | us / eval | mean | 95th pct | max | mean no spin | mean spin | M_z mean "
+      "| max abs F |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& row : r.rows) {
+    fmt::format_to(out,
+                   "| {} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
+                   "|\n",
+                   row.label, row.us_per_eval, row.mean_error, row.p95_error, row.max_error,
+                   row.mean_no_spin, row.mean_spin, row.mz_mean_error, row.max_force);
+  }
+  return text;
 }
 
 }  // namespace ferro::scenarios

@@ -41,12 +41,16 @@ struct Column {
 };
 
 std::vector<Column> pose_columns(const CsvBatchReader& reader) {
-  const std::map<std::string, Column> known{
-      {"y", {&PoseInput::y}},           {"roll", {&PoseInput::roll}},
-      {"yaw", {&PoseInput::yaw}},       {"height", {&PoseInput::height}},
-      {"load", {&PoseInput::load}},     {"y_mm", {&PoseInput::y, 1e-3}},
-      {"roll_rad", {&PoseInput::roll}}, {"yaw_rad", {&PoseInput::yaw}},
-      {"height_mm", {&PoseInput::height, 1e-3}}, {"load_n", {&PoseInput::load}}};
+  const std::map<std::string, Column> known{{"y", {&PoseInput::y}},
+                                            {"roll", {&PoseInput::roll}},
+                                            {"yaw", {&PoseInput::yaw}},
+                                            {"height", {&PoseInput::height}},
+                                            {"load", {&PoseInput::load}},
+                                            {"y_mm", {&PoseInput::y, 1e-3}},
+                                            {"roll_rad", {&PoseInput::roll}},
+                                            {"yaw_rad", {&PoseInput::yaw}},
+                                            {"height_mm", {&PoseInput::height, 1e-3}},
+                                            {"load_n", {&PoseInput::load}}};
   std::vector<Column> cols;
   for (const auto& h : reader.header()) {
     const auto it = known.find(h);

@@ -96,6 +96,10 @@ struct ContactBenchGridRow {
 /// Mean |F(extrapolated) - F(2N)| / (mu F_n) over the cases: the size of the Richardson step.
 [[nodiscard]] double contact_bench_mean_correction(const ContactBenchResult& result);
 
+/// The report `ferrodyn bench contact` prints: the reference's grid study (computed here on
+/// `threads` threads), then one Markdown row per model.
+[[nodiscard]] std::string contact_bench_report(const ContactBenchResult& result, int threads);
+
 /// Reference CSV I/O (ratio, xi_x, xi_y, spin, fx, fy, mz, fx_n, fy_n, fx_2n, fy_2n; '#' lines
 /// are comments; the first comment names N). read returns false when the file is missing or its
 /// cases differ from `cases`.

@@ -50,8 +50,8 @@ class FeKijStudy {
   FeKijStudy(const FeKijStudy&) = delete;
   FeKijStudy& operator=(const FeKijStudy&) = delete;
 
-  [[nodiscard]] std::size_t points() const;   ///< configurations of the study
-  [[nodiscard]] std::size_t resumed() const;  ///< already finished in the journal
+  [[nodiscard]] std::size_t points() const;           ///< configurations of the study
+  [[nodiscard]] std::size_t resumed() const;          ///< already finished in the journal
   [[nodiscard]] const std::string& output() const;    ///< the HDF5 table
   [[nodiscard]] const std::string& work_dir() const;  ///< the journal and curve CSVs
   /// The configuration asks for pictures (`plots`) and curves were computed.

@@ -23,9 +23,9 @@ struct SearchPairOptions {
   double flange_back = 1.360;  ///< flange-back distance [m]
   /// Flange-back position in wheel-profile coordinates [m] (NaN: the profile's first point).
   double flange_back_y = std::numeric_limits<double>::quiet_NaN();
-  double radius = 0.460;            ///< nominal wheel radius at the taping line [m]
-  std::string inclination = "0";    ///< rail inclination: 1:40, 1:20, 0 or an angle [rad]
-  double section_step = 0.5e-3;     ///< wheel section spacing [m]
+  double radius = 0.460;          ///< nominal wheel radius at the taping line [m]
+  std::string inclination = "0";  ///< rail inclination: 1:40, 1:20, 0 or an angle [rad]
+  double section_step = 0.5e-3;   ///< wheel section spacing [m]
 };
 /// Reads the profiles and builds the pair; errors name the file or the option
 /// (`inclination_name` for the inclination).

@@ -89,4 +89,10 @@ struct WorkPrecisionReport {
 /// Writes the table as CSV (one row per run, the reference first).
 void write_work_precision_csv(const WorkPrecisionReport& report, const std::string& path);
 
+/// The table as `ferrodyn bench work-precision` prints it (Markdown rows), with the reference's
+/// cycles and the cheapest setting within options.target_error.
+[[nodiscard]] std::string work_precision_report(const Scene& scene,
+                                                const WorkPrecisionReport& report,
+                                                const WorkPrecisionOptions& options);
+
 }  // namespace ferro::scenarios

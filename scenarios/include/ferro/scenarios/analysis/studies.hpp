@@ -21,15 +21,15 @@ namespace ferro::scenarios::analysis {
 
 /// Settling of constant-speed runs (bifurcation, K_ij study, sweep).
 struct SettleRequest {
-  double disturbance = 0.01;       ///< lateral offset added to the leading wheelset [m]
-  double segment = 10.0;           ///< simulated time per convergence check [s]
-  double t_max = 60.0;             ///< simulated time limit per speed [s]
-  double output_interval = 2e-3;   ///< sampling of the lateral states [s]
-  double zero_amplitude = 1e-5;    ///< below: oscillation decayed [m]
-  double max_amplitude = 0.05;     ///< above: diverged [m]
-  int periods = 5;                 ///< periods the steady amplitude is measured over
-  double rel_tol = 2e-3;           ///< relative amplitude change that counts as settled [-]
-  double k11 = 1.0, k22 = 1.0;     ///< reduction factors on C11, C22 [-]
+  double disturbance = 0.01;      ///< lateral offset added to the leading wheelset [m]
+  double segment = 10.0;          ///< simulated time per convergence check [s]
+  double t_max = 60.0;            ///< simulated time limit per speed [s]
+  double output_interval = 2e-3;  ///< sampling of the lateral states [s]
+  double zero_amplitude = 1e-5;   ///< below: oscillation decayed [m]
+  double max_amplitude = 0.05;    ///< above: diverged [m]
+  int periods = 5;                ///< periods the steady amplitude is measured over
+  double rel_tol = 2e-3;          ///< relative amplitude change that counts as settled [-]
+  double k11 = 1.0, k22 = 1.0;    ///< reduction factors on C11, C22 [-]
 };
 /// The settle options of `scene`'s solver; throws std::invalid_argument naming the bad value.
 [[nodiscard]] SettleOptions settle_options(const Scene& scene, const SettleRequest& request,
@@ -49,10 +49,10 @@ struct RampRequest {
   double k11 = 1.0, k22 = 1.0;    ///< reduction factors [-]
 };
 struct RampStudy {
-  Scene scene;                  ///< with the reduction factors applied
+  Scene scene;  ///< with the reduction factors applied
   RampOptions options;
   RampResult result;
-  std::string observed;         ///< name of the state whose envelope is followed
+  std::string observed;  ///< name of the state whose envelope is followed
 };
 [[nodiscard]] RampStudy run_ramp(const Scene& scene, const RampRequest& request,
                                  Spelling spelling = Spelling::key);
@@ -64,7 +64,7 @@ struct BranchRequest {
   double step = 2.0;       ///< downward speed step [m/s]
   double bracket = 0.1;    ///< fold bracket width [m/s]
   SettleRequest settle;
-  bool hopf = true;        ///< also the eigenvalue (Hopf) speed in [0.5 min, 1.5 max]
+  bool hopf = true;  ///< also the eigenvalue (Hopf) speed in [0.5 min, 1.5 max]
 };
 [[nodiscard]] BranchOptions branch_options(const Scene& scene, const BranchRequest& request,
                                            Spelling spelling = Spelling::key);
@@ -90,9 +90,9 @@ struct KijStudyRequest {
   int jobs = 1;                      ///< worker threads
 };
 struct KijStudy {
-  std::vector<KijRow> rows;         ///< in the order of request.k
-  std::vector<std::string> names;   ///< wheelset lateral states
-  bool interrupted = false;         ///< should_stop fired: rows are incomplete
+  std::vector<KijRow> rows;        ///< in the order of request.k
+  std::vector<std::string> names;  ///< wheelset lateral states
+  bool interrupted = false;        ///< should_stop fired: rows are incomplete
 };
 /// `on_row(row, done, total)` is called (serialised) as each branch finishes.
 [[nodiscard]] KijStudy run_kij_study(
