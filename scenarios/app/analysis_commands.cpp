@@ -32,71 +32,50 @@ namespace an = scenarios::analysis;
 using scenarios::Scene;
 constexpr scenarios::Spelling kOption = scenarios::Spelling::option;
 
-void plot(const std::string& h5, bool no_plots) {
-  if (!no_plots) plot_after_report("auto", h5);
-}
-
-// ---------------------------------------------------------------- derailment
-struct DerailArgs {
-  std::string file, output;
-  an::DerailmentRequest request;
+// The input (scene or run file), output and plot switch of an analysis verb, and its request.
+struct VerbArgs {
+  std::string input, output;
   bool no_plots = false;
+  /// -o, else <stem of `beside`><suffix>.
+  [[nodiscard]] std::string output_or(const std::string& beside, const char* suffix) const {
+    return output.empty() ? sibling(beside, suffix) : output;
+  }
+  /// After the report: the output file's name and its plots.
+  void finish(const std::string& out) const {
+    fmt::print("  output    {}\n", out);
+    if (!no_plots) plot_after_report("auto", out);
+  }
 };
+template <class Request>
+struct Analysis : VerbArgs {
+  Request request;
+};
+using DerailArgs = Analysis<an::DerailmentRequest>;
 
 int do_derailment(const DerailArgs& a) {
-  if (!fs::exists(a.file))
-    throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.file));
+  if (!fs::exists(a.input))
+    throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.input));
   const an::DerailmentOptions o = an::derailment_options(a.request, kOption);
-  const auto r = an::assess_derailment_file(a.file, o);
-  fmt::print("{}", an::derailment_report(a.file, o, r));
-  const std::string out = a.output.empty() ? sibling(a.file, "_derailment.h5") : a.output;
-  an::write_derailment_report(r, a.file, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
+  const auto r = an::assess_derailment_file(a.input, o);
+  fmt::print("{}", an::derailment_report(a.input, o, r));
+  const std::string out = a.output_or(a.input, "_derailment.h5");
+  an::write_derailment_report(r, a.input, out);
+  a.finish(out);
   return kExitOk;  // the verdict is a result, not a failure of the assessment
 }
 
-// ---------------------------------------------------------------- settle options
-void add_settle_options(CLI::App* c, an::SettleRequest& s) {
-  c->add_option("--disturbance", s.disturbance,
-                "Lateral offset added to the leading wheelset at the start [m]")->capture_default_str();
-  c->add_option("--segment", s.segment, "Simulated time per convergence check [s]")->capture_default_str();
-  c->add_option("--t-max", s.t_max, "Simulated time limit per speed [s]")->capture_default_str();
-  c->add_option("--output-interval", s.output_interval, "Sampling of the lateral states [s]")->capture_default_str();
-  c->add_option("--zero-amplitude", s.zero_amplitude, "Below: oscillation decayed [m]")->capture_default_str();
-  c->add_option("--max-amplitude", s.max_amplitude, "Above: diverged [m]")->capture_default_str();
-  c->add_option("--periods", s.periods, "Periods the steady amplitude is measured over")->capture_default_str();
-  c->add_option("--rel-tol", s.rel_tol, "Relative amplitude change that counts as settled")->capture_default_str();
-  c->add_option("--k11", s.k11, "Reduction factor on C11")->capture_default_str();
-  c->add_option("--k22", s.k22, "Reduction factor on C22")->capture_default_str();
-}
-
-// ---------------------------------------------------------------- ramp
-struct RampArgs {
-  std::string scene, output;
-  an::RampRequest request;
-  bool no_plots = false;
-};
+using RampArgs = Analysis<an::RampRequest>;
 
 int do_ramp(const RampArgs& a) {
-  const auto study = an::run_ramp(scenarios::load_scene(a.scene), a.request, kOption);
-  const Scene& scene = study.scene;
-  const auto& o = study.options;
-  const auto& r = study.result;
+  const auto study = an::run_ramp(scenarios::load_scene(a.input), a.request, kOption);
   fmt::print("{}", an::ramp_report(study, a.request));
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_ramp.h5") : a.output;
-  an::write_ramp(scene, r, o, study.observed, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
-  return r.completed ? kExitOk : kExitRunFailure;
+  const std::string out = a.output_or(study.scene.output.file, "_ramp.h5");
+  an::write_ramp(study.scene, study.result, study.options, study.observed, out);
+  a.finish(out);
+  return study.result.completed ? kExitOk : kExitRunFailure;
 }
 
-// ---------------------------------------------------------------- bifurcation
-struct BranchArgs {
-  std::string scene, output;
-  an::BranchRequest request;
-  bool no_plots = false;
-};
+using BranchArgs = Analysis<an::BranchRequest>;
 
 // Progress of the branch of factors k, on stderr.
 std::function<void(const an::BranchPoint&)> branch_progress(const an::Reduction& k) {
@@ -113,7 +92,7 @@ std::function<void(const an::BranchPoint&)> branch_progress(const an::Reduction&
 }
 
 int do_branch(const BranchArgs& a) {
-  const Scene scene = scenarios::load_scene(a.scene);
+  const Scene scene = scenarios::load_scene(a.input);
   const an::SettleRequest& settle = a.request.settle;
   fmt::print("ferrodyn critical-speed bifurcation: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, settle.k11, settle.k22);
@@ -121,16 +100,12 @@ int do_branch(const BranchArgs& a) {
   const an::Reduction k{settle.k11, settle.k22};
   const auto row = an::run_bifurcation(scene, a.request, k, &names, branch_progress(k), kOption);
   fmt::print("{}", an::branch_report(row, names));
-  const Scene reduced = an::with_reduction(scene, row.k);
-  const std::string out =
-      a.output.empty() ? sibling(scene.output.file, "_bifurcation.h5") : a.output;
-  an::write_branch(reduced, row.branch, names, row.hopf_speed, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
+  const std::string out = a.output_or(scene.output.file, "_bifurcation.h5");
+  an::write_branch(an::with_reduction(scene, row.k), row.branch, names, row.hopf_speed, out);
+  a.finish(out);
   return kExitOk;
 }
 
-// ---------------------------------------------------------------- eigen
 // The verb's own range, whatever the scene's analysis.eigen says.
 scenarios::RunOverrides eigen_range_defaults() {
   scenarios::RunOverrides r;
@@ -140,15 +115,13 @@ scenarios::RunOverrides eigen_range_defaults() {
   return r;
 }
 
-struct EigenArgs {
-  std::string scene, output;
+struct EigenArgs : VerbArgs {
   double k11 = 1.0, k22 = 1.0;
   scenarios::RunOverrides range = eigen_range_defaults();
-  bool no_plots = false;
 };
 
 int do_eigen(const EigenArgs& a) {
-  Scene scene = an::with_reduction(scenarios::load_scene(a.scene), {a.k11, a.k22});
+  Scene scene = an::with_reduction(scenarios::load_scene(a.input), {a.k11, a.k22});
   scenarios::apply_overrides(scene, a.range, kOption);
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
@@ -160,22 +133,16 @@ int do_eigen(const EigenArgs& a) {
     fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", scene.eigen.speed_min,
                scene.eigen.speed_max);
   }
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_eig.h5") : a.output;
+  const std::string out = a.output_or(scene.output.file, "_eig.h5");
   scenarios::write_eigen_report(scene, r, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
+  a.finish(out);
   return kExitOk;
 }
 
-// ---------------------------------------------------------------- K_ij study
-struct KijArgs {
-  std::string scene, output;
-  an::KijStudyRequest request;
-  bool no_plots = false;
-};
+using KijArgs = Analysis<an::KijStudyRequest>;
 
 int do_kij(const KijArgs& a) {
-  const Scene scene = scenarios::load_scene(a.scene);
+  const Scene scene = scenarios::load_scene(a.input);
   InterruptGuard guard;
   const auto study = an::run_kij_study(
       scene, a.request, [] { return InterruptGuard::signal_received() != 0; },
@@ -185,20 +152,15 @@ int do_kij(const KijArgs& a) {
       },
       kOption);
   if (InterruptGuard::signal_received() != 0) return 128 + InterruptGuard::signal_received();
-  const auto& rows = study.rows;
   fmt::print("{}", an::kij_study_report(scene, a.request, study));
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_kij.h5") : a.output;
-  an::write_kij_study(scene, rows, out);
-  fmt::print("  output    {}\n", out);
-  plot(out, a.no_plots);
+  const std::string out = a.output_or(scene.output.file, "_kij.h5");
+  an::write_kij_study(scene, study.rows, out);
+  a.finish(out);
   return kExitOk;
 }
 
-// ---------------------------------------------------------------- sweep
-struct SweepArgs {
-  std::string scene;
-  an::SweepRequest request;
-  bool quiet = false, no_plots = false;
+struct SweepArgs : Analysis<an::SweepRequest> {
+  bool quiet = false;
 };
 
 // mpirun (OpenMPI) and PMI launchers set these: a plain run stays a plain process.
@@ -206,18 +168,10 @@ bool launched_by_mpi() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr;
 }
 
-int report_sweep(const Scene& scene, const an::SweepRequest& a, const an::SweepOutcome& r,
-                 int ranks, bool no_plots) {
-  fmt::print("{}", an::sweep_report(scene, a, r, ranks));
-  fmt::print("  output    {}\n", a.output);
-  plot(a.output, no_plots);
-  return kExitOk;
-}
-
 int do_sweep_ranked(const SweepArgs& args, an::SweepExecutor& ex) {
-  const Scene scene = scenarios::load_scene(args.scene);
+  const Scene scene = scenarios::load_scene(args.input);
   an::SweepRequest a = args.request;
-  if (a.output.empty()) a.output = sibling(scene.output.file, "_sweep.h5");
+  a.output = args.output_or(scene.output.file, "_sweep.h5");
   a.journal = a.output + ".points";
   InterruptGuard guard;
   an::SweepCallbacks cb;
@@ -251,7 +205,9 @@ int do_sweep_ranked(const SweepArgs& args, an::SweepExecutor& ex) {
                r.finished, r.total, a.journal);
     return sig != 0 ? 128 + sig : kExitRunFailure;
   }
-  return report_sweep(scene, a, r, ex.size(), args.no_plots);
+  fmt::print("{}", an::sweep_report(scene, a, r, ex.size()));
+  args.finish(a.output);
+  return kExitOk;
 }
 
 int do_sweep(const SweepArgs& a) {
@@ -268,121 +224,67 @@ int do_sweep(const SweepArgs& a) {
   }
 }
 
-// --no-hopf clears `hopf`.
-void add_no_hopf_flag(CLI::App* c, bool& hopf) {
-  c->add_flag_function(
-      "--no-hopf", [&hopf](std::int64_t) { hopf = false; }, "Skip the eigenvalue (Hopf) speed");
-}
-
-void add_k_options(CLI::App* c, std::vector<double>& k, std::string& coefficient) {
-  c->add_option("--k", k, "Reduction factors (one run per value)")->delimiter(',');
-  c->add_option("--coefficient", coefficient, "Which factor --k sets: both (K11 = K22 = K23 = K33), k11, k22")->capture_default_str();
+// The scene (or run file) argument, -o and --no-plots of an analysis verb.
+template <class Args>
+void add_common(CLI::App* c, Args& a, const char* input, const char* input_help,
+                const char* output_default) {
+  c->add_option(input, a.input, input_help)->required();
+  add_output_option(c, a.output, std::string("HDF5 output (default: ") + output_default + ")");
+  add_no_plots_flag(c, a.no_plots);
 }
 
 }  // namespace
 
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
+  const char* scene = "Scene YAML file";
   auto d = std::make_shared<DerailArgs>();
   auto* der = app.add_subcommand(
       "derailment", "Derailment assessment of a run: Y/Q (2 m mean), Nadal, sum Y, dQ/Q0, plot");
-  der->add_option("run", d->file, "HDF5 output of `ferrodyn run`")->required();
-  der->add_option("--mu", d->request.mu, "Friction coefficient in Nadal's formula")->capture_default_str();
-  der->add_option("--flange-angle-deg", d->request.flange_angle_deg,
-                  "Flange angle [deg] (default: largest contact angle of each wheel)");
-  der->add_option("--q0", d->request.q0, "Static wheel load Q0 [N] (default: first sample)");
-  der->add_option("--window", d->request.window, "Sliding-mean window [m]")->capture_default_str();
-  der->add_option("--step", d->request.step, "Sliding-mean sampling step [m]")->capture_default_str();
-  der->add_option("-o,--output", d->output, "Report file (default: <run>_derailment.h5)");
-  der->add_flag("--no-plots", d->no_plots, "Do not draw plots");
-  der->callback([&handler, d] { handler = [d] { return do_derailment(*d); }; });
+  add_common(der, *d, "run", "HDF5 output of `ferrodyn run`", "<run>_derailment.h5");
+  add_parameters(der, an::parameters(d->request));
+  on_parsed(der, handler, d, do_derailment);
 
   auto* cs = app.add_subcommand("critical-speed", "Critical speed: ramp, bifurcation, eigen");
   cs->require_subcommand(1);
-
   auto r = std::make_shared<RampArgs>();
   auto* ramp = cs->add_subcommand("ramp", "Decelerating run after a lateral disturbance");
-  ramp->add_option("scene", r->scene, "Scene YAML file")->required();
-  ramp->add_option("--speed-initial", r->request.speed_initial, "Start speed [m/s]")->capture_default_str();
-  ramp->add_option("--deceleration", r->request.deceleration, "[m/s^2]")->capture_default_str();
-  ramp->add_option("--speed-final", r->request.speed_final, "End speed [m/s] (default: 0.1 x start)");
-  ramp->add_option("--hold", r->request.hold, "Constant-speed piece duration [s]")->capture_default_str();
-  ramp->add_option("--threshold", r->request.threshold, "Envelope below which the oscillation died [m]")
-      ->capture_default_str();
-  ramp->add_option("--max-amplitude", r->request.max_amplitude, "Stop as diverged above this [m]")
-      ->capture_default_str();
-  ramp->add_option("--envelope-window", r->request.envelope_window, "Envelope trailing window [s]")->capture_default_str();
-  ramp->add_option("--output-interval", r->request.output_interval, "Sampling [s]")->capture_default_str();
-  ramp->add_option("--disturbance", r->request.disturbance, "Initial lateral offset [m]")->capture_default_str();
-  ramp->add_option("--k11", r->request.k11, "Reduction factor on C11")->capture_default_str();
-  ramp->add_option("--k22", r->request.k22, "Reduction factor on C22")->capture_default_str();
-  ramp->add_option("-o,--output", r->output, "HDF5 output (default: <output.file stem>_ramp.h5)");
-  ramp->add_flag("--no-plots", r->no_plots, "Do not draw plots");
-  ramp->callback([&handler, r] { handler = [r] { return do_ramp(*r); }; });
+  add_common(ramp, *r, "scene", scene, "<output.file stem>_ramp.h5");
+  add_parameters(ramp, an::parameters(r->request));
+  on_parsed(ramp, handler, r, do_ramp);
 
   auto b = std::make_shared<BranchArgs>();
   auto* bif = cs->add_subcommand(
       "bifurcation", "Limit-cycle amplitudes followed down the periodic branch to the fold");
-  bif->add_option("scene", b->scene, "Scene YAML file")->required();
-  bif->add_option("--speed-max", b->request.speed_max, "First (highest) speed [m/s]")->required();
-  bif->add_option("--speed-min", b->request.speed_min, "Lowest speed followed [m/s]")->required();
-  bif->add_option("--step", b->request.step, "Downward speed step [m/s]")->capture_default_str();
-  bif->add_option("--bracket", b->request.bracket, "Fold bracket width [m/s]")->capture_default_str();
-  add_settle_options(bif, b->request.settle);
-  bif->add_option("-o,--output", b->output,
-                  "HDF5 output (default: <output.file stem>_bifurcation.h5)");
-  add_no_hopf_flag(bif, b->request.hopf);
-  bif->add_flag("--no-plots", b->no_plots, "Do not draw plots");
-  bif->callback([&handler, b] { handler = [b] { return do_branch(*b); }; });
+  add_common(bif, *b, "scene", scene, "<output.file stem>_bifurcation.h5");
+  add_parameters(bif, an::parameters(b->request));
+  on_parsed(bif, handler, b, do_branch);
 
   auto e = std::make_shared<EigenArgs>();
   auto* eig = cs->add_subcommand("eigen", "Linear eigenvalues against speed: the Hopf speed");
-  eig->add_option("scene", e->scene, "Scene YAML file")->required();
-  eig->add_option("--speed-min", e->range.speed_min, "[m/s]")->capture_default_str();
-  eig->add_option("--speed-max", e->range.speed_max, "[m/s]")->capture_default_str();
-  eig->add_option("--points", e->range.points, "Speeds in the sweep")->capture_default_str();
+  add_common(eig, *e, "scene", scene, "<output.file stem>_eig.h5");
+  add_parameters(eig, scenarios::select_parameters(scenarios::parameters(e->range),
+                                                   {"speed_min", "speed_max", "points"}));
   eig->add_option("--k11", e->k11, "Reduction factor on C11")->capture_default_str();
   eig->add_option("--k22", e->k22, "Reduction factor on C22")->capture_default_str();
-  eig->add_option("-o,--output", e->output, "HDF5 output (default: <output.file stem>_eig.h5)");
-  eig->add_flag("--no-plots", e->no_plots, "Do not draw plots");
-  eig->callback([&handler, e] { handler = [e] { return do_eigen(*e); }; });
+  on_parsed(eig, handler, e, do_eigen);
 
   auto k = std::make_shared<KijArgs>();
   auto* kij = app.add_subcommand(
       "kij-study", "Nonlinear critical speed against Kalker reduction factors (Table 4.1 layout)");
-  kij->add_option("scene", k->scene, "Scene YAML file")->required();
-  add_k_options(kij, k->request.k, k->request.coefficient);
-  kij->add_option("--speed-max", k->request.branch.speed_max, "First (highest) speed [m/s]")->required();
-  kij->add_option("--speed-min", k->request.branch.speed_min, "Lowest speed followed [m/s]")->required();
-  kij->add_option("--step", k->request.branch.step, "Downward speed step [m/s]")->capture_default_str();
-  kij->add_option("--bracket", k->request.branch.bracket, "Fold bracket width [m/s]")->capture_default_str();
-  add_settle_options(kij, k->request.branch.settle);
-  kij->add_option("-j,--jobs", k->request.jobs, "Worker threads (one K per thread)")->capture_default_str();
-  kij->add_option("-o,--output", k->output, "HDF5 output (default: <stem>_kij.h5)");
-  add_no_hopf_flag(kij, k->request.branch.hopf);
-  kij->add_flag("--no-plots", k->no_plots, "Do not draw plots");
-  kij->callback([&handler, k] { handler = [k] { return do_kij(*k); }; });
+  add_common(kij, *k, "scene", scene, "<output.file stem>_kij.h5");
+  add_parameters(kij, an::parameters(k->request));
+  on_parsed(kij, handler, k, do_kij);
 
   auto s = std::make_shared<SweepArgs>();
   auto* sw = app.add_subcommand(
       "sweep", "Independent constant-speed runs over speeds x reduction factors, on threads and "
                "MPI ranks, resumable");
-  sw->add_option("scene", s->scene, "Scene YAML file")->required();
-  sw->add_option("--speed-min", s->request.speed_min, "[m/s]")->required();
-  sw->add_option("--speed-max", s->request.speed_max, "[m/s]")->required();
-  sw->add_option("--points", s->request.points, "Speeds between min and max")->capture_default_str();
-  add_k_options(sw, s->request.k, s->request.coefficient);
-  add_settle_options(sw, s->request.settle);
-  sw->add_option("-j,--jobs", s->request.jobs, "Worker threads per process")->capture_default_str();
-  sw->add_option("-o,--output", s->request.output,
-                 "HDF5 output (default: <output.file stem>_sweep.h5); finished points are kept "
-                 "in <output>.points/ until the sweep completes");
-  sw->add_option("--max-new-points", s->request.max_new_points,
-                 "Compute at most this many new points per process, then stop (resumable; for "
-                 "batch-queue time limits)");
-  sw->add_flag("--restart", s->request.restart, "Forget finished points and start over");
+  add_common(sw, *s, "scene", scene,
+             "<output.file stem>_sweep.h5; finished points are kept in <output>.points/ until "
+             "the sweep completes");
+  add_parameters(sw, an::parameters(s->request));
   sw->add_flag("-q,--quiet", s->quiet, "No progress display");
-  sw->add_flag("--no-plots", s->no_plots, "Do not draw plots");
-  sw->callback([&handler, s] { handler = [s] { return do_sweep(*s); }; });
+  on_parsed(sw, handler, s, do_sweep);
 }
 
 }  // namespace ferro::cli

@@ -15,6 +15,7 @@
 #include "cli.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
 #include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/parameters.hpp"
 #include "plotting.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/scenarios/work_precision.hpp"
@@ -35,29 +36,10 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       "error in mu Fn with and without spin, M_z error; writes bench_contact.csv and "
       "bench_contact.png");
   add_output_option(contact, *out, "output folder", {"--out"})->capture_default_str();
-  contact->add_option("--reference-elements", opt->reference_elements,
-                      "reference MIM: N (grids N x N and 2N x 2N over the patch)")
-      ->capture_default_str();
-  contact->add_option("--reference", opt->reference,
-                      "reference CSV: read when it holds this case set, else computed and written "
-                      "(shipped: tests/data/contact_bench_reference.csv)");
-  contact->add_option("--threads", opt->threads, "threads of the reference computation")
-      ->capture_default_str();
-  contact->add_option("--table", opt->table,
-                      "mim_table HDF5 file (default: build the default table)");
-  contact->add_option("--min-time", opt->min_time_s, "timing: minimum CPU seconds per model")
-      ->capture_default_str();
-  contact->add_flag("--quick", opt->quick, "15 cases, coarse reference and table (smoke test)");
+  add_parameters(contact, scenarios::parameters(*opt));
   add_no_plots_flag(contact, *no_png, {"--no-png"});
   contact->callback([&handler, opt, out, no_png] {
     handler = [opt, out, no_png] {
-      if (opt->reference_elements < 8) {
-        throw std::invalid_argument(fmt::format("--reference-elements: must be >= 8, got {}",
-                                                opt->reference_elements));
-      }
-      if (opt->threads < 1) {
-        throw std::invalid_argument(fmt::format("--threads: must be >= 1, got {}", opt->threads));
-      }
       const scenarios::ContactBenchResult r = scenarios::run_contact_bench(*opt);
       fmt::print("{}", scenarios::contact_bench_report(r, opt->threads));
       std::filesystem::create_directories(*out);
@@ -90,38 +72,9 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       "of the integration, steps; names the cheapest setting within --target-error");
   work->add_option("scene", wp->scene, "Scene YAML file")->required();
   add_output_option(work, wp->output, "CSV file of the table (default: none)");
-  work->add_option("--t-end", wp->overrides.t_end, "Override simulation.t_end [s]");
-  work->add_option("--speed", wp->overrides.speed, "Override simulation.speed [m/s]");
-  work->add_option("--tangential", wp->overrides.tangential,
-                   "Override the tangential contact model");
-  work->add_option("--integrators", wp->options.integrators,
-                   "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
-                   "odeint_rosenbrock4 arkode_erk@5e-4 odeint_bs3@1e-3")
-      ->delimiter(',')
-      ->capture_default_str();
-  work->add_option("--rtols", wp->options.rtols, "relative tolerances")
-      ->delimiter(',')
-      ->capture_default_str();
-  work->add_option("--atol-per-rtol", wp->options.atol_per_rtol, "atol = rtol x this [SI]")
-      ->capture_default_str();
-  work->add_option("--reference-rtol", wp->options.reference_rtol,
-                   "tolerance of the reference run (cvode_bdf)")
-      ->capture_default_str();
-  work->add_option("--states", wp->options.states,
-                   "states compared (default: every wheelset's y and yaw)")
-      ->delimiter(',');
-  work->add_option("--target-error", wp->options.target_error,
-                   "error the recommended setting must meet [-]")
-      ->capture_default_str();
-  work->add_option("--settle", wp->options.settle,
-                   "settling time [s]: the reference runs this long first and every run starts "
-                   "from its end state (for limit cycles)")
-      ->capture_default_str();
-  work->add_option("--metric", wp->options.metric,
-                   "error that picks the best setting: pointwise (largest deviation) or cycle "
-                   "(amplitude and frequency of each compared state)")
-      ->check(CLI::IsMember({"pointwise", "cycle"}))
-      ->capture_default_str();
+  add_parameters(work, scenarios::select_parameters(scenarios::parameters(wp->overrides),
+                                                    {"t_end", "speed", "tangential"}));
+  add_parameters(work, scenarios::parameters(wp->options));
   work->callback([&handler, wp] {
     handler = [wp] {
       scenarios::Scene scene = scenarios::load_scene(wp->scene);

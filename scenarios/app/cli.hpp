@@ -7,12 +7,17 @@
 // std::runtime_error for a failed run -> exit code 1. Handlers return their own exit code.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace CLI {
 class App;
 class Option;
+}
+
+namespace ferro::scenarios {
+struct Parameter;
 }
 
 namespace ferro::cli {
@@ -33,9 +38,15 @@ CLI::Option* add_output_option(CLI::App* cmd, std::string& target, const std::st
 /// The switch that skips pictures: --no-plots.
 void add_no_plots_flag(CLI::App* cmd, bool& target,
                        const std::vector<std::string>& old_names = {});
+/// One option per parameter (scenarios/parameters.hpp): --key ('-' for '_'; -j for jobs), its
+/// help with the unit, the default shown when it has one; a switch on by default is --no-key.
+void add_parameters(CLI::App* cmd, const std::vector<scenarios::Parameter>& parameters);
 /// A hidden alias of an option that takes a value.
 template <class T>
 void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target);
+/// Once `cmd` is parsed, `handler` is set to run `verb(*args)`.
+template <class Args, class Verb>
+void on_parsed(CLI::App* cmd, VerbHandler& handler, std::shared_ptr<Args> args, Verb verb);
 
 /// Parses argv, runs the chosen verb, returns the process exit code.
 int run_main(int argc, char** argv);
@@ -64,5 +75,9 @@ namespace ferro::cli {
 template <class T>
 void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target) {
   cmd->add_option(old_name, target)->group("");
+}
+template <class Args, class Verb>
+void on_parsed(CLI::App* cmd, VerbHandler& handler, std::shared_ptr<Args> args, Verb verb) {
+  cmd->callback([&handler, args, verb] { handler = [args, verb] { return verb(*args); }; });
 }
 }  // namespace ferro::cli

@@ -89,31 +89,11 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   CLI::App* eval = contact->add_subcommand(
       "eval",
       "Solve a Hertzian case; prints forces on the wheel (from the rail) as JSON, SI units");
-  eval->add_option("--a", in->a, "semi-axis along rolling x [m] (with --b)");
-  eval->add_option("--b", in->b, "lateral semi-axis [m] (with --a)");
-  eval->add_option("--curvature-x", in->curvature_x, "A: longitudinal relative curvature [1/m]");
-  eval->add_option("--curvature-y", in->curvature_y, "B: lateral relative curvature [1/m]");
-  eval->add_option("--fn", in->fn, "normal load [N]");
-  eval->add_option("--g1", in->g1, "wheel shear modulus [Pa]")->capture_default_str();
-  eval->add_option("--nu1", in->nu1, "wheel Poisson ratio")->capture_default_str();
-  eval->add_option("--g2", in->g2, "rail shear modulus [Pa]")->capture_default_str();
-  eval->add_option("--nu2", in->nu2, "rail Poisson ratio")->capture_default_str();
-  eval->add_option("--mu", in->mu, "friction coefficient");
-  eval->add_option("--xi-x", in->xi_x, "longitudinal creepage [-]");
-  eval->add_option("--xi-y", in->xi_y, "lateral creepage [-]");
-  eval->add_option("--spin", in->phi, "spin creepage [1/m]");
+  add_parameters(eval, scenarios::parameters(*in));
   add_hidden_alias(eval, "--phi", in->phi);
-  eval->add_option("--model", in->model,
-                   "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
-                   "chopaya, polach, fastsim, fastrip, mim, mim_table")
-      ->capture_default_str();
   eval->add_option("--option", *opts,
                    "model option key=value (repeatable), e.g. mx=40, "
                    "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
-  eval->add_option("--k11", in->k11, "reduction factor K11")->capture_default_str();
-  eval->add_option("--k22", in->k22, "reduction factor K22")->capture_default_str();
-  eval->add_option("--k23", in->k23, "reduction factor K23 (default: K22, as in the thesis 4.2.4)");
-  eval->add_option("--k33", in->k33, "reduction factor K33")->capture_default_str();
   eval->add_option("--kij-table", *kij_table,
                    "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
   eval->add_option("--kij-at", *kij_at,

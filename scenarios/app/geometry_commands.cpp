@@ -156,72 +156,49 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   auto pin = std::make_shared<PoseInput>();
   auto batch = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>("-");
-  auto shear = std::make_shared<double>(82.0e9);
   auto shear_mpa = std::make_shared<double>(std::numeric_limits<double>::quiet_NaN());
-  auto poisson = std::make_shared<double>(0.28);
-  search->add_option("--wheel", po->wheel, "wheel profile (.prw or two-column mm)")->required();
-  search->add_option("--rail", po->rail, "rail profile (.prr or two-column mm)")->required();
-  // SI options; the former spelling of each (millimetres, or the unit in the name) stays as a
-  // hidden alias, converted after parsing. Given both ways: bad input.
+  auto params = scenarios::parameters(*po);
+  for (auto& p : scenarios::parameters(*pin)) params.push_back(p);
+  add_parameters(search, params);
+  search->get_option("--wheel")->required();
+  search->get_option("--rail")->required();
+  // Numbers must be finite; the former spelling of each length and angle (millimetres, or the
+  // unit in the name) stays as a hidden alias, converted after parsing (given both ways: bad
+  // input).
   struct Alias {
     CLI::Option* si;
     double* target;
-    double scale;
     std::string old_name;
+    double scale;
     double value = std::numeric_limits<double>::quiet_NaN();
   };
+  const std::map<std::string, std::pair<std::string, double>> old_names{
+      {"gauge", {"--gauge-mm", 1e-3}},   {"gauge_depth", {"--gauge-depth-mm", 1e-3}},
+      {"flange_back", {"--flange-back-mm", 1e-3}},
+      {"flange_back_y", {"--flange-back-y-mm", 1e-3}},
+      {"radius", {"--radius-mm", 1e-3}}, {"section_step", {"--section-step-mm", 1e-3}},
+      {"y", {"--y-mm", 1e-3}},           {"roll", {"--roll-rad", 1.0}},
+      {"yaw", {"--yaw-rad", 1.0}},       {"height", {"--height-mm", 1e-3}},
+      {"load", {"--load-n", 1.0}}};
   auto aliases = std::make_shared<std::deque<Alias>>();
-  const auto add_si = [&](const std::string& name, double& target, const std::string& help,
-                          const std::string& old_name, double scale) {
-    CLI::Option* o = search->add_option(name, target, help)->check(kFiniteNumber);
-    Alias& alias = aliases->emplace_back(Alias{o, &target, scale, old_name});
-    search->add_option(old_name, alias.value)->check(kFiniteNumber)->group("");
-    return o;
-  };
-  add_si("--gauge", po->gauge, "track gauge [m]", "--gauge-mm", 1e-3)->capture_default_str();
-  add_si("--gauge-depth", po->gauge_depth, "gauge measured below top of rail [m]",
-         "--gauge-depth-mm", 1e-3)
-      ->capture_default_str();
-  search
-      ->add_option("--inclination", po->inclination,
-                   "rail inclination applied to the rail file: 1:40, 1:20, 0 or an angle in rad")
-      ->capture_default_str();
-  add_si("--flange-back", po->flange_back, "flange-back distance [m]", "--flange-back-mm", 1e-3)
-      ->capture_default_str();
-  add_si("--flange-back-y", po->flange_back_y,
-         "flange-back position in wheel-profile coordinates (default: first point) [m]",
-         "--flange-back-y-mm", 1e-3);
-  add_si("--radius", po->radius, "nominal wheel radius at the taping line [m]", "--radius-mm",
-         1e-3)
-      ->capture_default_str();
-  add_si("--section-step", po->section_step, "wheel section spacing [m]", "--section-step-mm",
-         1e-3)
-      ->capture_default_str();
-  add_si("--y", pin->y, "lateral shift, + to the right [m]", "--y-mm", 1e-3)
-      ->capture_default_str();
-  add_si("--roll", pin->roll,
-         "roll [rad], + lowers the right wheel (0 with neither --height nor --load: solved for "
-         "rigid contact)",
-         "--roll-rad", 1.0);
-  add_si("--yaw", pin->yaw, "yaw [rad], + turns the front to the right", "--yaw-rad", 1.0);
-  auto* h = add_si("--height", pin->height, "axle-centre drop below nominal (+ down) [m]",
-                   "--height-mm", 1e-3);
-  add_si("--load", pin->load, "total vertical load [N]: solve the height (Hertz)", "--load-n", 1.0)
-      ->excludes(h);
-  search->add_option("--shear-modulus", *shear, "for --load [Pa]")
-      ->check(kFiniteNumber)
-      ->capture_default_str();
+  for (const auto& p : params) {
+    double* const* target = std::get_if<double*>(&p.target);
+    if (target == nullptr) continue;
+    CLI::Option* si = search->get_option(scenarios::spelled(p.key, scenarios::Spelling::option));
+    si->check(kFiniteNumber);
+    const auto old = old_names.find(p.key);
+    if (old == old_names.end()) continue;
+    Alias& a = aliases->emplace_back(Alias{si, *target, old->second.first, old->second.second});
+    search->add_option(a.old_name, a.value)->check(kFiniteNumber)->group("");
+  }
+  search->get_option("--load")->excludes(search->get_option("--height"));
   add_hidden_alias(search, "--shear-modulus-mpa", *shear_mpa);
-  search->add_option("--poisson", *poisson, "for --load")
-      ->check(kFiniteNumber)
-      ->capture_default_str();
   search->add_option("--batch", *batch,
                      "CSV in (header with y [m] and optional roll, yaw [rad], height [m], load "
                      "[N]): one CSV row per contact point out");
   add_output_option(search, *out, "batch output CSV ('-' = stdout)", {"--out"})
       ->capture_default_str();
-
-  search->callback([&handler, po, pin, batch, out, shear, shear_mpa, poisson, aliases] {
+  search->callback([&handler, po, pin, batch, out, shear_mpa, aliases] {
     for (const Alias& a : *aliases) {
       if (std::isnan(a.value)) continue;
       if (a.si->count() > 0) {
@@ -232,9 +209,9 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
     if (!std::isnan(pin->height) && !std::isnan(pin->load)) {
       throw CLI::ValidationError("--height", "give --height or --load, not both");
     }
-    handler = [po, pin, batch, out, shear, shear_mpa, poisson] {
-      const double g = std::isnan(*shear_mpa) ? *shear : *shear_mpa * 1e6;
-      const double estar = scenarios::pose_search_modulus(g, *poisson);
+    handler = [po, pin, batch, out, shear_mpa] {
+      const double g = std::isnan(*shear_mpa) ? po->shear_modulus : *shear_mpa * 1e6;
+      const double estar = scenarios::pose_search_modulus(g, po->poisson);
       const fc::WheelRailPair pair = scenarios::make_search_pair(*po, "--inclination");
       if (!batch->empty()) return run_batch(pair, *batch, *out, *pin, estar);
       fmt::print("{}", result_json(pair, scenarios::solve_pose(pair, *pin, estar)));

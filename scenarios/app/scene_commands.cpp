@@ -9,6 +9,7 @@
 #include "cli.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/parameters.hpp"
 #include "ferro/scenarios/report.hpp"
 #include "plotting.hpp"
 #include "ferro/scenarios/run.hpp"
@@ -123,18 +124,10 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
                   "HDF5 output file (default: the scene's output.file)");
   run->add_option("--csv", run_args->csv,
                   "Also write these signals to CSV ('all' for every signal)");
-  run->add_option("--t-end", run_args->overrides.t_end, "Override simulation.t_end [s]");
-  run->add_option("--speed", run_args->overrides.speed, "Override simulation.speed [m/s]");
-  run->add_option("--integrator", run_args->overrides.integrator, "Override solver.integrator");
-  run->add_option("--fixed-step", run_args->overrides.fixed_step,
-                  "Override solver.fixed_step [s] (arkode_erk, arkode_dirk, odeint_bs3; 0: "
-                  "adaptive steps)");
-  run->add_option("--rtol", run_args->overrides.rtol, "Override solver.rtol [-]");
-  run->add_option("--atol", run_args->overrides.atol, "Override solver.atol [state units, SI]");
-  run->add_option("--tangential", run_args->overrides.tangential,
-                  "Override the scene's tangential contact model (vehicle scenes)");
-  run->add_option("--normal", run_args->overrides.normal,
-                  "Override the scene's normal contact model: hertz, semi_hertz (vehicle scenes)");
+  add_parameters(run, scenarios::select_parameters(
+                          scenarios::parameters(run_args->overrides),
+                          {"t_end", "speed", "integrator", "fixed_step", "rtol", "atol",
+                           "tangential", "normal"}));
   run->add_option("--pace", run_args->pace,
                   "Simulated seconds per wall-clock second (0: as fast as possible; 1: real time)");
   run->add_option("--plot-dir", run_args->plot_dir,
@@ -152,13 +145,11 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   eig->add_option("scene", eig_args->scene, "Scene YAML file")->required();
   eig->add_option("-o,--output", eig_args->output,
                   "HDF5 output (default: <output.file stem>_eig.h5)");
-  eig->add_option("--speed-min", eig_args->overrides.speed_min, "Lowest speed [m/s]");
-  eig->add_option("--speed-max", eig_args->overrides.speed_max, "Highest speed [m/s]");
-  eig->add_option("--points", eig_args->overrides.points, "Number of speeds in the sweep");
-  eig->add_option("--tangential", eig_args->overrides.tangential,
-                  "Override the scene's tangential contact model (vehicle scenes)");
+  add_parameters(eig, scenarios::select_parameters(scenarios::parameters(eig_args->overrides),
+                                                   {"speed_min", "speed_max", "points",
+                                                    "tangential"}));
   add_no_plots_flag(eig, eig_args->no_plots);
-  eig->callback([&handler, eig_args] { handler = [eig_args] { return do_eig(*eig_args); }; });
+  on_parsed(eig, handler, eig_args, do_eig);
 
   auto plot_args = std::make_shared<PlotArgs>();
   auto* plot = app.add_subcommand("plot", "Plot signals of a ferrodyn HDF5 file to PNG and SVG");
@@ -166,7 +157,7 @@ void add_scene_commands(CLI::App& app, VerbHandler& handler) {
   plot->add_option("signals", plot_args->signals, "Signals to plot (default: all)");
   add_output_option(plot, plot_args->out_dir, "Output folder (default: <file>_plots)", {"--out"});
   plot->add_option("--format", plot_args->format, "png, svg or png,svg");
-  plot->callback([&handler, plot_args] { handler = [plot_args] { return do_plot(*plot_args); }; });
+  on_parsed(plot, handler, plot_args, do_plot);
 
   auto scene_path = std::make_shared<std::string>();
   auto* validate = app.add_subcommand("validate", "Check a scene file and report the first error");

@@ -88,11 +88,24 @@ void apply_eigen_range(Scene& scene, const RunOverrides& o, Spelling sp) {
 
 }  // namespace
 
-std::string spelled(std::string_view key, Spelling spelling) {
-  if (spelling == Spelling::key) return std::string(key);
-  std::string s = "--";
-  for (char c : key) s += c == '_' ? '-' : c;
-  return s;
+
+Parameters parameters(RunOverrides& o) {
+  return {
+      {"t_end", "s", "end time (simulation.t_end)", &o.t_end, false},
+      {"speed", "m/s", "forward speed (simulation.speed)", &o.speed, false},
+      {"integrator", "", "integration method (solver.integrator)", &o.integrator, false},
+      {"fixed_step", "s",
+       "fixed step of arkode_erk, arkode_dirk, odeint_bs3; 0: adaptive steps (solver.fixed_step)",
+       &o.fixed_step, false},
+      {"rtol", "-", "relative tolerance (solver.rtol)", &o.rtol, false},
+      {"atol", "SI state units", "absolute tolerance (solver.atol)", &o.atol, false},
+      {"tangential", "", "tangential contact model (vehicle scenes)", &o.tangential, false},
+      {"normal", "", "normal contact model: hertz, semi_hertz (vehicle scenes)", &o.normal,
+       false},
+      {"speed_min", "m/s", "lowest speed of the eigenvalue sweep", &o.speed_min, false},
+      {"speed_max", "m/s", "highest speed of the eigenvalue sweep", &o.speed_max, false},
+      {"points", "", "speeds in the eigenvalue sweep", &o.points, false},
+  };
 }
 
 void apply_overrides(Scene& scene, const RunOverrides& overrides, Spelling spelling) {

@@ -326,6 +326,28 @@ void write_work_precision_csv(const WorkPrecisionReport& report, const std::stri
   out.close();
 }
 
+Parameters parameters(WorkPrecisionOptions& o) {
+  return {
+      {"integrators", "",
+       "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
+       "odeint_rosenbrock4 arkode_erk@5e-4 odeint_bs3@1e-3",
+       &o.integrators},
+      {"rtols", "-", "relative tolerances", &o.rtols},
+      {"atol_per_rtol", "SI state units", "atol = rtol x this", &o.atol_per_rtol},
+      {"reference_rtol", "-", "tolerance of the reference run (cvode_bdf)", &o.reference_rtol},
+      {"states", "", "states compared (default: every wheelset's y and yaw)", &o.states, false},
+      {"target_error", "-", "error the recommended setting must meet", &o.target_error},
+      {"settle", "s",
+       "settling time: the reference runs this long first and every run starts from its end "
+       "state (for limit cycles)",
+       &o.settle},
+      {"metric", "",
+       "error that picks the best setting: pointwise (largest deviation) or cycle (amplitude "
+       "and frequency of each compared state)",
+       &o.metric},
+  };
+}
+
 std::string work_precision_report(const Scene& scene, const WorkPrecisionReport& r,
                                   const WorkPrecisionOptions& options) {
   std::string text;

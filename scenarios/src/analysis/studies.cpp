@@ -182,4 +182,71 @@ DerailmentOptions derailment_options(const DerailmentRequest& a, Spelling sp) {
   return o;
 }
 
+Parameters parameters(SettleRequest& s) {
+  return {
+      {"disturbance", "m", "lateral offset added to the leading wheelset at the start",
+       &s.disturbance},
+      {"segment", "s", "simulated time per convergence check", &s.segment},
+      {"t_max", "s", "simulated time limit per speed", &s.t_max},
+      {"output_interval", "s", "sampling of the lateral states", &s.output_interval},
+      {"zero_amplitude", "m", "below: the oscillation decayed", &s.zero_amplitude},
+      {"max_amplitude", "m", "above: diverged", &s.max_amplitude},
+      {"periods", "", "periods the steady amplitude is measured over", &s.periods},
+      {"rel_tol", "-", "relative amplitude change that counts as settled", &s.rel_tol},
+      {"k11", "-", "reduction factor on C11", &s.k11},
+      {"k22", "-", "reduction factor on C22", &s.k22},
+  };
+}
+
+Parameters parameters(RampRequest& r) {
+  return {
+      {"speed_initial", "m/s", "start speed", &r.speed_initial},
+      {"deceleration", "m/s^2", "deceleration", &r.deceleration},
+      {"speed_final", "m/s", "end speed (default: 0.1 x the start speed)", &r.speed_final,
+       false},
+      {"hold", "s", "duration of each constant-speed piece", &r.hold},
+      {"threshold", "m", "envelope below which the oscillation died", &r.threshold},
+      {"max_amplitude", "m", "stop as diverged above this", &r.max_amplitude},
+      {"envelope_window", "s", "envelope trailing window", &r.envelope_window},
+      {"output_interval", "s", "sampling", &r.output_interval},
+      {"disturbance", "m", "initial lateral offset of the leading wheelset", &r.disturbance},
+      {"k11", "-", "reduction factor on C11", &r.k11},
+      {"k22", "-", "reduction factor on C22", &r.k22},
+  };
+}
+
+Parameters parameters(BranchRequest& b) {
+  Parameters p = {
+      {"speed_max", "m/s", "first (highest) speed", &b.speed_max, false},
+      {"speed_min", "m/s", "lowest speed followed", &b.speed_min, false},
+      {"step", "m/s", "downward speed step", &b.step},
+      {"bracket", "m/s", "fold bracket width", &b.bracket},
+      {"hopf", "", "the eigenvalue (Hopf) speed in [0.5 speed_min, 1.5 speed_max]", &b.hopf},
+  };
+  for (auto& s : parameters(b.settle)) p.push_back(std::move(s));
+  return p;
+}
+
+Parameters parameters(KijStudyRequest& k) {
+  Parameters p = {
+      {"k", "-", "reduction factors, one branch each", &k.k},
+      {"coefficient", "",
+       "which factor k sets: both (K11 = K22 = K23 = K33), k11, k22", &k.coefficient},
+      {"jobs", "", "worker threads (one factor per thread)", &k.jobs},
+  };
+  for (auto& b : parameters(k.branch)) p.push_back(std::move(b));
+  return p;
+}
+
+Parameters parameters(DerailmentRequest& d) {
+  return {
+      {"mu", "-", "friction coefficient in Nadal's formula", &d.mu},
+      {"flange_angle_deg", "deg", "flange angle (default: the largest contact angle of each wheel)",
+       &d.flange_angle_deg, false},
+      {"q0", "N", "static wheel load Q0 (default: the first sample)", &d.q0, false},
+      {"window", "m", "sliding-mean window", &d.window},
+      {"step", "m", "sliding-mean sampling step", &d.step},
+  };
+}
+
 }  // namespace ferro::scenarios::analysis

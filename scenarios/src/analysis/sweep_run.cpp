@@ -74,6 +74,28 @@ std::map<std::size_t, SweepPointResult> merge(std::map<std::size_t, SweepPointRe
 
 }  // namespace
 
+Parameters parameters(SweepRequest& r) {
+  Parameters p = {
+      {"speed_min", "m/s", "lowest speed", &r.speed_min, false},
+      {"speed_max", "m/s", "highest speed", &r.speed_max, false},
+      {"points", "", "speeds between min and max", &r.points},
+      {"k", "-", "reduction factors, one set of speeds each", &r.k},
+      {"coefficient", "",
+       "which factor k sets: both (K11 = K22 = K23 = K33), k11, k22", &r.coefficient},
+  };
+  for (auto& s : parameters(r.settle)) p.push_back(std::move(s));
+  Parameters run = {
+      {"jobs", "", "worker threads per process", &r.jobs},
+      {"max_new_points", "",
+       "compute at most this many new points per process, then stop (resumable; for "
+       "batch-queue time limits)",
+       &r.max_new_points, false},
+      {"restart", "", "forget finished points and start over", &r.restart},
+  };
+  for (auto& q : run) p.push_back(std::move(q));
+  return p;
+}
+
 std::vector<SweepPoint> sweep_points(const Scene& scene, const SweepRequest& a, Spelling sp) {
   const std::string min = spelled("speed_min", sp), max = spelled("speed_max", sp);
   if (std::isnan(a.speed_min) || std::isnan(a.speed_max) ||

@@ -247,6 +247,12 @@ void write_contact_bench_reference(const std::string& path,
 }
 
 ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
+  if (opt.reference_elements < 8) {
+    throw std::invalid_argument(fmt::format("--reference-elements: must be >= 8, got {}",
+                                            opt.reference_elements));
+  }
+  if (opt.threads < 1)
+    throw std::invalid_argument(fmt::format("--threads: must be >= 1, got {}", opt.threads));
   ContactBenchResult result;
   std::vector<ContactBenchCase> cases = contact_bench_cases();
   if (opt.quick) {  // 15 cases spread over the ratios, spins, directions and magnitudes
@@ -386,6 +392,21 @@ void write_contact_bench_csv(const ContactBenchResult& result, const std::string
                        r.mean_spin, r.mz_mean_error, r.max_force);
   }
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
+}
+
+Parameters parameters(ContactBenchOptions& o) {
+  return {
+      {"reference_elements", "", "reference MIM: N (grids N x N and 2N x 2N over the patch)",
+       &o.reference_elements},
+      {"reference", "",
+       "reference CSV: read when it holds this case set, else computed and written (shipped: "
+       "tests/data/contact_bench_reference.csv)",
+       &o.reference, false},
+      {"threads", "", "threads of the reference computation", &o.threads},
+      {"table", "", "mim_table HDF5 file (default: build the default table)", &o.table, false},
+      {"min_time", "s", "timing: minimum CPU time per model", &o.min_time_s},
+      {"quick", "", "15 cases, coarse reference and table (smoke test)", &o.quick},
+  };
 }
 
 std::vector<ContactBenchGridRow> contact_bench_grid_study(const ContactBenchResult& r,

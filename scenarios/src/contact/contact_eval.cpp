@@ -45,6 +45,32 @@ fc::ContactPatch make_patch(const EvalInput& in, const fc::CombinedMaterial& m) 
 
 }  // namespace
 
+Parameters parameters(EvalInput& in) {
+  return {
+      {"a", "m", "semi-axis along rolling x (with b)", &in.a, false},
+      {"b", "m", "lateral semi-axis (with a)", &in.b, false},
+      {"curvature_x", "1/m", "A: longitudinal relative curvature", &in.curvature_x, false},
+      {"curvature_y", "1/m", "B: lateral relative curvature", &in.curvature_y, false},
+      {"fn", "N", "normal load", &in.fn, false},
+      {"g1", "Pa", "wheel shear modulus", &in.g1},
+      {"nu1", "-", "wheel Poisson ratio", &in.nu1},
+      {"g2", "Pa", "rail shear modulus", &in.g2},
+      {"nu2", "-", "rail Poisson ratio", &in.nu2},
+      {"mu", "-", "friction coefficient", &in.mu, false},
+      {"xi_x", "-", "longitudinal creepage", &in.xi_x, false},
+      {"xi_y", "-", "lateral creepage", &in.xi_y, false},
+      {"spin", "1/m", "spin creepage", &in.phi, false},
+      {"model", "",
+       "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, chopaya, "
+       "polach, fastsim, fastrip, mim, mim_table",
+       &in.model},
+      {"k11", "-", "reduction factor K11", &in.k11},
+      {"k22", "-", "reduction factor K22", &in.k22},
+      {"k23", "-", "reduction factor K23 (default: K22, as in the thesis 4.2.4)", &in.k23, false},
+      {"k33", "-", "reduction factor K33", &in.k33},
+  };
+}
+
 EvalOutput evaluate_contact(const EvalInput& in, const fc::TangentialModel& model,
                             fc::CoefficientSource source) {
   const fc::Material body1{in.g1, in.nu1}, body2{in.g2, in.nu2};

@@ -85,6 +85,37 @@ double pose_search_modulus(double shear_modulus, double poisson) {
   return e / (2.0 * (1.0 - poisson * poisson));
 }
 
+Parameters parameters(SearchPairOptions& o) {
+  return {
+      {"wheel", "", "wheel profile (.prw or two-column mm)", &o.wheel, false},
+      {"rail", "", "rail profile (.prr or two-column mm)", &o.rail, false},
+      {"gauge", "m", "track gauge", &o.gauge},
+      {"gauge_depth", "m", "gauge measured below top of rail", &o.gauge_depth},
+      {"inclination", "", "rail inclination applied to the rail file: 1:40, 1:20, 0 or an "
+       "angle in rad", &o.inclination},
+      {"flange_back", "m", "flange-back distance", &o.flange_back},
+      {"flange_back_y", "m",
+       "flange-back position in wheel-profile coordinates (default: first point)",
+       &o.flange_back_y, false},
+      {"radius", "m", "nominal wheel radius at the taping line", &o.radius},
+      {"section_step", "m", "wheel section spacing", &o.section_step},
+      {"shear_modulus", "Pa", "for a load", &o.shear_modulus},
+      {"poisson", "-", "for a load", &o.poisson},
+  };
+}
+
+Parameters parameters(PoseInput& in) {
+  return {
+      {"y", "m", "lateral shift, + to the right", &in.y},
+      {"roll", "rad",
+       "+ lowers the right wheel (0 with neither height nor load: solved for rigid contact)",
+       &in.roll, false},
+      {"yaw", "rad", "+ turns the front to the right", &in.yaw, false},
+      {"height", "m", "axle-centre drop below nominal (+ down)", &in.height, false},
+      {"load", "N", "total vertical load: solve the height (Hertz)", &in.load, false},
+  };
+}
+
 PoseResult solve_pose(const fc::WheelRailPair& pair, const PoseInput& in, double estar) {
   fc::WheelsetPose pose{in.y, 0.0, in.roll, in.yaw};
   if (std::isfinite(in.load)) {

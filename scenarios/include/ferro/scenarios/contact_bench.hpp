@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ferro/contact/tangential_model.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {
 
@@ -74,7 +75,11 @@ struct ContactBenchResult {
   bool reference_from_file = false;
 };
 
-/// Runs every model over the cases. Throws std::runtime_error when a model fails.
+/// The options as parameters (see parameters.hpp).
+[[nodiscard]] Parameters parameters(ContactBenchOptions& options);
+
+/// Runs every model over the cases. Throws std::invalid_argument for bad options,
+/// std::runtime_error when a model fails.
 [[nodiscard]] ContactBenchResult run_contact_bench(const ContactBenchOptions& options);
 
 /// Converged-MIM reference of the cases: MIM on N x N and 2N x 2N grids over the patch, the

@@ -13,6 +13,7 @@
 #include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/reduction_factors.hpp"
 #include "ferro/contact/tangential_model.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {
 
@@ -33,6 +34,10 @@ struct EvalInput {
   std::shared_ptr<const contact::KijTable> table;
   std::map<std::string, double> table_point;
 };
+
+/// A case's values as parameters (see parameters.hpp): the table and its point are not among
+/// them.
+[[nodiscard]] Parameters parameters(EvalInput& input);
 
 struct EvalOutput {
   contact::ContactPatch patch;

@@ -8,16 +8,10 @@
 #include <string>
 #include <string_view>
 
+#include "ferro/scenarios/parameters.hpp"
 #include "ferro/scenarios/scene.hpp"
 
 namespace ferro::scenarios {
-
-/// How an error names a value: as a key (`t_end`, the Python keyword) or as a command-line
-/// option (`--t-end`: the key with '-' for '_').
-enum class Spelling { key, option };
-
-/// `key` spelled for messages: unchanged, or "--" + key with '_' replaced by '-'.
-[[nodiscard]] std::string spelled(std::string_view key, Spelling spelling);
 
 /// Run-time overrides; NaN, 0 or empty: keep the scene's value.
 struct RunOverrides {
@@ -41,5 +35,8 @@ struct RunOverrides {
 /// std::invalid_argument whose message starts with the value's spelled name.
 void apply_overrides(Scene& scene, const RunOverrides& overrides,
                      Spelling spelling = Spelling::key);
+
+/// The overrides as parameters (see parameters.hpp): none has a default (unset keeps the scene's).
+[[nodiscard]] Parameters parameters(RunOverrides& overrides);
 
 }  // namespace ferro::scenarios

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {
 
@@ -26,6 +27,8 @@ struct SearchPairOptions {
   double radius = 0.460;          ///< nominal wheel radius at the taping line [m]
   std::string inclination = "0";  ///< rail inclination: 1:40, 1:20, 0 or an angle [rad]
   double section_step = 0.5e-3;   ///< wheel section spacing [m]
+  double shear_modulus = 82.0e9;  ///< of wheel and rail, for a load solve [Pa]
+  double poisson = 0.28;          ///< of wheel and rail, for a load solve [-]
 };
 /// Reads the profiles and builds the pair; errors name the file or the option
 /// (`inclination_name` for the inclination).
@@ -50,6 +53,10 @@ struct PoseResult {
 /// Plane-strain modulus E* = E / (2 (1 - nu^2)) of two equal bodies of shear modulus
 /// `shear_modulus` [Pa] and Poisson ratio `poisson` [-], for the load solve [Pa].
 [[nodiscard]] double pose_search_modulus(double shear_modulus, double poisson);
+
+/// The options and the pose as parameters (see parameters.hpp).
+[[nodiscard]] Parameters parameters(SearchPairOptions& options);
+[[nodiscard]] Parameters parameters(PoseInput& pose);
 
 /// The pose and its contact points for `in`; `estar` [Pa] (pose_search_modulus) is used only
 /// with a load.

@@ -16,6 +16,7 @@
 #include "ferro/scenarios/analysis/output.hpp"
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios::analysis {
 
@@ -111,5 +112,13 @@ struct DerailmentRequest {
 };
 [[nodiscard]] DerailmentOptions derailment_options(const DerailmentRequest& request,
                                                    Spelling spelling = Spelling::key);
+
+/// Each request's values as parameters (see parameters.hpp); a branch's include its settle
+/// request's, a K_ij study's its branch's.
+[[nodiscard]] Parameters parameters(SettleRequest& request);
+[[nodiscard]] Parameters parameters(RampRequest& request);
+[[nodiscard]] Parameters parameters(BranchRequest& request);
+[[nodiscard]] Parameters parameters(KijStudyRequest& request);
+[[nodiscard]] Parameters parameters(DerailmentRequest& request);
 
 }  // namespace ferro::scenarios::analysis

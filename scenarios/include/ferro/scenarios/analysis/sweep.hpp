@@ -103,6 +103,9 @@ struct SweepRequest {
   std::string journal;  ///< folder of finished points, removed when complete ("": none)
 };
 
+/// The request's values as parameters (see parameters.hpp): every field but output and journal.
+[[nodiscard]] Parameters parameters(SweepRequest& request);
+
 /// The points of a request, speeds fastest-varying, each factor validated. Throws
 /// std::invalid_argument naming the bad value.
 [[nodiscard]] std::vector<SweepPoint> sweep_points(const Scene& scene, const SweepRequest& request,
