@@ -36,7 +36,7 @@ std::unique_ptr<VehicleModel> manchester(const std::string& tangential, double a
 
 void BM_vehicle_rhs(benchmark::State& state, const std::string& tangential) {
   const auto m = manchester(tangential);
-  const auto x = m->static_equilibrium();
+  const auto x = static_equilibrium(*m);
   std::vector<double> xdot(x.size());
   for (auto _ : state) {
     benchmark::DoNotOptimize(m->rhs(0.0, x, xdot));
@@ -46,7 +46,7 @@ void BM_vehicle_rhs(benchmark::State& state, const std::string& tangential) {
 // One simulated second from the equilibrium with the leading wheelset 2 mm off, per iteration.
 void run_second(benchmark::State& state, const VehicleModel& m, const IntegratorSettings& s,
                 double output_interval) {
-  auto x0 = m.static_equilibrium();
+  auto x0 = static_equilibrium(m);
   x0[static_cast<std::size_t>(m.state_index("wheelset_1", Dof::y))] += 0.002;
   const auto grid = output_grid(0.0, 1.0, output_interval);
   for (auto _ : state) {

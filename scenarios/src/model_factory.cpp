@@ -76,7 +76,7 @@ std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double spee
 
 std::vector<double> equilibrium_state(const Scene& scene, const vehicle::OdeSystem& system) {
   if (const auto* v = dynamic_cast<const vehicle::VehicleModel*>(&system)) {
-    return v->static_equilibrium(0.0);
+    return vehicle::static_equilibrium(*v, 0.0);
   }
   return std::vector<double>(system.size(), 0.0);
 }
@@ -111,7 +111,7 @@ vehicle::LinearisationAtSpeed linearisation_family(const Scene& scene) {
       if (near != eq.end()) start = near->second;
     }
     lin.x_eq = model == nullptr || start.empty() ? equilibrium_state(shared->scene, *lin.system)
-                                                 : model->static_equilibrium(0.0, start);
+                                                 : vehicle::static_equilibrium(*model, 0.0, start);
     std::lock_guard lock(shared->mutex);
     shared->equilibria.emplace(v, lin.x_eq);
     return lin;

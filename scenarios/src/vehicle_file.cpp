@@ -79,27 +79,41 @@ struct BodyBlock {
   double flange_back_distance = RigidBodySpec::kNaN;
 };
 
+RigidBodySpec make_body(const std::string& name, BodyKind kind, const BodyBlock& b,
+                        const Eigen::Vector3d& position) {
+  RigidBodySpec s;
+  s.name = name;
+  s.kind = kind;
+  s.mass = b.mass;
+  s.inertia = b.inertia;
+  s.position = position;
+  s.active = b.active;
+  s.nominal_rolling_radius = b.rolling_radius;
+  s.spin_dof = b.spin;
+  return s;
+}
+
 BodyBlock read_body(MapReader b, BodyKind kind) {
   BodyBlock out;
-  out.mass = positive(b, "mass", "kg");
+  out.mass = b.number("mass");
   {
     MapReader in = b.map("inertia");
-    out.inertia[0] = positive(in, "roll", "kg m^2");
+    out.inertia[0] = in.number("roll");
     if (kind == BodyKind::wheelset && in.has("spin")) {
       if (in.has("pitch")) in.fail("spin", "give either pitch or spin (the axle axis), not both");
-      out.inertia[1] = positive(in, "spin", "kg m^2");
+      out.inertia[1] = in.number("spin");
       in.allow("pitch");
     } else {
-      out.inertia[1] = positive(in, "pitch", "kg m^2");
+      out.inertia[1] = in.number("pitch");
       if (kind == BodyKind::wheelset) in.allow("spin");
     }
-    out.inertia[2] = positive(in, "yaw", "kg m^2");
+    out.inertia[2] = in.number("yaw");
     in.finish();
   }
   std::vector<std::string> dof_names = {"x", "y", "z", "roll", "pitch", "yaw"};
   std::vector<std::string> defaults = {"y", "z", "roll", "pitch", "yaw"};
   if (kind == BodyKind::wheelset) {
-    out.rolling_radius = positive(b, "nominal_rolling_radius", "m");
+    out.rolling_radius = b.number("nominal_rolling_radius");
     out.flange_back_distance = b.number_or("flange_back_distance", out.flange_back_distance);
     dof_names = {"x", "y", "z", "roll", "yaw", "spin", "spin_perturbation"};
     defaults = {"y", "z", "roll", "yaw"};
@@ -121,22 +135,13 @@ BodyBlock read_body(MapReader b, BodyKind kind) {
     }
   }
   b.finish();
+  // The limits are RigidBodySpec::validate()'s, placed at the key they name.
+  detail::located(
+      b, [&] { make_body(b.path(), kind, out, Eigen::Vector3d::Zero()).validate(b.path()); },
+      b.path());
   return out;
 }
 
-RigidBodySpec make_body(const std::string& name, BodyKind kind, const BodyBlock& b,
-                        const Eigen::Vector3d& position) {
-  RigidBodySpec s;
-  s.name = name;
-  s.kind = kind;
-  s.mass = b.mass;
-  s.inertia = b.inertia;
-  s.position = position;
-  s.active = b.active;
-  s.nominal_rolling_radius = b.rolling_radius;
-  s.spin_dof = b.spin;
-  return s;
-}
 
 // Force at rest on the lower body of an element preloaded in compression by `force` along
 // `axis` (pushing the bodies apart).
@@ -282,12 +287,7 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
     // The thesis' S1002 with a 1/10 conical tread: the tread beyond join_y becomes a cone.
     MapReader t = r.map("wheel_conical_tread");
     w.wheel_tread_conicity = t.number("conicity");
-    if (!(w.wheel_tread_conicity > 0.0 && w.wheel_tread_conicity < 1.0))
-      t.fail("conicity", fmt::format("must lie in (0, 1), got {}", w.wheel_tread_conicity));
     w.wheel_tread_join_y = t.number("join_y");
-    if (!(std::abs(w.wheel_tread_join_y) < 0.1))
-      t.fail("join_y", fmt::format("must lie in (-0.1, 0.1) m (wheel-profile y, taping line at 0), "
-                                   "got {}", w.wheel_tread_join_y));
     t.finish();
   } else {
     r.allow("wheel_conical_tread");
@@ -297,14 +297,8 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   w.conical_curvature_a = r.number_or("conical_curvature_a", w.conical_curvature_a);
   w.conical_curvature_b = r.number_or("conical_curvature_b", w.conical_curvature_b);
   w.friction = r.number_or("friction", w.friction);
-  if (!(w.friction > 0.0 && w.friction <= 2.0))
-    r.fail("friction", fmt::format("must lie in (0, 2], got {}", w.friction));
   w.shear_modulus = r.number_or("shear_modulus", w.shear_modulus);
-  if (!(w.shear_modulus > 0.0))
-    r.fail("shear_modulus", fmt::format("must be > 0 Pa, got {}", w.shear_modulus));
   w.poisson = r.number_or("poisson", w.poisson);
-  if (!(w.poisson >= 0.0 && w.poisson < 0.5))
-    r.fail("poisson", fmt::format("must lie in [0, 0.5), got {}", w.poisson));
   w.normal_model = r.string_or("normal", w.normal_model, {"hertz", "semi_hertz"});
   w.tangential_model = r.string_or("tangential", w.tangential_model,
                                    contact::tangential_model_names());
@@ -335,9 +329,6 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
     const char* names[] = {"k11", "k22", "k23", "k33"};
     for (int i = 0; i < 4; ++i) {
       w.reduction[static_cast<std::size_t>(i)] = k.number_or(names[i], 1.0);
-      if (!(w.reduction[static_cast<std::size_t>(i)] > 0.0 &&
-            w.reduction[static_cast<std::size_t>(i)] <= 1.0))
-        k.fail(names[i], "must lie in (0, 1]");
     }
     k.finish();
   } else {
@@ -362,47 +353,12 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
     r.allow("reduction_table_point");
   }
   w.regularisation_speed = r.number_or("regularisation_speed", w.regularisation_speed);
-  if (!(w.regularisation_speed > 0.0))
-    r.fail("regularisation_speed", fmt::format("must be > 0 m/s, got {}", w.regularisation_speed));
   w.hunt_crossley_alpha = r.number_or("hunt_crossley_alpha", w.hunt_crossley_alpha);
-  if (!(w.hunt_crossley_alpha >= 0.0 && std::isfinite(w.hunt_crossley_alpha)))
-    r.fail("hunt_crossley_alpha",
-           fmt::format("must be finite and >= 0 s/m (0: undamped normal contact), got {}",
-                       w.hunt_crossley_alpha));
 }
 
 void check_wheel_rail(const MapReader& r, const vehicle::WheelRailSpec& w) {
-  const auto need = [&](bool ok, const std::string& key, const std::string& why) {
-    if (!ok) r.fail(key, fmt::format("required for geometry '{}': {}", w.geometry, why));
-  };
-  if (w.geometry == "table" || w.geometry == "search") {
-    need(!w.wheel_profile.empty(), "wheel_profile", "the wheel profile file");
-    need(!w.rail_profile.empty(), "rail_profile", "the rail profile file");
-  } else if (r.has("wheel_conical_tread")) {
-    r.fail("wheel_conical_tread", fmt::format("applies to geometry table or search, not '{}'",
-                                              w.geometry));
-  } else if (w.geometry == "imported") {
-    need(!w.imported_table.empty(), "imported_table", "the CSV contact table");
-  } else if (w.geometry == "conical") {
-    need(w.conicity > 0.0, "conicity", "the equivalent conicity (> 0)");
-    need(w.contact_half_distance > 0.0, "contact_half_distance",
-         "half the lateral distance between the contact points (> 0 m)");
-    need(w.conical_curvature_a > 0.0, "conical_curvature_a",
-         "the longitudinal relative curvature A of the Hertz contact (> 0 1/m)");
-    need(w.conical_curvature_b > 0.0, "conical_curvature_b",
-         "the lateral relative curvature B of the Hertz contact (> 0 1/m)");
-  }
-  if (!(w.track_gauge > 1.0 && w.track_gauge < 2.0))
-    r.fail("track_gauge", fmt::format("must lie in (1, 2) m, got {}", w.track_gauge));
-  if (w.normal_model == "semi_hertz" && w.geometry != "table" && w.geometry != "search") {
-    // Blame the key this block sets (a scene's contact block may set only one of them).
-    r.fail(r.has("normal") || !r.has("geometry") ? "normal" : "geometry",
-           fmt::format("normal 'semi_hertz' reads the gap of the wheel and rail profiles around "
-                       "each contact point, which geometry '{}' does not have; allowed: normal "
-                       "hertz with geometry '{}', or normal semi_hertz with geometry table or "
-                       "search",
-                       w.geometry, w.geometry));
-  }
+  // The limits are WheelRailSpec::validate()'s; its error is placed at the key it names.
+  detail::located(r, [&] { w.validate("wheel_rail"); }, "wheel_rail");
 }
 
 int body_index(const VehicleConfig& config, const std::string& name) {

@@ -77,7 +77,7 @@ TEST(HuntCrossley, bounce_eigenvalue_matches_the_linearised_damping_ratio) {
   constexpr double kRelTol = 1e-4;
   for (double alpha : {1.0, 3.0, 10.0}) {
     const VehicleModel m(bouncing_wheelset(alpha));
-    const auto modes = linear_modes(m, 0.0, m.static_equilibrium());
+    const auto modes = linear_modes(m, 0.0, static_equilibrium(m));
     ASSERT_EQ(modes.size(), 2u);  // one complex pair
     const Oscillator o = linearised_bounce(alpha);
     EXPECT_NEAR(modes.front().damping_ratio / o.zeta, 1.0, kRelTol) << "alpha " << alpha;
@@ -99,7 +99,7 @@ TEST(HuntCrossley, bounce_decays_at_the_linearised_damping_ratio) {
   constexpr double kAlpha = 10.0;  // [s/m], zeta ~ 0.06
   const Oscillator o = linearised_bounce(kAlpha);
   const VehicleModel m(bouncing_wheelset(kAlpha));
-  std::vector<double> x0 = m.static_equilibrium();
+  std::vector<double> x0 = static_equilibrium(m);
   const auto iz = static_cast<std::size_t>(m.state_index("wheelset_1", Dof::z));
   const double z_eq = x0[iz];
   const double amplitude = 0.01 * std::abs(z_eq);
@@ -210,7 +210,7 @@ TEST(HuntCrossley, penetration_rate_is_the_rate_of_the_hertz_penetration) {
     x0[index_of(states, name)] = value;
   };
   // Static position over the defects, wheelset moving laterally, vertically and in roll.
-  x0 = undamped.static_equilibrium();
+  x0 = static_equilibrium(undamped);
   set("wheelset_1.y_dot", 0.05);
   set("wheelset_1.z_dot", -0.004);
   set("wheelset_1.roll_dot", 0.03);
@@ -260,8 +260,8 @@ TEST(HuntCrossley, static_equilibrium_does_not_depend_on_the_damping) {
   in0.selection.scope = in1.selection.scope = "vehicle";
   in0.track = in1.track = nullptr;
   in0.speed.initial = in1.speed.initial = 0.0;
-  const auto x0 = VehicleModel(std::move(in0)).static_equilibrium();
-  const auto x1 = VehicleModel(std::move(in1)).static_equilibrium();
+  const auto x0 = static_equilibrium(VehicleModel(std::move(in0)));
+  const auto x1 = static_equilibrium(VehicleModel(std::move(in1)));
   ASSERT_EQ(x0.size(), x1.size());
   for (std::size_t i = 0; i < x0.size(); ++i) EXPECT_NEAR(x0[i], x1[i], kTol) << "state " << i;
 }

@@ -72,7 +72,7 @@ TEST(Frames, a_pose_relative_to_rolled_rails_gives_the_flat_rail_contact) {
   // A pose relative to the rails with both wheels loaded: the static state on flat rails,
   // shifted 0.2 mm and rolled 0.02 mrad (the cone's 0.1 turns the shift into 0.02 mm of
   // penetration, against ~0.1 mm at rest).
-  std::vector<double> x_flat = flat.static_equilibrium();
+  std::vector<double> x_flat = static_equilibrium(flat);
   x_flat[iy] += 2e-4;
   x_flat[iroll] += 2e-5;
 

@@ -74,8 +74,8 @@ TEST(SemiHertzVehicle, quadratic_gap_equilibrium_approach_equals_hertz) {
   const auto geometry = table(true);
   const VehicleModel hertz(manchester(geometry, "hertz", 0.0));
   const VehicleModel semi(manchester(geometry, "semi_hertz", 0.0));
-  const auto xh = hertz.static_equilibrium(0.0);
-  const auto xs = semi.static_equilibrium(0.0);
+  const auto xh = static_equilibrium(hertz, 0.0);
+  const auto xs = static_equilibrium(semi, 0.0);
   // Approach scale: Hertz at one wheel's share on the 1/10 cone (A = cos(gamma) / (2 r0),
   // B = 1 / (2 * 0.3) of the R300 crown).
   const double share = ManchesterMasses::total() * kG / 8.0;
@@ -107,7 +107,7 @@ TEST(SemiHertzVehicle, straight_track_wheel_loads_equal_the_weight_share) {
   constexpr double kLoadTol = 1e-3;
   const double share = ManchesterMasses::total() * kG / 8.0;
   const VehicleModel m(manchester(table(false), "semi_hertz", 0.0));
-  const auto x = m.static_equilibrium(0.0);
+  const auto x = static_equilibrium(m, 0.0);
   std::vector<double> s(m.signal_info().size());
   m.signals(0.0, x, s);
   double worst = 0.0;

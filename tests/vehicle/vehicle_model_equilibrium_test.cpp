@@ -81,7 +81,7 @@ TEST(VehicleModelEquilibrium, straight_track_wheel_loads_equal_the_weight_share)
   constexpr double kLoadTol = 1e-3;
   for (double speed : {0.0, 55.0}) {
     const VehicleModel m(manchester(speed));
-    const auto x = m.static_equilibrium(0.0);
+    const auto x = static_equilibrium(m, 0.0);
     expect_equal_loads(m, 0.0, x, kLoadTol);
   }
 }
@@ -120,7 +120,7 @@ TEST(VehicleModelEquilibrium, canted_curve_at_balance_speed) {
   in.start_position = s_mid;
   in.selection.frozen = {"x"};
   const VehicleModel m(std::move(in));
-  const auto x = m.static_equilibrium(0.0);
+  const auto x = static_equilibrium(m, 0.0);
   std::vector<double> s(m.signal_info().size());
   m.signals(0.0, x, s);
   const auto motion = track::frame_kinematics(track->alignment().frame(s_mid), v_bal, 0.0, kG);

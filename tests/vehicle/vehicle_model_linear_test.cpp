@@ -30,10 +30,11 @@ using testing::ConicalTestSource;
 constexpr double kG = 9.81;
 
 /// Linear creep data shared by the model and the oracle: Hertz patch at the static wheel load,
-/// Kalker's C11 (K22 = C11/C22 makes f22 = f11, K23 = K33 ~ 0 drops spin, as eq. 150 does).
+/// Kalker's C11 and C22 brought to the smaller of the two by K11 = Cmin/C11 and K22 = Cmin/C22
+/// (reduction factors stay in (0, 1]; f11 = f22 as eq. 150 assumes), K23 = K33 ~ 0 drops spin.
 struct LinearCreep {
   double penetration = 0.0;  // Hertz approach at the wheel load [m]
-  double f = 0.0;            // f11 = f22 [N]
+  double f = 0.0;            // f11 = f22 = G a b min(C11, C22) [N]
   std::array<double, 4> reduction{};
 };
 
@@ -44,10 +45,11 @@ LinearCreep linear_creep(double wheel_load, double A, double B) {
   const auto c = contact::kalker_coefficients_table(h.semi_axis_x, h.semi_axis_y, mat.poisson);
   LinearCreep lc;
   lc.penetration = h.approach;
-  lc.f = mat.shear_modulus * h.semi_axis_x * h.semi_axis_y * c.c11;
+  const double c_min = std::min(c.c11, c.c22);
+  lc.f = mat.shear_modulus * h.semi_axis_x * h.semi_axis_y * c_min;
   // The spin coefficients must be positive for the contact layer; 1e-9 removes spin's effect
   // far below the tolerances here.
-  lc.reduction = {1.0, c.c11 / c.c22, 1e-9, 1e-9};
+  lc.reduction = {c_min / c.c11, c_min / c.c22, 1e-9, 1e-9};
   return lc;
 }
 
@@ -165,7 +167,7 @@ TEST(VehicleModelLinear, kij_table_in_the_rhs_scales_the_critical_speed_as_eq_15
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const double k = k_load[i] * g_layer[j];
-      k11.push_back(k);
+      k11.push_back(k * lc.reduction[0]);
       k22.push_back(k * lc.reduction[1]);
       k23.push_back(lc.reduction[2]);
       k33.push_back(lc.reduction[3]);

@@ -15,9 +15,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "vehicle_model_impl.hpp"
+#include "dynamics.hpp"
 
-namespace ferro::vehicle {
+namespace ferro::vehicle::detail {
 
 void point_state(const BodyData* body, const BodyKinematics& k, const Eigen::Vector3d& p,
                  Eigen::Vector3d& position, Eigen::Vector3d& velocity, Eigen::Vector3d& arm) {
@@ -70,7 +70,7 @@ void absolute_angle(const BodyKinematics& k, bool dynamic_body, int axis, double
 
 }  // namespace
 
-void apply_element(const VehicleModel::Impl& model, const ElementData& e,
+void apply_element(const ModelData& model, const ElementData& e,
                    std::vector<BodyKinematics>& kin, const BodyKinematics& track_frame_a,
                    std::span<const double> x, std::span<double> xdot) {
   const SuspensionElementSpec& s = e.spec;
@@ -141,4 +141,4 @@ void apply_element(const VehicleModel::Impl& model, const ElementData& e,
   }
 }
 
-}  // namespace ferro::vehicle
+}  // namespace ferro::vehicle::detail

@@ -16,10 +16,28 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace ferro::vehicle {
+
+/// A specification value outside its allowed range. field() names it relative to the struct
+/// validated ("mass", "friction", "reduction.k22", ...) so that a loader can point at the key it
+/// came from, rule() says what is allowed and what was given; what() reads
+/// "<where>.<field>: <rule>".
+class SpecError : public std::invalid_argument {
+ public:
+  SpecError(const std::string& where, std::string field, std::string rule)
+      : std::invalid_argument(where + "." + field + ": " + rule),
+        field_(std::move(field)),
+        rule_(std::move(rule)) {}
+  [[nodiscard]] const std::string& field() const noexcept { return field_; }
+  [[nodiscard]] const std::string& rule() const noexcept { return rule_; }
+
+ private:
+  std::string field_, rule_;
+};
 
 /// Degrees of freedom of a body relative to the track frame, in state order.
 enum class Dof : int { x = 0, y = 1, z = 2, roll = 3, pitch = 4, yaw = 5 };
@@ -41,6 +59,9 @@ struct RigidBodySpec {
   // Wheelsets only:
   double nominal_rolling_radius = kNaN;  ///< r0 [m]
   bool spin_dof = false;  ///< spin-speed perturbation beta as a state (else rolling at V/r0)
+
+  /// The only definition of a body's limits; throws SpecError naming `where`.field.
+  void validate(const std::string& where) const;
 };
 
 enum class ElementType {
@@ -72,6 +93,10 @@ struct SuspensionElementSpec {
   double clearance = 0.0;  ///< bump stop free play [m]
   std::vector<double> table_displacement;  ///< bump stop: total displacement [m], increasing
   std::vector<double> table_force;         ///< bump stop: force at those displacements [N]
+
+  /// The only definition of an element's limits (`n_bodies`: the bodies body_a/body_b index);
+  /// throws SpecError naming `where`.field.
+  void validate(const std::string& where, int n_bodies) const;
 };
 
 /// Wheel-rail contact of every wheelset.
@@ -125,6 +150,16 @@ struct WheelRailSpec {
   /// contact (Hertz alone). Linearised about a static load N0, each point adds a viscous
   /// coefficient alpha N0 [N s/m] (see wheel_rail.cpp).
   double hunt_crossley_alpha = 0.0;
+
+  /// The only definition of the wheel-rail limits; throws SpecError naming `where`.field.
+  /// validate_geometry: the geometry kind and what it requires (profiles, cone, gauge, r0; files
+  /// are not opened here), checked where the source is built (make_geometry_source);
+  /// validate_mechanics: friction, material, normal and tangential choice, K_ij, damping,
+  /// checked by the model (which receives its geometry source built); validate: both, and the
+  /// normal model's needs of the geometry (the scene loader).
+  void validate_geometry(const std::string& where = "wheel_rail") const;
+  void validate_mechanics(const std::string& where = "wheel_rail") const;
+  void validate(const std::string& where = "wheel_rail") const;
 };
 
 struct VehicleConfig {
@@ -133,6 +168,11 @@ struct VehicleConfig {
   std::vector<SuspensionElementSpec> elements;
   WheelRailSpec wheel_rail;
   double gravity = 9.81;  ///< [m/s^2]
+
+  /// Every body, element and the wheel-rail mechanics (fields named "mass", "k", "friction",
+  /// "gravity" ... with `where` "bodies[i] ('name')", "elements[j] ('name')", "wheel_rail",
+  /// "vehicle"); the geometry source is validated where it is built.
+  void validate() const;
 };
 
 /// What a scene models of a vehicle: the whole vehicle, one bogie (its frame and wheelsets,

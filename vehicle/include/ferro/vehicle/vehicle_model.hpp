@@ -84,9 +84,11 @@
 // displace and roll the rails within the design frame (track.hpp) and do not move the body
 // frames. Normal contact is undamped unless wheel_rail.hunt_crossley_alpha > 0 (Hunt-Crossley
 // damping, wheel_rail.cpp); tangential forces use the Hertz patch of the penetration with that
-// normal force. K_ij tables are not looked up yet (constants only).
+// normal force. K_ij come from the constants or, with wheel_rail.reduction_table, from the table
+// looked up per contact patch.
 
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,6 +97,7 @@
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/tangential_model.hpp"
 #include "ferro/track/track.hpp"
+#include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
 
@@ -113,6 +116,8 @@ struct SpeedProfile {
 
 struct VehicleModelInputs {
   VehicleConfig config;
+  /// What the wheels run on: rigid rails, or a co-running discrete track under every wheelset.
+  track::TrackStructureSpec track_structure;
   ModelSelection selection;
   std::shared_ptr<const track::Track> track;                       ///< null: straight, perfect
   std::shared_ptr<const contact::ContactGeometrySource> geometry;  ///< required
@@ -120,16 +125,28 @@ struct VehicleModelInputs {
   double start_position = 0.0;  ///< arc length of the vehicle reference point (x = 0) at t = 0 [m]
 };
 
+namespace detail {
+struct ModelData;
+struct Workspace;
+}  // namespace detail
+
+/// The model as an OdeSystem: its read-only data (built and validated once, shareable) and the
+/// workspace its evaluations use. One object serves one caller at a time (its workspace is
+/// reused by every evaluation); a model evaluated from several threads needs one object per
+/// thread.
 class VehicleModel final : public OdeSystem {
  public:
   /// Validates everything (std::invalid_argument naming the field, e.g.
-  /// "bodies[2].mass: must be > 0 kg") and builds the tangential model and workspaces.
+  /// "bodies[2].mass: must be > 0 kg") and builds the tangential model and workspace.
   explicit VehicleModel(VehicleModelInputs inputs);
   ~VehicleModel() override;
   VehicleModel(const VehicleModel&) = delete;
   VehicleModel& operator=(const VehicleModel&) = delete;
 
   [[nodiscard]] std::size_t size() const override;
+  /// Only a pose outside the contact geometry's range or the designed track
+  /// (std::out_of_range) and a non-finite derivative of a trial state are recoverable; any
+  /// other failure is fatal.
   int rhs(double t, std::span<const double> x, std::span<double> xdot) const override;
   [[nodiscard]] std::vector<SignalInfo> state_info() const override;
   [[nodiscard]] std::vector<SignalInfo> signal_info() const override;
@@ -140,21 +157,6 @@ class VehicleModel final : public OdeSystem {
 
   /// Every body at its rest position, velocities and internal states zero.
   [[nodiscard]] std::vector<double> rest_state() const;
-  /// Static (steady, at the speed and track position of time t) equilibrium: damped Newton on
-  /// the accelerations, spin accelerations and series-damper rates with every velocity zero,
-  /// from rest_state() with the wheelsets lowered onto the rails. Numerical Jacobian, minimum-norm
-  /// steps (weakly determined directions stay near rest); the car body's x is held at rest (it
-  /// defines the neutral longitudinal position of the whole vehicle). When that Newton does not
-  /// converge (sharp curves at speed: flange contact, bump stops), continuation in speed: the
-  /// equilibrium at V = 0 (no creep forces), then the speed raised in adaptive steps, first to
-  /// wheel_rail.regularisation_speed (the creep forces grow from zero) and then to V(t), each
-  /// Newton warm-started from the previous step with the same criteria. Throws
-  /// std::runtime_error when neither converges (the message gives the speed the continuation
-  /// reached). `start` (size() entries, optional) replaces the rest state as the initial guess
-  /// of the first Newton (e.g. beyond a bump stop's free play).
-  [[nodiscard]] std::vector<double> static_equilibrium(double t = 0.0,
-                                                       std::span<const double> start = {}) const;
-
   [[nodiscard]] std::size_t wheelset_count() const;  ///< wheelsets with contact in the model
   /// State index of a body's position DOF (-1 when frozen, absent, or a wheelset's pitch).
   [[nodiscard]] int state_index(const std::string& body, Dof dof) const;
@@ -162,11 +164,29 @@ class VehicleModel final : public OdeSystem {
   [[nodiscard]] int rate_index(const std::string& body, Dof dof) const;
   [[nodiscard]] const VehicleModelInputs& inputs() const;
 
-  struct Impl;
+  /// The read-only model data and the workspace of this object (vehicle/src/ only).
+  [[nodiscard]] const detail::ModelData& data() const { return *data_; }
+  [[nodiscard]] detail::Workspace& workspace() const { return *workspace_; }
 
  private:
-  std::unique_ptr<Impl> impl_;
+  std::shared_ptr<const detail::ModelData> data_;
+  std::unique_ptr<detail::Workspace> workspace_;
 };
+
+/// Static (steady, at the speed and track position of time t) equilibrium of the model: damped
+/// Newton on the accelerations, spin accelerations and series-damper rates with every velocity
+/// zero, from the rest state with the wheelsets lowered onto the rails. Numerical Jacobian,
+/// minimum-norm steps (weakly determined directions stay near rest); the car body's x is held at
+/// rest (it defines the neutral longitudinal position of the whole vehicle). When that Newton
+/// does not converge (sharp curves at speed: flange contact, bump stops), continuation in speed:
+/// the equilibrium at V = 0 (no creep forces), then the speed raised in adaptive steps, first to
+/// wheel_rail.regularisation_speed (the creep forces grow from zero) and then to V(t), each
+/// Newton warm-started from the previous step with the same criteria. Throws
+/// std::runtime_error when neither converges (the message gives the speed the continuation
+/// reached). `start` (size() entries, optional) replaces the rest state as the initial guess of
+/// the first Newton (e.g. beyond a bump stop's free play).
+[[nodiscard]] std::vector<double> static_equilibrium(const VehicleModel& model, double t = 0.0,
+                                                     std::span<const double> start = {});
 
 /// The geometry source a WheelRailSpec asks for (files resolved relative to base_dir).
 [[nodiscard]] std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
