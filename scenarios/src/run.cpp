@@ -170,10 +170,15 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       if (summary.channels[i].name == name) csv_index.push_back(i);
   }
 
-  summary.output_file = options.output_file.empty() ? scene.output.file : options.output_file;
-  H5File file = H5File::create(summary.output_file);
-  write_metadata(file, scene, "time_simulation");
-  set_status(file, "running", "", 0.0);
+  std::optional<H5File> file;
+  if (options.write_output) {
+    summary.output_file = options.output_file.empty() ? scene.output.file : options.output_file;
+    file.emplace(H5File::create(summary.output_file));
+    write_metadata(*file, scene, "time_simulation");
+    set_status(*file, "running", "", 0.0);
+  } else if (!csv_index.empty()) {
+    throw std::invalid_argument("csv: signals are written to CSV only beside an output file");
+  }
 
   const auto wall_start = std::chrono::steady_clock::now();
   bool stopped_by_request = false;
@@ -187,7 +192,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       for (auto i : csv_index) csv->print(",{}", summary.channels[i].name);
       csv->write("\n");
     }
-    TimeSeriesWriter writer(file, summary.channels, scene.output.flush_seconds);
+    std::optional<TimeSeriesWriter> writer;
+    if (file) writer.emplace(*file, summary.channels, scene.output.flush_seconds);
     std::vector<double> row(n_channels);
     bool skip_first = false;  // each block after the first starts at the previous block's end
     const auto observer = [&](double t, std::span<const double> x) {
@@ -197,7 +203,9 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       }
       std::copy(x.begin(), x.end(), row.begin());
       system->signals(t, x, std::span<double>(row).subspan(n_states));
-      writer.append(t, row);
+      if (writer) writer->append(t, row);
+      ++summary.samples;
+      if (options.on_sample) options.on_sample(t, row);
       summary.t_reached = t;
       for (std::size_t i = 0; i < n_channels; ++i)
         summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
@@ -241,38 +249,41 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       x = result.state;
       first = last;
     }
-    writer.flush();
+    if (writer) writer->flush();
     if (csv) csv->close();
     summary.status = result.status;
     summary.status_text = vehicle::to_string(result.status);
     summary.t_reached = result.t_reached;
     summary.steps = result.steps;
     summary.rhs_evaluations = result.rhs_evaluations;
-    summary.samples = writer.samples();
     summary.message = result.message;
     if (stopped_by_request)
       summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
-    if (result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
+    if (file && result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
       // Keep the state where the solver stopped beside the samples.
-      file.write_vector("/failure/state", result.state, "SI (see /signals units)",
+      file->write_vector("/failure/state", result.state, "SI (see /signals units)",
                         "state at the failure time t_reached, in state order");
     }
   } catch (const std::exception& e) {
     // Record the failure in the file and close it; the original error is what the caller sees.
     try {
-      set_status(file, "error", e.what(), summary.t_reached);
-      file.close();
+      if (file) {
+        set_status(*file, "error", e.what(), summary.t_reached);
+        file->close();
+      }
     } catch (const std::exception&) {
     }
     throw;
   }
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  file.set_attribute("/", "wall_time_s", summary.wall_seconds);
-  file.set_attribute("/", "steps", summary.steps);
-  file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
-  set_status(file, summary.status_text, summary.message, summary.t_reached);
-  file.close();
+  if (file) {
+    file->set_attribute("/", "wall_time_s", summary.wall_seconds);
+    file->set_attribute("/", "steps", summary.steps);
+    file->set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
+    set_status(*file, summary.status_text, summary.message, summary.t_reached);
+    file->close();
+  }
   return summary;
 }
 

@@ -124,7 +124,10 @@ CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector
   return c;
 }
 
-WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+namespace {
+
+// Every option checked before any run.
+void check_options(const WorkPrecisionOptions& options) {
   if (options.rtols.empty()) throw std::invalid_argument("--rtols: give at least one tolerance");
   for (double r : options.rtols) {
     if (!(r > 0.0 && r < 1.0)) {
@@ -144,13 +147,109 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
         fmt::format("--settle: must be finite and >= 0 s, got {}", options.settle));
   }
   if (options.metric != "pointwise" && options.metric != "cycle") {
-    throw std::invalid_argument(fmt::format(
-        "--metric: allowed values: pointwise, cycle; got '{}'", options.metric));
+    throw std::invalid_argument(
+        fmt::format("--metric: allowed values: pointwise, cycle; got '{}'", options.metric));
   }
   if (!(options.target_error > 0.0)) {
     throw std::invalid_argument(
         fmt::format("--target-error: must be > 0, got {}", options.target_error));
   }
+}
+
+// The compared states: options.states by name, else every wheelset's lateral and yaw state.
+std::vector<std::size_t> compared_state_indices(const std::vector<vehicle::SignalInfo>& info,
+                                                const WorkPrecisionOptions& options) {
+  std::vector<std::size_t> index;
+  if (options.states.empty()) {
+    for (std::size_t i = 0; i < info.size(); ++i) {
+      const std::string& n = info[i].name;
+      const bool wheelset = n.rfind("wheelset", 0) == 0;
+      const bool lateral = n.size() > 2 && n.compare(n.size() - 2, 2, ".y") == 0;
+      const bool yaw = n.size() > 4 && n.compare(n.size() - 4, 4, ".yaw") == 0;
+      if (wheelset && (lateral || yaw)) index.push_back(i);
+    }
+    if (index.empty()) {
+      throw std::invalid_argument(
+          "--states: the model has no wheelset lateral or yaw state; name the states to compare");
+    }
+  } else {
+    for (const std::string& name : options.states) {
+      const auto it = std::find_if(info.begin(), info.end(),
+                                   [&](const vehicle::SignalInfo& s) { return s.name == name; });
+      if (it == info.end()) {
+        std::vector<std::string> names;
+        for (const auto& s : info) names.push_back(s.name);
+        throw std::invalid_argument(
+            fmt::format("--states: unknown state '{}'; states: {}", name, fmt::join(names, ", ")));
+      }
+      index.push_back(static_cast<std::size_t>(it - info.begin()));
+    }
+  }
+  return index;
+}
+
+// The state at `settle` of the reference integration from x0 (x0 itself when settle is 0).
+std::vector<double> settled_state(const vehicle::OdeSystem& system, std::vector<double> x0,
+                                  const vehicle::IntegratorSettings& ref_settings,
+                                  const Scene& scene, const WorkPrecisionOptions& options,
+                                  WorkPrecisionReport& report) {
+  const double t0 = options.settle;
+  if (t0 > 0.0) {
+    std::vector<double> settled;
+    auto integrator = vehicle::make_integrator(ref_settings);
+    const double start = cpu_now();
+    const auto res =
+        integrator->integrate(system, x0, vehicle::output_grid(0.0, t0, scene.output.interval),
+                              [&](double, std::span<const double> x) {
+                                settled.assign(x.begin(), x.end());
+                                return true;
+                              });
+    report.settle_cpu_seconds = cpu_now() - start;
+    if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
+      throw std::runtime_error(fmt::format(
+          "work-precision: the reference's settling run (cvode_bdf, rtol {}) stopped at t = {} "
+          "s of {} s: {}",
+          options.reference_rtol, res.t_reached, t0, res.message));
+    }
+    x0 = settled;
+  }
+  return x0;
+}
+
+// Error and cycle error of a completed run against the reference (see the header).
+void measure_errors(WorkPrecisionPoint& p, const Trajectory& run, const Trajectory& ref,
+                    const std::vector<double>& peak, const std::vector<CycleStatistics>& ref_cycles,
+                    const std::vector<CycleStatistics>& run_cycles) {
+  const std::size_t n = peak.size();
+  double err = 0.0;
+  for (std::size_t t = 0; t < run.compared.size(); ++t) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (peak[k] > 0.0) {
+        err = std::max(err, std::abs(run.compared[t][k] - ref.compared[t][k]) / peak[k]);
+      }
+    }
+  }
+  p.error = err;
+  double cyc = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& r = ref_cycles[k];
+    if (r.amplitude > 0.0) {
+      cyc = std::max(cyc, std::abs(run_cycles[k].amplitude - r.amplitude) / r.amplitude);
+    }
+    // A frequency needs at least two whole periods in the reference.
+    if (r.crossings >= 3) {
+      const double f = run_cycles[k].frequency;
+      cyc = std::max(cyc, std::isfinite(f) ? std::abs(f - r.frequency) / r.frequency
+                                           : std::numeric_limits<double>::infinity());
+    }
+  }
+  p.cycle_error = cyc;
+}
+
+}  // namespace
+
+WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+  check_options(options);
   // Every entry is checked before any run.
   std::vector<vehicle::IntegratorSettings> settings;
   std::vector<std::string> labels;
@@ -174,32 +273,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   report.metric = options.metric;
 
   const auto info = system->state_info();
-  std::vector<std::size_t> index;
-  if (options.states.empty()) {
-    for (std::size_t i = 0; i < info.size(); ++i) {
-      const std::string& n = info[i].name;
-      const bool wheelset = n.rfind("wheelset", 0) == 0;
-      const bool lateral = n.size() > 2 && n.compare(n.size() - 2, 2, ".y") == 0;
-      const bool yaw = n.size() > 4 && n.compare(n.size() - 4, 4, ".yaw") == 0;
-      if (wheelset && (lateral || yaw)) index.push_back(i);
-    }
-    if (index.empty()) {
-      throw std::invalid_argument(
-          "--states: the model has no wheelset lateral or yaw state; name the states to compare");
-    }
-  } else {
-    for (const std::string& name : options.states) {
-      const auto it = std::find_if(info.begin(), info.end(),
-                                   [&](const vehicle::SignalInfo& s) { return s.name == name; });
-      if (it == info.end()) {
-        std::vector<std::string> names;
-        for (const auto& s : info) names.push_back(s.name);
-        throw std::invalid_argument(fmt::format("--states: unknown state '{}'; states: {}", name,
-                                                fmt::join(names, ", ")));
-      }
-      index.push_back(static_cast<std::size_t>(it - info.begin()));
-    }
-  }
+  const std::vector<std::size_t> index = compared_state_indices(info, options);
   for (std::size_t i : index) report.compared_states.push_back(info[i].name);
 
   vehicle::IntegratorSettings ref_settings = scene.solver;
@@ -210,25 +284,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   ref_settings.atol = options.reference_rtol * options.atol_per_rtol;
 
   const double t0 = options.settle;
-  if (t0 > 0.0) {
-    std::vector<double> settled;
-    auto integrator = vehicle::make_integrator(ref_settings);
-    const double start = cpu_now();
-    const auto res = integrator->integrate(*system, x0,
-                                           vehicle::output_grid(0.0, t0, scene.output.interval),
-                                           [&](double, std::span<const double> x) {
-                                             settled.assign(x.begin(), x.end());
-                                             return true;
-                                           });
-    report.settle_cpu_seconds = cpu_now() - start;
-    if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
-      throw std::runtime_error(fmt::format(
-          "work-precision: the reference's settling run (cvode_bdf, rtol {}) stopped at t = {} "
-          "s of {} s: {}",
-          options.reference_rtol, res.t_reached, t0, res.message));
-    }
-    x0 = settled;
-  }
+  x0 = settled_state(*system, x0, ref_settings, scene, options, report);
   const std::vector<double> times =
       vehicle::output_grid(t0, t0 + scene.simulation.t_end, scene.output.interval);
   const Trajectory ref = integrate(*system, x0, times, ref_settings, index);
@@ -271,30 +327,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
     fill(p, run);
     if (run.result.status == vehicle::IntegrationResult::Status::kCompleted &&
         run.compared.size() == ref.compared.size()) {
-      double err = 0.0;
-      for (std::size_t t = 0; t < run.compared.size(); ++t) {
-        for (std::size_t k = 0; k < index.size(); ++k) {
-          if (peak[k] > 0.0) {
-            err = std::max(err, std::abs(run.compared[t][k] - ref.compared[t][k]) / peak[k]);
-          }
-        }
-      }
-      p.error = err;
-      const auto run_cycles = cycles(run);
-      double cyc = 0.0;
-      for (std::size_t k = 0; k < index.size(); ++k) {
-        const auto& r = report.reference_cycles[k];
-        if (r.amplitude > 0.0) {
-          cyc = std::max(cyc, std::abs(run_cycles[k].amplitude - r.amplitude) / r.amplitude);
-        }
-        // A frequency needs at least two whole periods in the reference.
-        if (r.crossings >= 3) {
-          const double f = run_cycles[k].frequency;
-          cyc = std::max(cyc, std::isfinite(f) ? std::abs(f - r.frequency) / r.frequency
-                                               : std::numeric_limits<double>::infinity());
-        }
-      }
-      p.cycle_error = cyc;
+      measure_errors(p, run, ref, peak, report.reference_cycles, cycles(run));
     } else {
       p.error = std::numeric_limits<double>::quiet_NaN();
       p.cycle_error = p.error;

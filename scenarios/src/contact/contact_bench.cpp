@@ -246,6 +246,121 @@ void write_contact_bench_reference(const std::string& path,
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
 }
 
+namespace {
+
+// The mim_table file: given, or built (default spec) into a temporary file.
+std::string bench_table_path(const ContactBenchOptions& opt) {
+  std::string table_path = opt.table;
+  if (table_path.empty()) {
+    fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
+    if (opt.quick) {
+      spec.ratio = {0.2, 1.0, 5.0};
+      spec.xi_x = {0.0, 0.5, 1.2, 2.5, 5.0};
+      spec.xi_y = spec.xi_x;
+      spec.spin = {-9.0, -3.0, -1.0, 0.0, 1.0, 3.0, 9.0};
+      spec.elements = 8;
+      spec.grid = "minor";
+    }
+    spec.threads = std::max(1, opt.threads);
+    table_path = (std::filesystem::temp_directory_path() /
+                  fmt::format("ferrodyn_bench_mim_table_{}.h5", static_cast<long>(::getpid())))
+                     .string();
+    fc::MimTable::build(spec).write_hdf5(table_path);
+  }
+
+  return table_path;
+}
+
+struct BenchModel {
+  std::string label, name;
+  fc::ModelOptions options;
+};
+
+// Every model and setting the bench times, with the mim_table file.
+std::vector<BenchModel> bench_models(const std::string& table_path) {
+  return {
+      {"kalker_linear", "kalker_linear", {}},
+      {"linear_saturated", "linear_saturated", {}},
+      {"vermeulen_johnson", "vermeulen_johnson", {}},
+      {"shen_hedrick_elkins", "shen_hedrick_elkins", {}},
+      {"chopaya", "chopaya", {}},
+      {"polach", "polach", {}},
+      {"fastsim 20x20", "fastsim", {{"mx", "20"}, {"my", "20"}}},
+      {"fastsim 50x50", "fastsim", {{"mx", "50"}, {"my", "50"}}},
+      {"fastsim 20x20 elliptic", "fastsim", {{"mx", "20"}, {"my", "20"}, {"bound", "elliptic"}}},
+      {"fastsim 10x10 adaptive",
+       "fastsim",
+       {{"mx", "10"}, {"my", "10"}, {"flexibility", "adaptive"}}},
+      {"fastsim 20x20 adaptive",
+       "fastsim",
+       {{"mx", "20"}, {"my", "20"}, {"flexibility", "adaptive"}}},
+      {"fastsim 50x50 adaptive",
+       "fastsim",
+       {{"mx", "50"}, {"my", "50"}, {"flexibility", "adaptive"}}},
+      {"fastrip 8x8", "fastrip", {{"mx", "8"}, {"my", "8"}}},
+      {"fastrip 12x12", "fastrip", {{"mx", "12"}, {"my", "12"}}},
+      {"fastrip 20x20", "fastrip", {{"mx", "20"}, {"my", "20"}}},
+      {"fastrip 12x12 weighted", "fastrip", {{"slip_flexibility", "weighted"}}},
+      {"fastrip 12x12 three", "fastrip", {{"slip_flexibility", "three"}}},
+      {"mim_table", "mim_table", {{"table", table_path}}},
+      {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
+      {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},
+      {"mim 20 patch_richardson", "mim", {{"elements", "20"}, {"grid", "patch_richardson"}}},
+      {"mim 25 patch_richardson", "mim", {{"elements", "25"}, {"grid", "patch_richardson"}}},
+  };
+}
+
+// Times one model over the cases and measures its errors against the reference.
+ContactBenchRow bench_row(const BenchModel& e, const std::vector<ContactBenchCase>& cases,
+                          const std::vector<fc::TangentialProblem>& problems,
+                          const std::vector<ContactBenchReference>& reference, double min_time_s) {
+  const auto problem = [&](std::size_t k) -> const fc::TangentialProblem& { return problems[k]; };
+  const double s = kFriction * kNormalForce;
+  const auto model = fc::make_tangential_model(e.name, e.options);
+  std::vector<fc::TangentialSolution> forces;
+  double t0 = cpu_seconds();
+  for (std::size_t k = 0; k < cases.size(); ++k) forces.push_back(model->solve(problem(k)));
+  double elapsed = cpu_seconds() - t0;
+  long evaluations = static_cast<long>(cases.size());
+  if (elapsed < min_time_s) {  // timed passes with warm caches
+    evaluations = 0;
+    t0 = cpu_seconds();
+    do {
+      for (std::size_t k = 0; k < cases.size(); ++k) (void)model->solve(problem(k));
+      evaluations += static_cast<long>(cases.size());
+      elapsed = cpu_seconds() - t0;
+    } while (elapsed < min_time_s);
+  }
+  ContactBenchRow row;
+  row.label = e.label;
+  row.us_per_eval = 1e6 * elapsed / static_cast<double>(evaluations);
+  std::vector<double> err;
+  double sum_spin = 0.0, sum_plain = 0.0, sum_mz = 0.0;
+  int n_spin = 0, n_plain = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const double fx = forces[k].force_x / s, fy = forces[k].force_y / s;
+    const double ex = std::hypot(fx - reference[k].fx, fy - reference[k].fy);
+    err.push_back(ex);
+    (cases[k].spin != 0.0 ? sum_spin : sum_plain) += ex;
+    (cases[k].spin != 0.0 ? n_spin : n_plain) += 1;
+    sum_mz += std::abs(forces[k].moment_z / (s * kPatchScale) - reference[k].mz);
+    row.max_force = std::max(row.max_force, std::hypot(fx, fy));
+  }
+  double sum = 0.0;
+  for (double v : err) sum += v;
+  std::sort(err.begin(), err.end());
+  row.mean_error = sum / static_cast<double>(err.size());
+  row.p95_error =
+      err[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(err.size()))) - 1];
+  row.max_error = err.back();
+  row.mean_no_spin = n_plain > 0 ? sum_plain / n_plain : 0.0;
+  row.mean_spin = n_spin > 0 ? sum_spin / n_spin : 0.0;
+  row.mz_mean_error = sum_mz / static_cast<double>(cases.size());
+  return row;
+}
+
+}  // namespace
+
 ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
   if (opt.reference_elements < 8) {
     throw std::invalid_argument(fmt::format("--reference-elements: must be >= 8, got {}",
@@ -277,24 +392,7 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
     }
   }
 
-  // mim_table: given or built (default spec) into a temporary file.
-  std::string table_path = opt.table;
-  if (table_path.empty()) {
-    fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
-    if (opt.quick) {
-      spec.ratio = {0.2, 1.0, 5.0};
-      spec.xi_x = {0.0, 0.5, 1.2, 2.5, 5.0};
-      spec.xi_y = spec.xi_x;
-      spec.spin = {-9.0, -3.0, -1.0, 0.0, 1.0, 3.0, 9.0};
-      spec.elements = 8;
-      spec.grid = "minor";
-    }
-    spec.threads = std::max(1, opt.threads);
-    table_path = (std::filesystem::temp_directory_path() /
-                  fmt::format("ferrodyn_bench_mim_table_{}.h5", static_cast<long>(::getpid())))
-                     .string();
-    fc::MimTable::build(spec).write_hdf5(table_path);
-  }
+  const std::string table_path = bench_table_path(opt);
 
   std::vector<fc::ContactPatch> patches(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) patches[k] = contact_bench_patch(cases[k]);
@@ -303,80 +401,8 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
   for (std::size_t k = 0; k < cases.size(); ++k) {
     problems[k] = contact_bench_problem(cases[k], patches[k]);
   }
-  const auto problem = [&](std::size_t k) -> const fc::TangentialProblem& { return problems[k]; };
-
-  struct Entry {
-    std::string label, name;
-    fc::ModelOptions options;
-  };
-  std::vector<Entry> models = {
-      {"kalker_linear", "kalker_linear", {}},
-      {"linear_saturated", "linear_saturated", {}},
-      {"vermeulen_johnson", "vermeulen_johnson", {}},
-      {"shen_hedrick_elkins", "shen_hedrick_elkins", {}},
-      {"chopaya", "chopaya", {}},
-      {"polach", "polach", {}},
-      {"fastsim 20x20", "fastsim", {{"mx", "20"}, {"my", "20"}}},
-      {"fastsim 50x50", "fastsim", {{"mx", "50"}, {"my", "50"}}},
-      {"fastsim 20x20 elliptic", "fastsim", {{"mx", "20"}, {"my", "20"}, {"bound", "elliptic"}}},
-      {"fastsim 10x10 adaptive", "fastsim", {{"mx", "10"}, {"my", "10"}, {"flexibility", "adaptive"}}},
-      {"fastsim 20x20 adaptive", "fastsim", {{"mx", "20"}, {"my", "20"}, {"flexibility", "adaptive"}}},
-      {"fastsim 50x50 adaptive", "fastsim", {{"mx", "50"}, {"my", "50"}, {"flexibility", "adaptive"}}},
-      {"fastrip 8x8", "fastrip", {{"mx", "8"}, {"my", "8"}}},
-      {"fastrip 12x12", "fastrip", {{"mx", "12"}, {"my", "12"}}},
-      {"fastrip 20x20", "fastrip", {{"mx", "20"}, {"my", "20"}}},
-      {"fastrip 12x12 weighted", "fastrip", {{"slip_flexibility", "weighted"}}},
-      {"fastrip 12x12 three", "fastrip", {{"slip_flexibility", "three"}}},
-      {"mim_table", "mim_table", {{"table", table_path}}},
-      {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
-      {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},
-      {"mim 20 patch_richardson", "mim", {{"elements", "20"}, {"grid", "patch_richardson"}}},
-      {"mim 25 patch_richardson", "mim", {{"elements", "25"}, {"grid", "patch_richardson"}}},
-  };
-
-  const double s = kFriction * kNormalForce;
-  for (const Entry& e : models) {
-    const auto model = fc::make_tangential_model(e.name, e.options);
-    std::vector<fc::TangentialSolution> forces;
-    double t0 = cpu_seconds();
-    for (std::size_t k = 0; k < cases.size(); ++k) forces.push_back(model->solve(problem(k)));
-    double elapsed = cpu_seconds() - t0;
-    long evaluations = static_cast<long>(cases.size());
-    if (elapsed < opt.min_time_s) {  // timed passes with warm caches
-      evaluations = 0;
-      t0 = cpu_seconds();
-      do {
-        for (std::size_t k = 0; k < cases.size(); ++k) (void)model->solve(problem(k));
-        evaluations += static_cast<long>(cases.size());
-        elapsed = cpu_seconds() - t0;
-      } while (elapsed < opt.min_time_s);
-    }
-    ContactBenchRow row;
-    row.label = e.label;
-    row.us_per_eval = 1e6 * elapsed / static_cast<double>(evaluations);
-    std::vector<double> err;
-    double sum_spin = 0.0, sum_plain = 0.0, sum_mz = 0.0;
-    int n_spin = 0, n_plain = 0;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      const double fx = forces[k].force_x / s, fy = forces[k].force_y / s;
-      const double ex = std::hypot(fx - result.reference[k].fx, fy - result.reference[k].fy);
-      err.push_back(ex);
-      (cases[k].spin != 0.0 ? sum_spin : sum_plain) += ex;
-      (cases[k].spin != 0.0 ? n_spin : n_plain) += 1;
-      sum_mz += std::abs(forces[k].moment_z / (s * kPatchScale) - result.reference[k].mz);
-      row.max_force = std::max(row.max_force, std::hypot(fx, fy));
-    }
-    double sum = 0.0;
-    for (double v : err) sum += v;
-    std::sort(err.begin(), err.end());
-    row.mean_error = sum / static_cast<double>(err.size());
-    row.p95_error = err[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(err.size()))) - 1];
-    row.max_error = err.back();
-    row.mean_no_spin = n_plain > 0 ? sum_plain / n_plain : 0.0;
-    row.mean_spin = n_spin > 0 ? sum_spin / n_spin : 0.0;
-    row.mz_mean_error = sum_mz / static_cast<double>(cases.size());
-    result.rows.push_back(row);
-  }
+  for (const BenchModel& e : bench_models(table_path))
+    result.rows.push_back(bench_row(e, cases, problems, result.reference, opt.min_time_s));
   if (opt.table.empty()) std::filesystem::remove(table_path);
   return result;
 }

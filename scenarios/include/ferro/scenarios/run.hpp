@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct RunOptions {
   /// Simulated seconds per wall-clock second (0 = as fast as possible). With pace 1 a run
   /// advances in real time, so it can be watched live.
   double pace = 0.0;
+  /// Called with each sample: time [s] and the values of RunSummary::channels [SI].
+  std::function<void(double t, std::span<const double> values)> on_sample;
+  /// false: no HDF5 (nor CSV) file; the samples reach the caller through on_sample only.
+  bool write_output = true;
 };
 
 struct RunSummary {
@@ -34,7 +39,7 @@ struct RunSummary {
   double wall_seconds = 0.0;
   long steps = 0;
   long rhs_evaluations = 0;
-  std::string output_file;
+  std::string output_file;                    ///< empty when no file was written
   std::string csv_file;                       ///< empty when no CSV was asked for
   std::vector<vehicle::SignalInfo> channels;  ///< states then derived signals
   std::size_t state_count = 0;                ///< the first state_count channels are states

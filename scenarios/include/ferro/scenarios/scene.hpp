@@ -76,9 +76,25 @@ struct Scene {
   EigenConfig eigen;
 };
 
+/// A value given by key in place of the file's: the dotted key path from the scene's root
+/// ("simulation.speed", "solver.integrator", "model.vehicle.wheel_rail.friction"; the path runs
+/// on into a part or a vehicle file given by file name) and the value as YAML text ("40",
+/// "cvode_bdf", "[1, 2]", "{shear_modulus: 8e10}").
+struct KeyOverride {
+  std::string key;
+  std::string value;
+};
+
 /// Loads and validates a scene. Throws YamlInputError (file:line:col: key: message) for any bad
 /// input, including values that fail the parameter structs' validate().
 [[nodiscard]] Scene load_scene(const std::string& path);
+/// The same with values replaced by key before reading. An error in an overridden value names
+/// the key, without a line, and says it was given as an override.
+[[nodiscard]] Scene load_scene(const std::string& path, const std::vector<KeyOverride>& overrides);
+/// A scene given as YAML text: `path` names it in messages and its folder is where relative
+/// file names are looked for.
+[[nodiscard]] Scene load_scene_text(const std::string& text, const std::string& path,
+                                    const std::vector<KeyOverride>& overrides = {});
 
 /// For a vehicle scene on designed track: why the run of `t_end` seconds (the scene's speed,
 /// acceleration and start position) leaves the track, or empty when it stays on it. Scenes are
