@@ -187,6 +187,25 @@ void check_track_extent(const Scene& scene, MapReader& sim) {
 
 }  // namespace
 
+YAML::Node scene_value(const YamlFile& scene_file, const std::string& key) {
+  const auto keys = split_key(key);
+  std::vector<YamlFile> files = {scene_file};  // the files the path runs through
+  YAML::Node node = files.back().root;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (!node.IsMap()) return {};
+    const YAML::Node& map = node;
+    YAML::Node next = map[keys[i]];
+    if (!next.IsDefined()) return {};
+    if (next.IsScalar() && i + 1 < keys.size()) {  // a part or vehicle given by file name
+      const fs::path folder = fs::path(files.back().path).parent_path();
+      files.push_back(load_yaml_file((folder / next.Scalar()).string()));
+      next.reset(files.back().root);
+    }
+    node.reset(next);
+  }
+  return node.IsDefined() ? YAML::Clone(node) : YAML::Node();
+}
+
 std::string track_extent_problem(const Scene& scene, double t_end) {
   if (scene.model.type != "vehicle" || scene.track.type != "design") return {};
   double front = 0.0;
@@ -444,17 +463,22 @@ Scene read_scene_with(YamlFile file, const std::vector<KeyOverride>& overrides) 
   try {
     return read_scene(std::move(file), parts);
   } catch (const YamlInputError& e) {
-    for (const KeyOverride& o : overrides) {
-      const bool at = e.key() == o.key || e.key().rfind(o.key + ".", 0) == 0 ||
-                      e.key().rfind(o.key + "[", 0) == 0;
-      if (at && e.line() > 0)
-        throw YamlInputError(path, 0, 0, e.key(), e.message() + " (given as an override)");
-    }
-    throw;
+    throw at_override(e, path, overrides);
   }
 }
 
 }  // namespace
+
+YamlInputError at_override(const YamlInputError& e, const std::string& scene_path,
+                           const std::vector<KeyOverride>& overrides) {
+  for (const KeyOverride& o : overrides) {
+    const bool at = e.key() == o.key || e.key().rfind(o.key + ".", 0) == 0 ||
+                    e.key().rfind(o.key + "[", 0) == 0;
+    if (at && e.line() > 0)
+      return YamlInputError(scene_path, 0, 0, e.key(), e.message() + " (given as an override)");
+  }
+  return e;
+}
 
 Scene load_scene(const std::string& path) { return load_scene(path, {}); }
 

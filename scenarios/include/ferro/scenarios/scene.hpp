@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ferro/scenarios/track_config.hpp"
+#include "ferro/scenarios/yaml_reader.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
@@ -91,10 +92,19 @@ struct KeyOverride {
 /// The same with values replaced by key before reading. An error in an overridden value names
 /// the key, without a line, and says it was given as an override.
 [[nodiscard]] Scene load_scene(const std::string& path, const std::vector<KeyOverride>& overrides);
+/// An error located in a scene's files, moved to the override when its key is one of the
+/// overrides' (or below one): no line, "(given as an override)" added. Else `e` unchanged.
+[[nodiscard]] YamlInputError at_override(const YamlInputError& e, const std::string& scene_path,
+                                         const std::vector<KeyOverride>& overrides);
+
 /// A scene given as YAML text: `path` names it in messages and its folder is where relative
 /// file names are looked for.
 [[nodiscard]] Scene load_scene_text(const std::string& text, const std::string& path,
                                     const std::vector<KeyOverride>& overrides = {});
+
+/// The value at a dotted key path of a scene (as KeyOverride::key, through parts and vehicle
+/// files given by file name) as written in its files; a null node when absent.
+[[nodiscard]] YAML::Node scene_value(const YamlFile& scene_file, const std::string& key);
 
 /// For a vehicle scene on designed track: why the run of `t_end` seconds (the scene's speed,
 /// acceleration and start position) leaves the track, or empty when it stays on it. Scenes are

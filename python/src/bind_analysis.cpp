@@ -1,0 +1,351 @@
+// Analyses from Python: eigenvalues against speed, the critical-speed studies, the sweep and
+// the derailment assessment, each returning arrays and dicts (units in the keys' docs).
+#include <fmt/format.h>
+
+#include <complex>
+#include <filesystem>
+
+#include <pybind11/stl/filesystem.h>
+
+#include "common.hpp"
+#include "ferro/scenarios/analysis/report.hpp"
+#include "ferro/scenarios/analysis/studies.hpp"
+#include "ferro/scenarios/analysis/sweep.hpp"
+#include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/report.hpp"
+#include "ferro/scenarios/run.hpp"
+
+namespace ferro::python {
+namespace {
+
+namespace an = scenarios::analysis;
+
+py::array_t<double> arr(std::vector<double> v) { return to_numpy(std::move(v)); }
+
+template <class T, class F>
+py::array_t<double> column(const std::vector<T>& items, F f) {
+  std::vector<double> v;
+  v.reserve(items.size());
+  for (const auto& i : items) v.push_back(f(i));
+  return arr(std::move(v));
+}
+
+py::object opt(const std::optional<double>& v) {
+  return v ? py::object(py::float_(*v)) : py::object(py::none());
+}
+
+// Runs `work` without the GIL; library input errors become SceneError or ValueError.
+template <class F>
+auto released(const std::string& file, F work) {
+  try {
+    py::gil_scoped_release release;
+    return work();
+  } catch (const scenarios::YamlInputError& e) {
+    raise_scene_error(e, file);
+  }
+}
+
+py::dict eigen_dict(const scenarios::Scene& scene, const scenarios::EigenReport& r) {
+  py::dict d;
+  d["speed"] = column(r.sweep, [](const auto& p) { return p.speed; });
+  d["damping_ratio"] = column(r.sweep, [](const auto& p) { return p.least_damped.damping_ratio; });
+  d["frequency"] = column(r.sweep, [](const auto& p) { return p.least_damped.frequency_hz; });
+  std::vector<std::complex<double>> lambda;
+  for (const auto& p : r.sweep) lambda.push_back(p.least_damped.eigenvalue);
+  d["eigenvalue"] = py::array(py::cast(lambda));
+  d["critical_speed"] = opt(r.critical_speed);
+  d["closed_form_critical_speed"] = opt(r.closed_form_critical_speed);
+  d["closed_form_note"] = r.closed_form_note;
+  py::list modes;
+  for (const auto& mode : r.modes_at_scene_speed) {
+    py::dict md;
+    md["eigenvalue"] = mode.eigenvalue;
+    md["damping_ratio"] = mode.damping_ratio;
+    md["frequency"] = mode.frequency_hz;
+    modes.append(md);
+  }
+  d["modes_at_scene_speed"] = modes;
+  d["summary"] = scenarios::eigen_sweep_report(scene, r);
+  return d;
+}
+
+py::dict eigenvalues(const SceneSource& source, double k11, double k22, const py::kwargs& kw,
+                     scenarios::RunOverrides range) {
+  scenarios::Scene scene = source.scene;
+  const std::vector<std::string_view> keys = {"speed_min", "speed_max", "points", "tangential"};
+  set_parameters(scenarios::select_parameters(scenarios::parameters(range), keys), kw);
+  try {
+    if (k11 != 1.0 || k22 != 1.0) scene = an::with_reduction(scene, {k11, k22});
+    scenarios::apply_overrides(scene, range, scenarios::Spelling::key);
+  } catch (const std::invalid_argument& e) {
+    raise_scene_error(e, scene.path);
+  }
+  const auto r = released(scene.path, [&] { return scenarios::run_eigen(scene); });
+  return eigen_dict(scene, r);
+}
+
+py::dict branch_dict(const an::KijRow& row, const std::vector<std::string>& names) {
+  const auto& b = row.branch;
+  py::dict d;
+  d["speed"] = column(b.points, [](const auto& p) { return p.speed; });
+  py::list outcome;
+  std::vector<double> amplitude, period, time;
+  std::vector<bool> bisection;
+  for (const auto& p : b.points) {
+    outcome.append(an::to_string(p.run.outcome));
+    for (std::size_t j = 0; j < names.size(); ++j)
+      amplitude.push_back(j < p.run.amplitude.size() ? p.run.amplitude[j] : NAN);
+    period.push_back(p.run.period);
+    time.push_back(p.run.time);
+    bisection.push_back(p.bisection);
+  }
+  d["outcome"] = outcome;
+  d["amplitude"] = to_numpy(std::move(amplitude), {static_cast<py::ssize_t>(b.points.size()),
+                                                    static_cast<py::ssize_t>(names.size())});
+  d["period"] = arr(std::move(period));
+  d["time"] = arr(std::move(time));
+  d["bisection"] = py::array(py::cast(bisection));
+  d["wheelsets"] = names;
+  d["k11"] = row.k.k11;
+  d["k22"] = row.k.k22;
+  d["fold_found"] = b.fold_found;
+  d["lowest_sustained"] = opt(b.lowest_sustained);
+  d["bracket_low"] = b.bracket_low;
+  d["bracket_high"] = b.bracket_high;
+  d["amplitude_squared_zero"] = b.amplitude_squared_zero;
+  d["supercritical"] = b.supercritical;
+  d["hopf_speed"] = opt(row.hopf_speed);
+  d["summary"] = an::branch_report(row, names);
+  return d;
+}
+
+py::dict ramp(const SceneSource& source, const py::kwargs& kw) {
+  an::RampRequest request;
+  set_parameters(an::parameters(request), kw);
+  const auto study = released(source.scene.path, [&] {
+    return an::run_ramp(source.scene, request, scenarios::Spelling::key);
+  });
+  const auto& r = study.result;
+  py::dict d;
+  d["time"] = arr(r.time);
+  d["speed"] = arr(r.speed);
+  d["signal"] = arr(r.signal);
+  d["envelope"] = arr(r.envelope);
+  d["observed"] = study.observed;
+  d["decay_speed"] = opt(r.decay_speed);
+  d["decay_time"] = r.decay_time;
+  d["peak_speed"] = r.peak_speed;
+  d["envelope_growth"] = r.envelope_growth;
+  d["completed"] = r.completed;
+  d["message"] = r.message;
+  d["summary"] = an::ramp_report(study, request);
+  return d;
+}
+
+py::dict bifurcation(const SceneSource& source, const py::kwargs& kw) {
+  an::BranchRequest request;
+  set_parameters(an::parameters(request), kw);
+  std::vector<std::string> names;
+  const an::Reduction k{request.settle.k11, request.settle.k22};
+  const auto row = released(source.scene.path, [&] {
+    return an::run_bifurcation(source.scene, request, k, &names, {}, scenarios::Spelling::key);
+  });
+  return branch_dict(row, names);
+}
+
+py::dict kij_study(const SceneSource& source, const py::kwargs& kw) {
+  an::KijStudyRequest request;
+  set_parameters(an::parameters(request), kw);
+  SignalWatch watch;
+  const auto study = released(source.scene.path, [&] {
+    return an::run_kij_study(source.scene, request, [&watch] { return watch.stop(); }, {},
+                             scenarios::Spelling::key);
+  });
+  watch.raise_if_stopped(py::none());
+  py::dict d;
+  py::list branches;
+  for (const auto& row : study.rows) branches.append(branch_dict(row, study.names));
+  d["branches"] = branches;
+  d["k11"] = column(study.rows, [](const auto& r) { return r.k.k11; });
+  d["k22"] = column(study.rows, [](const auto& r) { return r.k.k22; });
+  d["critical_speed"] = column(study.rows, [](const auto& r) {
+    return r.branch.fold_found ? *r.branch.lowest_sustained : NAN;
+  });
+  d["lowest_sustained"] = column(study.rows, [](const auto& r) {
+    return r.branch.lowest_sustained.value_or(NAN);
+  });
+  d["hopf_speed"] = column(study.rows, [](const auto& r) { return r.hopf_speed.value_or(NAN); });
+  d["summary"] = an::kij_study_report(source.scene, request, study);
+  return d;
+}
+
+py::dict sweep(const SceneSource& source, const py::object& output, const py::kwargs& kw) {
+  an::SweepRequest request;
+  set_parameters(an::parameters(request), kw);
+  if (!output.is_none()) {
+    request.output = py::str(output);
+    request.journal = request.output + ".points";
+  }
+  SignalWatch watch;
+  an::SweepCallbacks callbacks;
+  callbacks.should_stop = [&watch] { return watch.stop(); };
+  auto executor = an::make_sweep_executor(false);
+  const auto r = released(source.scene.path, [&] {
+    return an::run_sweep(source.scene, request, *executor, callbacks, scenarios::Spelling::key);
+  });
+  watch.raise_if_stopped(py::none());
+  py::dict d;
+  const auto& p = r.results;
+  d["speed"] = column(p, [](const auto& x) { return x.point.speed; });
+  d["k11"] = column(p, [](const auto& x) { return x.point.k.k11; });
+  d["k22"] = column(p, [](const auto& x) { return x.point.k.k22; });
+  py::list outcome;
+  std::vector<double> amplitude;
+  for (const auto& x : p) {
+    outcome.append(an::to_string(x.outcome));
+    for (std::size_t j = 0; j < r.wheelset_names.size(); ++j)
+      amplitude.push_back(j < x.amplitude.size() ? x.amplitude[j] : NAN);
+  }
+  d["outcome"] = outcome;
+  d["amplitude"] = to_numpy(std::move(amplitude), {static_cast<py::ssize_t>(p.size()),
+                                                    static_cast<py::ssize_t>(r.wheelset_names.size())});
+  d["period"] = column(p, [](const auto& x) { return x.period; });
+  d["time"] = column(p, [](const auto& x) { return x.time; });
+  d["cpu_time"] = column(p, [](const auto& x) { return x.cpu_seconds; });
+  d["wheelsets"] = r.wheelset_names;
+  d["complete"] = r.complete;
+  d["wall_seconds"] = r.wall_seconds;
+  d["summary"] = r.complete ? an::sweep_report(source.scene, request, r, 1) : std::string();
+  return d;
+}
+
+py::dict derailment(const std::filesystem::path& run_path, const py::kwargs& kw) {
+  const std::string run_file = run_path.string();
+  an::DerailmentRequest request;
+  set_parameters(an::parameters(request), kw);
+  const an::DerailmentOptions o = an::derailment_options(request, scenarios::Spelling::key);
+  const auto r = released(run_file, [&] { return an::assess_derailment_file(run_file, o); });
+  py::dict d;
+  py::list wheels, axles;
+  for (const auto& w : r.wheels) {
+    py::dict x;
+    x["name"] = w.name;
+    x["max_y_over_q"] = w.max_y_over_q;
+    x["max_y_over_q_position"] = w.max_y_over_q_position;
+    x["max_y_over_q_raw"] = w.max_y_over_q_raw;
+    x["flange_angle"] = w.flange_angle;
+    x["nadal"] = w.nadal;
+    x["q0"] = w.q0;
+    x["max_unloading"] = w.max_unloading;
+    x["max_unloading_position"] = w.max_unloading_position;
+    x["pass_nadal"] = w.pass_nadal;
+    x["pass_unloading"] = w.pass_unloading;
+    x["position"] = arr(w.y_over_q_mean.position);
+    x["y_over_q_mean"] = arr(w.y_over_q_mean.mean);
+    wheels.append(x);
+  }
+  for (const auto& a : r.axles) {
+    py::dict x;
+    x["name"] = a.name;
+    x["axle_load"] = a.axle_load;
+    x["limit"] = a.limit;
+    x["max_sum_y"] = a.max_sum_y;
+    x["max_sum_y_position"] = a.max_sum_y_position;
+    x["pass"] = a.pass;
+    x["position"] = arr(a.sum_y_mean.position);
+    x["sum_y_mean"] = arr(a.sum_y_mean.mean);
+    axles.append(x);
+  }
+  d["wheels"] = wheels;
+  d["axles"] = axles;
+  d["mu"] = r.mu;
+  d["pass"] = r.pass;
+  d["summary"] = an::derailment_report(run_file, o, r);
+  return d;
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  scenarios::RunOverrides range;
+  const std::string range_doc = parameter_doc(scenarios::select_parameters(
+      scenarios::parameters(range), {"speed_min", "speed_max", "points", "tangential"}));
+  static const std::string eig_doc =
+      "eigenvalues(scene, **range) -> dict\n\nLinear eigenvalue analysis over a speed range "
+      "(`ferrodyn eig`): each speed about its own equilibrium. Keys: speed [m/s],\n"
+      "damping_ratio [-] and frequency [Hz] of the least damped mode, eigenvalue [1/s]\n"
+      "(complex), critical_speed [m/s] (None: no crossing), closed_form_critical_speed [m/s],\n"
+      "modes_at_scene_speed, summary. Range (default: the scene's analysis.eigen):\n" +
+      range_doc;
+  m.def(
+      "eigenvalues",
+      [](const SceneSource& s, const py::kwargs& kw) {
+        return eigenvalues(s, 1.0, 1.0, kw, scenarios::RunOverrides{});
+      },
+      py::arg("scene"), eig_doc.c_str());
+  static const std::string ceig_doc =
+      "critical_speed_eigen(scene, k11=1.0, k22=1.0, **range) -> dict\n\nThe Hopf speed as "
+      "`ferrodyn critical-speed eigen`: eigenvalues() over 1..150 m/s at 150 speeds unless "
+      "given, with Kalker reduction factors k11, k22 [-].\n";
+  m.def(
+      "critical_speed_eigen",
+      [](const SceneSource& s, double k11, double k22, const py::kwargs& kw) {
+        scenarios::RunOverrides r;
+        r.speed_min = 1.0;
+        r.speed_max = 150.0;
+        r.points = 150;
+        return eigenvalues(s, k11, k22, kw, r);
+      },
+      py::arg("scene"), py::arg("k11") = 1.0, py::arg("k22") = 1.0, ceig_doc.c_str());
+
+  an::RampRequest ramp_request;
+  static const std::string ramp_doc =
+      "critical_speed_ramp(scene, **request) -> dict\n\nDecelerating run after a lateral "
+      "disturbance (`ferrodyn critical-speed ramp`). Keys: time [s], speed [m/s], signal and\n"
+      "envelope [m] of the observed state, decay_speed [m/s] (None: none), peak_speed [m/s],\n"
+      "envelope_growth, completed, message, summary. Request:\n" +
+      parameter_doc(an::parameters(ramp_request));
+  m.def("critical_speed_ramp", &ramp, py::arg("scene"), ramp_doc.c_str());
+
+  an::BranchRequest branch_request;
+  static const std::string bif_doc =
+      "critical_speed_bifurcation(scene, **request) -> dict\n\nLimit-cycle amplitudes "
+      "followed down the periodic branch to its fold (`ferrodyn critical-speed bifurcation`).\n"
+      "Keys: speed [m/s], outcome, amplitude [m] (points x wheelsets), period [s], time [s],\n"
+      "bisection, wheelsets, fold_found, lowest_sustained [m/s] (the nonlinear critical speed),\n"
+      "bracket_low, bracket_high [m/s], hopf_speed [m/s], summary. Request:\n" +
+      parameter_doc(an::parameters(branch_request));
+  m.def("critical_speed_bifurcation", &bifurcation, py::arg("scene"), bif_doc.c_str());
+
+  an::KijStudyRequest kij_request;
+  static const std::string kij_doc =
+      "kij_study(scene, **request) -> dict\n\nThe nonlinear critical speed against Kalker's "
+      "reduction factors (`ferrodyn kij-study`), one branch per factor over `jobs` threads.\n"
+      "Keys: k11, k22, critical_speed [m/s] (the fold; NaN: none found), lowest_sustained\n"
+      "[m/s] (lowest speed with a sustained oscillation), hopf_speed [m/s], branches\n"
+      "(one dict each, as critical_speed_bifurcation), summary. Request:\n" +
+      parameter_doc(an::parameters(kij_request));
+  m.def("kij_study", &kij_study, py::arg("scene"), kij_doc.c_str());
+
+  an::SweepRequest sweep_request;
+  static const std::string sweep_doc =
+      "sweep(scene, output=None, **request) -> dict\n\nIndependent constant-speed runs over "
+      "speeds x reduction factors on `jobs` threads (`ferrodyn sweep`; the same numbers as\n"
+      "the program's serial, threaded and MPI sweeps). output: HDF5 file (and its resumable\n"
+      "journal <output>.points/ until complete). Keys: speed [m/s], k11, k22, outcome,\n"
+      "amplitude [m] (points x wheelsets), period [s], time [s], cpu_time [s], wheelsets,\n"
+      "complete, wall_seconds, summary. Request:\n" +
+      parameter_doc(an::parameters(sweep_request));
+  m.def("sweep", &sweep, py::arg("scene"), py::arg("output") = py::none(), sweep_doc.c_str());
+
+  an::DerailmentRequest derail_request;
+  static const std::string derail_doc =
+      "derailment(run_file, **request) -> dict\n\nDerailment assessment of a run's HDF5 file "
+      "(`ferrodyn derailment`): per wheel the peak of the 2 m sliding mean of Y/Q [-]\n"
+      "against Nadal's limit and the peak unloading dQ/Q0 [-]; per axle the peak sum Y [N]\n"
+      "against Prud'homme's limit [N]; pass. Request:\n" +
+      parameter_doc(an::parameters(derail_request));
+  m.def("derailment", &derailment, py::arg("run_file"), derail_doc.c_str());
+}
+
+}  // namespace ferro::python
