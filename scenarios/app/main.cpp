@@ -1,3 +1,4 @@
+// ferrodyn: the command-line program. Each verb group is one file in this folder.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -49,3 +50,5 @@ int run_main(int argc, char** argv) {
 }
 
 }  // namespace ferro::cli
+
+int main(int argc, char** argv) { return ferro::cli::run_main(argc, argv); }
