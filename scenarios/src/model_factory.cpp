@@ -64,6 +64,7 @@ std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double spee
     in.config = scene.model.vehicle;
     in.selection = scene.model.selection;
     in.track = resources.track;
+    in.track_structure = scene.track.structure;
     in.geometry = resources.geometry;
     in.speed.initial = speed;
     in.speed.acceleration = scene.simulation.acceleration;

@@ -51,7 +51,8 @@ void apply_solver(Scene& scene, const RunOverrides& o, Spelling sp) {
           fmt::format("{}: must be >= 0 s (0: adaptive steps), got {}", name, o.fixed_step));
     if (o.fixed_step > 0.0 && !vehicle::takes_fixed_step(solver.method))
       throw std::invalid_argument(fmt::format(
-          "{}: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} needs 0, got {}",
+          "{}: only arkode_erk, arkode_dirk, odeint_bs3 and bdf2 take a fixed step; {} needs 0, "
+          "got {}",
           name, solver.method, o.fixed_step));
     solver.fixed_step = o.fixed_step;
   }
@@ -95,7 +96,8 @@ Parameters parameters(RunOverrides& o) {
       {"speed", "m/s", "forward speed (simulation.speed)", &o.speed, false},
       {"integrator", "", "integration method (solver.integrator)", &o.integrator, false},
       {"fixed_step", "s",
-       "fixed step of arkode_erk, arkode_dirk, odeint_bs3; 0: adaptive steps (solver.fixed_step)",
+       "fixed step of arkode_erk, arkode_dirk, odeint_bs3, bdf2; 0: adaptive steps "
+       "(solver.fixed_step)",
        &o.fixed_step, false},
       {"rtol", "-", "relative tolerance (solver.rtol)", &o.rtol, false},
       {"atol", "SI state units", "absolute tolerance (solver.atol)", &o.atol, false},

@@ -99,6 +99,71 @@ IrregularityConfig read_irregularity(MapReader& r, const track::TrackDesign& des
 
 }  // namespace
 
+/// `track.structure`: `rigid`, `discrete` (the default ballasted track), or a mapping with
+/// `model` and the components' keys (docs/SCENES.md, "Track structure").
+track::TrackStructureSpec read_structure(MapReader& r) {
+  track::TrackStructureSpec out{track::TrackStructureSpec::Kind::discrete, {}};
+  if (!r.has("structure")) {
+    r.allow("structure");
+    return out;
+  }
+  const std::vector<std::string> models = {"rigid", "discrete"};
+  if (r.yaml()["structure"].IsScalar()) {
+    const std::string kind = r.string("structure", models);
+    if (kind == "rigid") out.kind = track::TrackStructureSpec::Kind::rigid;
+    return out;
+  }
+  MapReader s = r.map("structure");
+  if (s.string_or("model", "discrete", models) == "rigid") {
+    out.kind = track::TrackStructureSpec::Kind::rigid;
+    s.finish();
+    return out;
+  }
+  track::BallastedTrackSpec& b = out.ballasted;
+  {
+    MapReader m = s.map_or_empty("rail");
+    b.rail_mass_per_length = m.number_or("mass_per_length", b.rail_mass_per_length);
+    b.rail_young_modulus = m.number_or("young_modulus", b.rail_young_modulus);
+    b.rail_shear_modulus = m.number_or("shear_modulus", b.rail_shear_modulus);
+    b.rail_inertia_vertical = m.number_or("inertia_vertical", b.rail_inertia_vertical);
+    b.rail_inertia_lateral = m.number_or("inertia_lateral", b.rail_inertia_lateral);
+    b.rail_torsion_constant = m.number_or("torsion_constant", b.rail_torsion_constant);
+    b.rail_height = m.number_or("height", b.rail_height);
+    b.rail_centroid_height = m.number_or("centroid_height", b.rail_centroid_height);
+    b.rail_foot_width = m.number_or("foot_width", b.rail_foot_width);
+    m.finish();
+  }
+  {
+    MapReader m = s.map_or_empty("pad");
+    b.pad_stiffness_vertical = m.number_or("stiffness_vertical", b.pad_stiffness_vertical);
+    b.pad_damping_vertical = m.number_or("damping_vertical", b.pad_damping_vertical);
+    b.pad_stiffness_lateral = m.number_or("stiffness_lateral", b.pad_stiffness_lateral);
+    b.pad_damping_lateral = m.number_or("damping_lateral", b.pad_damping_lateral);
+    b.pad_stiffness_roll = m.number_or("stiffness_roll", b.pad_stiffness_roll);
+    b.pad_damping_roll = m.number_or("damping_roll", b.pad_damping_roll);
+    m.finish();
+  }
+  {
+    MapReader m = s.map_or_empty("sleeper");
+    b.sleeper_mass = m.number_or("mass", b.sleeper_mass);
+    b.sleeper_length = m.number_or("length", b.sleeper_length);
+    b.sleeper_spacing = m.number_or("spacing", b.sleeper_spacing);
+    m.finish();
+  }
+  {
+    MapReader m = s.map_or_empty("ballast");
+    b.ballast_stiffness_vertical = m.number_or("stiffness_vertical", b.ballast_stiffness_vertical);
+    b.ballast_damping_vertical = m.number_or("damping_vertical", b.ballast_damping_vertical);
+    b.ballast_stiffness_lateral = m.number_or("stiffness_lateral", b.ballast_stiffness_lateral);
+    b.ballast_damping_lateral = m.number_or("damping_lateral", b.ballast_damping_lateral);
+    b.ballast_mass = m.number_or("mass", b.ballast_mass);
+    m.finish();
+  }
+  s.finish();
+  detail::located(s, [&] { b.validate("track.structure"); }, "track.structure");
+  return out;
+}
+
 TrackConfig read_track(MapReader& r) {
   TrackConfig out;
   const bool has_sections = r.has("sections");
@@ -143,6 +208,7 @@ TrackConfig read_track(MapReader& r) {
   for (auto& item : detail::map_list(r, "irregularities", "an irregularity {type, ...}")) {
     out.irregularities.push_back(read_irregularity(item, d, out.type == "design"));
   }
+  out.structure = read_structure(r);
   if (out.type == "straight" && !out.irregularities.empty()) {
     r.fail("irregularities",
            "need a bounded track: give 'length' (straight) or 'sections' (design)");

@@ -227,7 +227,7 @@ TEST(RunFailure, a_duration_or_speed_override_that_leaves_the_track_is_refused) 
   // The ERRI scene's 600 m track holds 10 s at 55 m/s from s = 15 m; 12 s or 70 m/s would run
   // the leading wheelset past its end. Refused before any output is written, naming the flag,
   // the distance and where the track ends.
-  const std::string scene = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+  const std::string scene = "scenarios/scenes/manchester_straight_erri.yaml";
   const fs::path dir = fs::temp_directory_path() / "ferro_off_track_override";
   fs::create_directories(dir);
   const std::string out = (dir / "o.h5").string();
@@ -269,10 +269,10 @@ TEST(RunFailure, tolerance_overrides_are_applied_or_refused_naming_the_flag) {
 }
 
 TEST(RunFailure, fixed_step_overrides_are_applied_or_refused_naming_the_flag) {
-  // The fast ERRI scene integrates at a fixed 1 ms step: another method on the command line runs
+  // The ERRI scene integrates at a fixed 1 ms step: another method on the command line runs
   // under its own error control, --fixed-step sets or clears the step, a step for a method
   // without one is refused, and so is no step for the method that needs one.
-  const std::string scene = "scenarios/scenes/manchester_straight_erri_fast.yaml";
+  const std::string scene = "scenarios/scenes/manchester_straight_erri.yaml";
   const fs::path dir = fs::temp_directory_path() / "ferro_fixed_step_override";
   fs::create_directories(dir);
   const std::string out = (dir / "o.h5").string();
@@ -293,10 +293,10 @@ TEST(RunFailure, fixed_step_overrides_are_applied_or_refused_naming_the_flag) {
   EXPECT_NE(adaptive.output.find("arkode_erk (rtol"), std::string::npos) << adaptive.output;
   const std::pair<std::vector<std::string>, std::string> refused[] = {
       {{"--fixed-step", "-1"}, "--fixed-step: must be >= 0 s"},
-      {{"--fixed-step", "0"}, "odeint_bs3 runs at a fixed step only"},
+      {{"--fixed-step", "0"}, "bdf2 runs at a fixed step only"},
       {{"--integrator", "cvode_bdf", "--fixed-step", "1e-3"},
-       "--fixed-step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; cvode_bdf "
-       "needs 0"}};
+       "--fixed-step: only arkode_erk, arkode_dirk, odeint_bs3 and bdf2 take a fixed step; "
+       "cvode_bdf needs 0"}};
   fs::remove(out);
   for (const auto& [args, message] : refused) {
     std::vector<std::string> cmd{FERRODYN_EXE, "run", scene, "-o", out, "--no-plots", "-q"};

@@ -39,11 +39,13 @@ double exact(double t) {  // x(0) = 1, v(0) = 0
 class EveryIntegrator : public ::testing::TestWithParam<std::string> {
  protected:
   /// The method under test; odeint_bs3, which runs at a fixed step only, at 1 ms (global error
-  /// ~3e-7 on the oscillator, inside kGlobalErrorTol; outputs every 10 ms land on steps).
+  /// ~3e-7 on the oscillator, inside kGlobalErrorTol; outputs every 10 ms land on steps); bdf2
+  /// (second order) at 10 us (~1.5e-7).
   IntegratorSettings settings() const {
     IntegratorSettings s;
     s.method = GetParam();
     if (s.method == "odeint_bs3") s.fixed_step = 1e-3;
+    if (s.method == "bdf2") s.fixed_step = 1e-5;
     return s;
   }
 };
@@ -245,7 +247,7 @@ TEST(FixedStep, takes_the_given_step_and_converges_at_the_method_order) {
   struct Case { const char* method; int erk_order; int order; };
   for (const Case c : {Case{"arkode_erk", 4, 4}, Case{"arkode_erk", 3, 3},
                        Case{"arkode_erk", 2, 2}, Case{"arkode_dirk", 4, 4},
-                       Case{"odeint_bs3", 4, 3}}) {
+                       Case{"odeint_bs3", 4, 3}, Case{"bdf2", 4, 2}}) {
     long n1 = 0, n2 = 0;
     const double e1 = fixed_step_error(c.method, c.erk_order, 5e-3, &n1);
     const double e2 = fixed_step_error(c.method, c.erk_order, 2.5e-3, &n2);
@@ -257,6 +259,74 @@ TEST(FixedStep, takes_the_given_step_and_converges_at_the_method_order) {
     EXPECT_GT(ratio, expected / kOrderBand) << c.method << " order " << c.erk_order;
     EXPECT_LT(ratio, expected * kOrderBand) << c.method << " order " << c.erk_order;
   }
+}
+
+// Prothero-Robinson: x' = lambda (x - cos t) - sin t has the smooth solution cos t and every
+// other solution approaches it at rate lambda. Started 1 off it with lambda = -1e6 and a step
+// of 10 ms (h lambda = -1e4), an L-stable method is back on it after one step (BDF2's and the
+// implicit Euler start's amplification tends to 0 as h lambda -> -inf; the trapezoidal rule's
+// would be -1, leaving the offset); its error is then the method's on cos t, O(h^2).
+class ProtheroRobinson final : public OdeSystem {
+ public:
+  std::size_t size() const override { return 1; }
+  int rhs(double t, std::span<const double> x, std::span<double> xd) const override {
+    xd[0] = kLambda * (x[0] - std::cos(t)) - std::sin(t);
+    return kRhsOk;
+  }
+  std::vector<SignalInfo> state_info() const override { return {{"x", "-", ""}}; }
+  static constexpr double kLambda = -1e6;
+};
+
+TEST(FixedStep, bdf2_damps_a_stiff_component_in_one_step) {
+  IntegratorSettings s;
+  s.method = "bdf2";
+  s.fixed_step = 0.01;
+  s.rtol = 1e-8;
+  s.atol = 1e-10;
+  ProtheroRobinson sys;
+  const std::vector<double> x0{2.0};
+  double max_err = 0.0;
+  const auto r = make_integrator(s)->integrate(
+      sys, x0, output_grid(0.0, 2.0, 0.01), [&](double t, std::span<const double> x) {
+        if (t > 0.0) max_err = std::max(max_err, std::abs(x[0] - std::cos(t)));
+        return true;
+      });
+  ASSERT_EQ(r.status, IntegrationResult::Status::kCompleted) << r.message;
+  // A first step by implicit Euler from the offset leaves 1 / (1 - h lambda) = 1e-4 of it;
+  // BDF2's own error on cos t at h = 0.01 is ~ h^2 / lambda-scaled, far below that.
+  EXPECT_LT(max_err, 2e-4);
+}
+
+// x' = -1 for x > 0, +1 for x <= 0: f jumps at 0, where the solution sticks (chatters within
+// round-off). Newton cannot converge across the jump at a finite step; bdf2 must split the step
+// until the correction is negligible and go on, staying at 0 to within a split step's reach.
+class Sign final : public OdeSystem {
+ public:
+  std::size_t size() const override { return 1; }
+  int rhs(double, std::span<const double> x, std::span<double> xd) const override {
+    xd[0] = x[0] > 0.0 ? -1.0 : 1.0;
+    return kRhsOk;
+  }
+  std::vector<SignalInfo> state_info() const override { return {{"x", "-", ""}}; }
+};
+
+TEST(FixedStep, bdf2_steps_over_a_discontinuity_of_the_right_hand_side) {
+  IntegratorSettings s;
+  s.method = "bdf2";
+  s.fixed_step = 0.01;
+  s.rtol = 1e-3;  // the Newton test: corrections below 1e-5 end the iteration
+  s.atol = 1e-3;
+  Sign sys;
+  const std::vector<double> x0{0.25};
+  double last = 1.0;
+  const auto r = make_integrator(s)->integrate(
+      sys, x0, output_grid(0.0, 1.0, 0.01), [&](double t, std::span<const double> x) {
+        if (t <= 0.2 + 1e-12) EXPECT_NEAR(x[0], 0.25 - t, 1e-12) << t;  // before the jump
+        last = x[0];
+        return true;
+      });
+  ASSERT_EQ(r.status, IntegrationResult::Status::kCompleted) << r.message;
+  EXPECT_LT(std::abs(last), 1e-2 * s.fixed_step);
 }
 
 TEST(FixedStep, odeint_bs3_interpolates_outputs_between_steps_at_the_method_order) {

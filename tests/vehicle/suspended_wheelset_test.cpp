@@ -95,7 +95,8 @@ std::pair<double, double> first_last_amplitude(const std::string& method, const 
   s.method = method;
   s.rtol = 1e-8;
   s.atol = 1e-12;
-  if (method == "odeint_bs3") s.fixed_step = 1e-4;  // fixed steps only; 1 ms outputs on steps
+  // Fixed-step-only methods: 0.1 ms, a tenth of the output interval (hunting period ~0.5 s).
+  if (method == "odeint_bs3" || method == "bdf2") s.fixed_step = 1e-4;
   const SuspendedWheelset sys(c.params, creep_coefficients(c.creep), speed);
   const std::vector<double> x0{1e-3, 0.0, 0.0, 0.0};
   double first = 0.0, last = 0.0;

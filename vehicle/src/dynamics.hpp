@@ -53,6 +53,8 @@ void point_state(const BodyData* body, const BodyKinematics& k, const Eigen::Vec
 
 /// Half-bandwidths of the Jacobian from the coupling structure (layout.cpp).
 [[nodiscard]] std::pair<int, int> jacobian_bandwidth(const ModelData& m);
+/// Structural sparsity of the Jacobian, per column its rows (layout.cpp).
+[[nodiscard]] std::vector<std::vector<int>> jacobian_pattern(const ModelData& m);
 
 }  // namespace ferro::vehicle::detail
 

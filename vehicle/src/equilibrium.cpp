@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -49,7 +50,7 @@ class Problem {
                   : std::sqrt(b.inertia[static_cast<Eigen::Index>(d - 3)] / b.mass) / g);
       }
       if (b.spin >= 0) add(b.spin, b.spin, std::sqrt(b.inertia[1] / b.mass) / g);
-      if (b.track >= 0) add_track(b.track, *m_.track, g);
+      if (b.track >= 0) add_track(b.track, *m_.track, wheel_load(g));
     }
     for (const detail::ElementData& e : m_.elements) {
       if (e.state >= 0) add(e.state, e.state, 1.0 / g);  // [s/m]: 1 m/s counts as 1 g
@@ -118,13 +119,27 @@ class Problem {
  private:
   /// The track's positions, their accelerations scaled like a body's (rolls by the radius of
   /// gyration of the rail or sleeper).
-  void add_track(int first, const track::CoRunningTrackParams& p, double g) {
+  /// The model's mean static wheel load [N].
+  [[nodiscard]] double wheel_load(double g) const {
+    double mass = 0.0;
+    for (const BodyData& b : m_.bodies) mass += b.mass;
+    return mass * g / (2.0 * static_cast<double>(std::max<std::size_t>(1, m_.contact_bodies.size())));
+  }
+
+  /// The track's positions; their residuals are the forces on the rail and sleeper bodies (mass
+  /// times acceleration) relative to the static wheel load they carry, not to their own weight
+  /// (a rail body of 60 kg carries a thousand times its weight), and moments relative to that
+  /// load times the body's radius of gyration.
+  void add_track(int first, const track::CoRunningTrackParams& p, double wheel_load) {
+    const double masses[3] = {p.rail_mass_lateral, p.rail_mass_vertical, p.rail_roll_inertia};
+    const double sleeper[3] = {p.sleeper_mass_lateral, p.sleeper_mass_vertical,
+                               p.sleeper_roll_inertia};
     const double rail_gyration = std::sqrt(p.rail_roll_inertia / p.rail_mass_vertical);
     const double sleeper_gyration = std::sqrt(p.sleeper_roll_inertia / p.sleeper_mass_vertical);
     for (int j = 0; j < track::kTrackPositions; ++j) {
-      const bool roll = j % 3 == 2;
-      const double radius = !roll ? 1.0 : (j < 6 ? rail_gyration : sleeper_gyration);
-      add(first + j, first + track::kTrackPositions + j, radius / g);
+      const double inertia = j < 6 ? masses[j % 3] : sleeper[j % 3];
+      const double arm = j % 3 != 2 ? 1.0 : (j < 6 ? rail_gyration : sleeper_gyration);
+      add(first + j, first + track::kTrackPositions + j, inertia / (wheel_load * arm));
     }
   }
 

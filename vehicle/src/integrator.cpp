@@ -15,12 +15,13 @@ const std::vector<std::string>& available_integrators() {
   static const std::vector<std::string> kNames = {"cvode_bdf",     "cvode_adams",
                                                   "arkode_erk",    "arkode_dirk",
                                                   "odeint_dopri5", "odeint_rosenbrock4",
-                                                  "odeint_bs3"};
+                                                  "odeint_bs3",    "bdf2"};
   return kNames;
 }
 
 bool takes_fixed_step(const std::string& method) {
-  return method == "arkode_erk" || method == "arkode_dirk" || method == "odeint_bs3";
+  return method == "arkode_erk" || method == "arkode_dirk" || method == "odeint_bs3" ||
+         method == "bdf2";
 }
 
 void IntegratorSettings::validate(const std::string& where) const {
@@ -69,13 +70,13 @@ void IntegratorSettings::validate(const std::string& where) const {
   }
   if (fixed_step > 0.0 && !takes_fixed_step(method)) {
     throw std::invalid_argument(fmt::format(
-        "{}.fixed_step: only arkode_erk, arkode_dirk and odeint_bs3 take a fixed step; {} needs "
+        "{}.fixed_step: only arkode_erk, arkode_dirk, odeint_bs3 and bdf2 take a fixed step; {} needs "
         "0, got {}",
         where, method, fixed_step));
   }
-  if (method == "odeint_bs3" && !(fixed_step > 0.0)) {
+  if ((method == "odeint_bs3" || method == "bdf2") && !(fixed_step > 0.0)) {
     throw std::invalid_argument(fmt::format(
-        "{}.fixed_step: odeint_bs3 runs at a fixed step only; give a step > 0 s", where));
+        "{}.fixed_step: {} runs at a fixed step only; give a step > 0 s", where, method));
   }
   if (jacobian_max_steps < 1) {
     throw std::invalid_argument(fmt::format(
@@ -107,6 +108,7 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings) 
   }
   if (settings.method == "arkode_erk") return detail::make_arkode_erk(settings);
   if (settings.method == "arkode_dirk") return detail::make_arkode_dirk(settings);
+  if (settings.method == "bdf2") return detail::make_bdf2(settings);
   return detail::make_odeint(settings);
 }
 

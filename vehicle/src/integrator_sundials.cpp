@@ -178,6 +178,23 @@ void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& 
   }
 }
 
+// Tolerances: rtol and atol, or atol per state scaled by the system's tolerance_scales();
+// `scalar` and `vector` are the package's SStolerances and SVtolerances functions.
+template <class Scalar, class Vector>
+void set_tolerances(Handles& h, const OdeSystem& system, const IntegratorSettings& s,
+                    Scalar scalar, Vector vector) {
+  const std::vector<double> scales = system.tolerance_scales();
+  if (scales.empty()) {
+    check(scalar(h.mem, s.rtol, s.atol), "SStolerances");
+    return;
+  }
+  N_Vector atol = N_VClone(h.y);
+  for (std::size_t i = 0; i < scales.size(); ++i) N_VGetArrayPointer(atol)[i] = s.atol * scales[i];
+  const int flag = vector(h.mem, s.rtol, atol);  // the solver keeps its own copy
+  N_VDestroy(atol);
+  check(flag, "SVtolerances");
+}
+
 // The solver's current time and interpolated state, for failure reports: `get_time` and
 // `get_dky` are the package's GetCurrentTime and GetDky functions.
 template <class GetTime, class GetDky>
@@ -264,7 +281,7 @@ class CvodeIntegrator final : public Integrator {
     check(CVodeSetErrHandlerFn(h.mem, error_handler, &ud), "CVodeSetErrHandlerFn");
     check(CVodeInit(h.mem, sundials_rhs, times.front(), h.y), "CVodeInit");
     check(CVodeSetUserData(h.mem, &ud), "CVodeSetUserData");
-    check(CVodeSStolerances(h.mem, s_.rtol, s_.atol), "CVodeSStolerances");
+    set_tolerances(h, system, s_, CVodeSStolerances, CVodeSVtolerances);
     if (std::isfinite(s_.max_step)) check(CVodeSetMaxStep(h.mem, s_.max_step), "CVodeSetMaxStep");
     if (s_.initial_step > 0.0) check(CVodeSetInitStep(h.mem, s_.initial_step), "CVodeSetInitStep");
     check(CVodeSetMaxNumSteps(h.mem, s_.max_steps), "CVodeSetMaxNumSteps");
@@ -360,7 +377,7 @@ class ArkodeDirkIntegrator final : public Integrator {
     if (h.mem == nullptr) throw std::runtime_error("ARKStepCreate failed");
     check(ARKStepSetErrHandlerFn(h.mem, error_handler, &ud), "ARKStepSetErrHandlerFn");
     check(ARKStepSetUserData(h.mem, &ud), "ARKStepSetUserData");
-    check(ARKStepSStolerances(h.mem, s_.rtol, s_.atol), "ARKStepSStolerances");
+    set_tolerances(h, system, s_, ARKStepSStolerances, ARKStepSVtolerances);
     check(ARKStepSetTableNum(h.mem, ARKODE_ESDIRK436L2SA_6_3_4, ARKODE_ERK_NONE),
           "ARKStepSetTableNum");
     if (std::isfinite(s_.max_step))

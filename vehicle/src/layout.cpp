@@ -149,4 +149,34 @@ std::pair<int, int> jacobian_bandwidth(const ModelData& m) {
   return {band, band};
 }
 
+std::vector<std::vector<int>> jacobian_pattern(const ModelData& m) {
+  const std::size_t nb = m.bodies.size();
+  // Bodies joined by an element (each with itself).
+  std::vector<std::vector<bool>> joined(nb, std::vector<bool>(nb, false));
+  for (std::size_t i = 0; i < nb; ++i) joined[i][i] = true;
+  for (const ElementData& e : m.elements) {
+    if (e.a < 0) continue;
+    joined[static_cast<std::size_t>(e.a)][static_cast<std::size_t>(e.b)] = true;
+    joined[static_cast<std::size_t>(e.b)][static_cast<std::size_t>(e.a)] = true;
+  }
+  std::vector<std::vector<int>> pattern(m.n_states);
+  const auto rows_of = [&](const BodyData& b, std::vector<int>& rows) {
+    for (int i = b.block_begin; i < b.block_end; ++i) rows.push_back(i);
+  };
+  for (std::size_t i = 0; i < nb; ++i) {
+    const BodyData& b = m.bodies[i];
+    std::vector<int> body_rows, own_rows;
+    for (std::size_t k = 0; k < nb; ++k) {
+      if (joined[i][k]) rows_of(m.bodies[k], body_rows);
+    }
+    rows_of(b, own_rows);
+    const int track_end = b.track < 0 ? b.track : b.track + 2 * track::kTrackPositions;
+    for (int j = b.block_begin; j < b.block_end; ++j) {
+      const bool track_state = b.track >= 0 && j >= b.track && j < track_end;
+      pattern[static_cast<std::size_t>(j)] = track_state ? own_rows : body_rows;
+    }
+  }
+  return pattern;
+}
+
 }  // namespace ferro::vehicle::detail

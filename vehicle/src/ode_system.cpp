@@ -8,6 +8,32 @@
 
 namespace ferro::vehicle {
 
+std::vector<std::vector<int>> jacobian_column_groups(const std::vector<std::vector<int>>& pattern,
+                                                     std::size_t n) {
+  std::vector<std::vector<int>> groups;
+  if (pattern.size() != n) {
+    for (std::size_t j = 0; j < n; ++j) groups.push_back({static_cast<int>(j)});
+    return groups;
+  }
+  std::vector<std::vector<char>> used;  // rows touched by each group
+  for (std::size_t j = 0; j < n; ++j) {
+    std::size_t g = 0;
+    for (; g < groups.size(); ++g) {
+      const bool clash = std::any_of(pattern[j].begin(), pattern[j].end(), [&](int i) {
+        return used[g][static_cast<std::size_t>(i)] != 0;
+      });
+      if (!clash) break;
+    }
+    if (g == groups.size()) {
+      groups.emplace_back();
+      used.emplace_back(n, 0);
+    }
+    groups[g].push_back(static_cast<int>(j));
+    for (int i : pattern[j]) used[g][static_cast<std::size_t>(i)] = 1;
+  }
+  return groups;
+}
+
 std::vector<double> numerical_jacobian(const OdeSystem& system, double t, std::span<const double> x,
                                        double rel_step, std::span<const double> scale) {
   const std::size_t n = system.size();

@@ -63,8 +63,41 @@ void VehicleModel::signals(double t, std::span<const double> x, std::span<double
   detail::signals(*data_, *workspace_, t, x, out);
 }
 
+std::vector<std::vector<int>> VehicleModel::jacobian_pattern() const {
+  return detail::jacobian_pattern(*data_);
+}
+
 std::pair<int, int> VehicleModel::jacobian_bandwidth() const {
   return detail::jacobian_bandwidth(*data_);
+}
+
+std::vector<double> VehicleModel::tolerance_scales() const {
+  const detail::ModelData& m = *data_;
+  if (!m.track) return {};
+  std::vector<double> scale(m.n_states, 1.0);
+  const track::CoRunningTrackParams& p = *m.track;
+  // Each rate: the natural frequency of its body held by its pads (rails) or by its pads and
+  // ballast (sleeper), the others fixed.
+  const double rail[3] = {
+      std::sqrt(p.pad_stiffness_lateral / p.rail_mass_lateral),
+      std::sqrt(p.pad_stiffness_vertical / p.rail_mass_vertical),
+      std::sqrt((p.pad_stiffness_roll +
+                 p.pad_stiffness_lateral * p.rail_base_depth * p.rail_base_depth) /
+                p.rail_roll_inertia)};
+  const double s2 = p.rail_seat_half_spacing * p.rail_seat_half_spacing;
+  const double sleeper[3] = {
+      std::sqrt((p.ballast_stiffness_lateral + 2.0 * p.pad_stiffness_lateral) / p.sleeper_mass_lateral),
+      std::sqrt(2.0 * (p.ballast_stiffness_vertical + p.pad_stiffness_vertical) / p.sleeper_mass_vertical),
+      std::sqrt(2.0 * (p.ballast_stiffness_vertical + p.pad_stiffness_vertical) * s2 /
+                p.sleeper_roll_inertia)};
+  for (const detail::BodyData& b : m.bodies) {
+    if (b.track < 0) continue;
+    for (int j = 0; j < track::kTrackPositions; ++j) {
+      scale[static_cast<std::size_t>(b.track + track::kTrackPositions + j)] =
+          j < 6 ? rail[j % 3] : sleeper[j % 3];
+    }
+  }
+  return scale;
 }
 
 std::vector<double> VehicleModel::rest_state() const {

@@ -14,6 +14,7 @@
 #include "ferro/track/irregularity.hpp"
 #include "ferro/track/stochastic_irregularity.hpp"
 #include "ferro/track/track.hpp"
+#include "ferro/track/track_structure.hpp"
 
 namespace ferro::scenarios {
 
@@ -35,6 +36,9 @@ struct TrackConfig {
   double gauge = kNaN;
   double rail_inclination = kNaN;
   std::vector<IrregularityConfig> irregularities;
+  /// What the wheels run on (`track.structure`): a co-running discrete track under every
+  /// wheelset with the default ballasted track unless the scene says otherwise.
+  track::TrackStructureSpec structure{track::TrackStructureSpec::Kind::discrete, {}};
 };
 
 /// Reads a track part. Relative file names (measured irregularities) are resolved against the

@@ -1,7 +1,9 @@
 #pragma once
 // Time integrators behind one interface: SUNDIALS CVODE (BDF + Newton with a dense or banded
-// linear solver; Adams + fixed-point), SUNDIALS ARKODE (explicit Runge-Kutta), Boost.Odeint
-// (runge_kutta_dopri5 with dense output, rosenbrock4). No physics in here.
+// linear solver; Adams + fixed-point), SUNDIALS ARKODE (explicit Runge-Kutta, ESDIRK),
+// Boost.Odeint (runge_kutta_dopri5 with dense output, rosenbrock4, Bogacki-Shampine order 3 at a
+// fixed step: odeint_bs3), and bdf2, the two-step BDF at a fixed step with a simplified Newton
+// (integrator_bdf2.cpp). No physics in here.
 //
 // Right-hand-side return codes (OdeSystem): 0 ok; > 0 recoverable -- CVODE (BDF and Adams)
 // retries with a smaller step; ARKODE's explicit ERKStep and Odeint cannot retry and report a
@@ -43,7 +45,7 @@ struct IntegratorSettings {
   /// Jacobian costs one right-hand side per state, 1000 takes 25-35 % of the CPU time off a
   /// run (docs/PERFORMANCE.md, "Jacobian age").
   long jacobian_max_steps = 1000;
-  /// arkode_erk / arkode_dirk / odeint_bs3 (which needs one): a constant step [s] with no
+  /// arkode_erk / arkode_dirk / odeint_bs3 / bdf2 (the last two need one): a constant step [s] with no
   /// error control (0: adaptive steps under rtol / atol). The error is then the method's
   /// truncation error at that step, to be measured against a tight-tolerance run
   /// (`ferrodyn bench work-precision --integrators METHOD@STEP`).
@@ -57,7 +59,7 @@ struct IntegratorSettings {
 [[nodiscard]] const std::vector<std::string>& available_integrators();
 
 /// Whether a method runs at IntegratorSettings::fixed_step (arkode_erk, arkode_dirk,
-/// odeint_bs3).
+/// odeint_bs3, bdf2).
 [[nodiscard]] bool takes_fixed_step(const std::string& method);
 
 /// Called at every output time with the interpolated state; return false to stop the run
@@ -71,7 +73,9 @@ struct IntegrationResult {
   std::vector<double> state;  ///< state at t_reached
   std::string message;        ///< cause of a failure, empty otherwise
   long steps = 0;             ///< internal steps taken
-  long rhs_evaluations = 0;   ///< right-hand-side calls
+  long rhs_evaluations = 0;   ///< right-hand-side calls (Jacobians' included)
+  long jacobians = 0;         ///< Jacobians formed (bdf2; 0 where the package does not say)
+  long newton_iterations = 0; ///< Newton iterations (bdf2; 0 where the package does not say)
 };
 
 [[nodiscard]] std::string to_string(IntegrationResult::Status status);

@@ -40,7 +40,23 @@ class OdeSystem {
   /// Optional half-bandwidths of the Jacobian (upper, lower) for banded linear solvers;
   /// {-1, -1} when unknown (dense).
   [[nodiscard]] virtual std::pair<int, int> jacobian_bandwidth() const { return {-1, -1}; }
+  /// Optional scale of each state's absolute tolerance (atol_i = atol * scale_i), size() entries;
+  /// empty when every state takes atol as it is. A model gives the rate of a stiff, fast
+  /// component the natural frequency of that component as its scale: an error dv in the rate
+  /// of a mode at omega moves its position by dv / omega.
+  [[nodiscard]] virtual std::vector<double> tolerance_scales() const { return {}; }
+  /// Optional structural sparsity of the Jacobian: for each state j, the states i whose rate
+  /// may depend on state j at any state (a superset of the nonzeros is fine; a missing entry
+  /// makes a finite-difference Jacobian wrong there); empty when unknown (dense).
+  [[nodiscard]] virtual std::vector<std::vector<int>> jacobian_pattern() const { return {}; }
 };
+
+/// Groups of states whose Jacobian columns touch disjoint rows in `pattern` (a
+/// jacobian_pattern()), so that one finite difference perturbing every state of a group gives
+/// all of its columns (Curtis, Powell & Reid, IMA J. Appl. Math. 13 (1974) 117-119; greedy, in
+/// state order). An empty pattern gives one group per state.
+[[nodiscard]] std::vector<std::vector<int>> jacobian_column_groups(
+    const std::vector<std::vector<int>>& pattern, std::size_t n);
 
 /// Central-difference Jacobian J = df/dx at (t, x), row-major size() x size(). Step per state:
 /// h_j = rel_step * max(|x_j|, scale_j) with scale_j = 1 when not given. Throws

@@ -154,6 +154,13 @@ class VehicleModel final : public OdeSystem {
   /// Half-bandwidths from the coupling structure (suspension elements, contact) and the state
   /// order.
   [[nodiscard]] std::pair<int, int> jacobian_bandwidth() const override;
+  /// 1 for every state but the rates of the co-running track's bodies, which take the natural
+  /// frequency of the body on its pads or ballast (sqrt(k / m)) [1/s].
+  [[nodiscard]] std::vector<double> tolerance_scales() const override;
+  /// A body's states (its block, with its series dampers) act on its own block and those of
+  /// the bodies its elements join; a wheelset's co-running track acts on the wheelset's block
+  /// alone.
+  [[nodiscard]] std::vector<std::vector<int>> jacobian_pattern() const override;
 
   /// Every body at its rest position, velocities and internal states zero.
   [[nodiscard]] std::vector<double> rest_state() const;
