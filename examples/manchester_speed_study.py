@@ -16,7 +16,7 @@ import numpy as np
 import ferrodyn
 
 SOURCE = pathlib.Path(__file__).resolve().parents[1]
-SCENE = SOURCE / "scenarios" / "scenes" / "manchester_straight_erri_fast.yaml"
+SCENE = SOURCE / "scenarios" / "scenes" / "manchester_straight_erri.yaml"
 
 
 def main():

@@ -16,7 +16,7 @@ from conftest import EXE, SOURCE, cli, same_bits
 
 CASES = [
     ("wheelset_hunting.yaml", ["--t-end", "3", "--speed", "45"], {"t_end": 3.0, "speed": 45.0}),
-    ("manchester_straight_erri_fast.yaml", ["--t-end", "0.5"], {"t_end": 0.5}),
+    ("manchester_straight_erri.yaml", ["--t-end", "0.5"], {"t_end": 0.5}),
 ]
 
 

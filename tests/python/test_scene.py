@@ -36,17 +36,17 @@ def test_scene_file_values(scenes):
 
 
 def test_any_key_through_included_files(scenes):
-    s = ferrodyn.Scene(scenes / "manchester_straight_erri_fast.yaml")
+    s = ferrodyn.Scene(scenes / "manchester_straight_erri.yaml")
     # The vehicle is a file the scene names: its values are reached through it.
     assert s["model.vehicle.wheel_rail.friction"] == 0.32
-    s.update({"simulation.speed": 40.0, "solver.integrator": "arkode_erk",
+    s.update({"simulation.speed_kmh": 144.0, "solver.integrator": "arkode_erk",
               "contact.tangential": "fastsim", "model.vehicle.car_body.mass": 30000.0,
               "track.length": 700.0})
-    assert s.speed == 40.0 and s.integrator == "arkode_erk"
+    assert s.speed == pytest.approx(40.0, rel=1e-15) and s.integrator == "arkode_erk"
     assert s["model.vehicle.car_body.mass"] == 30000.0
     assert s.overrides["track.length"] == 700.0
-    del s["simulation.speed"]
-    assert s.speed == 55.0
+    del s["simulation.speed_kmh"]
+    assert s.speed == pytest.approx(200.0 / 3.6, rel=1e-15)  # the scene's own 200 km/h
 
 
 def test_override_matches_the_program_option(scenes):
@@ -109,7 +109,7 @@ def test_bad_run_argument_named(scenes):
 
 
 def test_validate_builds_the_model(scenes, tmp_path):
-    text = (scenes / "manchester_straight_erri_fast.yaml").read_text()
+    text = (scenes / "manchester_straight_erri.yaml").read_text()
     s = ferrodyn.Scene.from_yaml(text, path=scenes / "x.yaml",
                                  overrides={"simulation.initial": {"no_such_state": 0.001}})
     with pytest.raises(ferrodyn.SceneError) as e:
