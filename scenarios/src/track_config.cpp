@@ -86,7 +86,7 @@ IrregularityConfig read_irregularity(MapReader& r, const track::TrackDesign& des
     d.channel = track::irregularity_channel_from_string(r.string("channel", kChannels),
                                                         r.key_path("channel"));
     d.shape = track::defect_shape_from_string(
-        r.string_or("shape", "one_minus_cosine", {"one_minus_cosine", "sine"}), r.key_path("shape"));
+        r.string_or("shape", "one_minus_cosine", {"one_minus_cosine", "sine", "dipped_joint"}), r.key_path("shape"));
     d.amplitude = r.number("amplitude");
     d.wavelength = r.number("wavelength");
     d.start_s = r.number("start_s");

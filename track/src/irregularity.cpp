@@ -137,8 +137,9 @@ IrregularitySample IrregularitySum::at(double s) const {
 DefectShape defect_shape_from_string(std::string_view name, const std::string& where) {
   if (name == "one_minus_cosine" || name == "1-cos") return DefectShape::kOneMinusCosine;
   if (name == "sine") return DefectShape::kSine;
+  if (name == "dipped_joint") return DefectShape::kDippedJoint;
   throw std::invalid_argument(
-      fmt::format("{}: unknown defect shape '{}' (allowed: one_minus_cosine, sine)", where, name));
+      fmt::format("{}: unknown defect shape '{}' (allowed: one_minus_cosine, sine, dipped_joint)", where, name));
 }
 
 void IsolatedDefectSpec::validate(const std::string& where) const {
@@ -184,6 +185,12 @@ IrregularitySample IsolatedDefect::at(double s) const {
       v = spec_.amplitude * std::sin(k * x);
       dv = spec_.amplitude * k * std::cos(k * x);
       break;
+    case DefectShape::kDippedJoint: {
+      const double u = 2.0 * std::fmod(x, spec_.wavelength) / spec_.wavelength - 1.0;  // [-1, 1)
+      v = spec_.amplitude * (1.0 - std::abs(u));
+      dv = spec_.amplitude * 2.0 / spec_.wavelength * (u < 0.0 ? 1.0 : -1.0);
+      break;
+    }
   }
   out.add(spec_.channel, v, dv);
   return out;

@@ -133,8 +133,10 @@ CoRunningTrackParams co_running_equivalent(const BallastedTrackSpec& s, double r
   p.ballast_damping_lateral = nc_y * s.ballast_damping_lateral;
   p.sleeper_mass_lateral = nc_y * m_sleepers;
 
-  // Roll: the rail in torsion on the fastenings' roll stiffness.
-  const double foot2 = s.rail_foot_width * s.rail_foot_width / 12.0;
+  // Roll: the rail in torsion on the fastenings' roll stiffness; by default the pad's vertical
+  // stiffness split between the two edges of the foot, where the clips hold it and a rolling rail
+  // compresses the pad: k_z (b / 2)^2.
+  const double foot2 = s.rail_foot_width * s.rail_foot_width / 4.0;
   const double k_roll =
       std::isnan(s.pad_stiffness_roll) ? s.pad_stiffness_vertical * foot2 : s.pad_stiffness_roll;
   const double c_roll =

@@ -94,8 +94,13 @@ enum class DefectShape {
   kOneMinusCosine,
   /// amplitude sin(2 pi x / wavelength): full sine periods, value continuous, slope jumps.
   kSine,
+  /// amplitude (1 - |2 x / wavelength - 1|) per period, a V: the level runs straight to
+  /// `amplitude` at mid-wavelength and straight back, as the two dipped rail ends of a joint
+  /// (negative amplitude: a dip). The path's slope turns by 2 alpha at the joint, alpha =
+  /// 2 |amplitude| / wavelength, and by alpha at each end.
+  kDippedJoint,
 };
-/// Parses "one_minus_cosine" (or "1-cos") and "sine".
+/// Parses "one_minus_cosine" (or "1-cos"), "sine" and "dipped_joint".
 [[nodiscard]] DefectShape defect_shape_from_string(std::string_view name, const std::string& where);
 
 /// An isolated defect on one channel: e.g. a lateral alignment defect (channel kLateral), a

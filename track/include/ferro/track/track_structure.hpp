@@ -31,7 +31,10 @@
 // cm^4, height 172 mm, centroid 80.9 mm above the base; torsion constant 221 cm^4 computed from the
 // section), B70-type concrete monoblock sleepers (280 kg, 2.60 m) at 0.60 m, a standard
 // stiff-to-medium pad (200 MN/m, 40 kN s/m vertical; 40 MN/m, 40 kN s/m lateral; roll stiffness
-// k_z b^2 / 12 over the 150 mm foot), ballast 100 MN/m and 60 kN s/m per rail seat vertically (Zhai,
+// k_z b^2 / 4: the vertical pad stiffness split between the edges of the 150 mm foot, where the
+// clips hold the rail and a rolling rail loads the pad (a uniform pad alone, k_z b^2 / 12, lets
+// the rails roll by ~10 mrad under the flange forces of the derailment scene, 50-60 kN; the
+// fastening's real roll restraint was not at hand: an engineering estimate)), ballast 100 MN/m and 60 kN s/m per rail seat vertically (Zhai,
 // Wang & Lin, J. Sound Vib. 270 (2004) 673-683: 58.8 kN s/m; the stiffness chosen so that the
 // static track stiffness per wheel is 154 MN/m, the 150 MN/m British Rail's GM/TT0088 uses for
 // concrete-sleepered track) and 50 MN/m, 40 kN s/m laterally per sleeper (an engineering estimate:
@@ -77,7 +80,7 @@ struct BallastedTrackSpec {
   double pad_stiffness_lateral = 40.0e6;     ///< [N/m]
   double pad_damping_lateral = 40.0e3;       ///< [N s/m]
   /// Roll stiffness and damping of the fastening [N m/rad], [N m s/rad]; NaN: the pad's
-  /// vertical values over the foot width, k_z b^2 / 12 and c_z b^2 / 12.
+  /// vertical values split between the foot's edges, k_z b^2 / 4 and c_z b^2 / 4.
   double pad_stiffness_roll = kUnset;
   double pad_damping_roll = kUnset;
   // Sleeper (B70-type concrete monoblock).

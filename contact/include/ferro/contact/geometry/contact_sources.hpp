@@ -137,8 +137,11 @@ class ConicalContactSource final : public ContactGeometrySource {
 /// Grid of a MultiPointContactTable. Each axis is uniform; an axis with min == max (step
 /// ignored) is absent. SI units.
 struct MultiPointTableParams {
-  double lateral_min = -0.012;   ///< [m]
-  double lateral_max = 0.012;    ///< [m]
+  /// [m]; the pose's lateral shift is measured in the axes of the rail as it lies, so a rail
+  /// rolled by theta adds theta times the axle's height above it (0.46 m): +-15 mm holds the flange
+  /// contact of S1002 (from ~-7 mm) with the rails rolled by up to ~7 mrad under flange forces.
+  double lateral_min = -0.015;
+  double lateral_max = 0.015;    ///< [m]
   double lateral_step = 0.1e-3;  ///< [m]
   double roll_min = -0.012;      ///< [rad]
   double roll_max = 0.012;       ///< [rad]
