@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
 
 namespace {

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <string>
 
-#include "ferro/contact/elliptic.hpp"
-#include "ferro/contact/hertz.hpp"
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/normal_model.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/normal/elliptic.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/contact/normal/normal_model.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fc = ferro::contact;
 

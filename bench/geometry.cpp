@@ -9,10 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/conical_source.hpp"
 #include "ferro/contact/geometry/contact_table.hpp"
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/geometry/imported_contact_table.hpp"
+#include "ferro/contact/geometry/multi_point_contact_table.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/geometry/search_source.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 
 namespace fc = ferro::contact;
 

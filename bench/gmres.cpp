@@ -49,7 +49,7 @@ class MimSystem {
       : grid_(make_grid(n)), op_(grid_, steel_pair(), /*measure_plans=*/true), kind_(kind) {
     const Field gap =
         sample(grid_, [](double x, double y) { return (x * x + y * y) / (2.0 * kRrel); });
-    const NormalSolution s = solve_normal_force(op_, gap, kNormalForce, NormalSolverOptions{});
+    const NormalGridSolution s = solve_normal_force(op_, gap, kNormalForce, NormalSolverOptions{});
     for (std::size_t i = 0; i < grid_.size(); ++i)
       if (s.pressure[i] > 0.0) set_.push_back(i);
     in_set_.assign(grid_.size(), false);

@@ -47,8 +47,8 @@ void BM_MimNormalRolling(benchmark::State& state) {
   double fx = 0.0;
   int matvecs = 0, normal_it = 0;
   for (auto _ : state) {
-    const NormalSolution s = solve_normal_force(op, gap, kNormalForce, nopt);
-    const TangentialSolution t =
+    const NormalGridSolution s = solve_normal_force(op, gap, kNormalForce, nopt);
+    const TangentialGridSolution t =
         solve_steady_rolling(op, s.pressure, RollingInput{3.0e-3, 0.0, 0.0, 0.2}, topt);
     benchmark::DoNotOptimize(t.force_x);
     fx = t.force_x;

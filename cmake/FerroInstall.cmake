@@ -5,7 +5,7 @@ install(TARGETS ${_libs} ferro_options EXPORT ferrodynTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS ferro_hdf5 EXPORT ferrodynTargets)
-foreach(_folder contact track vehicle fe_contact scenarios)
+foreach(_folder io numerics contact track vehicle fe_contact scenarios)
   # A folder with no public headers yet has no include/ in a clean clone (git keeps no empty dirs).
   if(EXISTS ${PROJECT_SOURCE_DIR}/${_folder}/include)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_folder}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -69,15 +69,20 @@ def derailment(f, save):
 def ramp(f, save):
     g = f["ramp"]
     t, v = g["time"][:], g["speed"][:]
+    sig = g["signal"][:]
+    sig = sig.reshape(len(t), -1) if sig.ndim == 2 or sig.size == 0 else sig[:, None]
+    names = str(_attr(g, "wheelsets", _attr(g, "signal_name"))).split(",")
     fig, ax = plt.subplots(figsize=(9, 4))
-    ax.plot(t, g["signal"][:] * 1e3, lw=0.6, label=_attr(g, "signal_name"))
-    ax.plot(t, g["envelope"][:] * 1e3, lw=1.0, color="k", label="envelope")
+    for j in range(sig.shape[1]):
+        ax.plot(t, sig[:, j] * 1e3, lw=0.5, label=names[j] if j < len(names) else f"state {j}")
+    ax.plot(t, g["envelope"][:] * 1e3, lw=1.0, color="k", label="vehicle envelope (largest wheelset's)")
     thr = _num(g, "threshold") * 1e3
     ax.axhline(thr, color="grey", ls=":", lw=0.8, label=f"threshold {thr:g} mm")
     vd = _num(g, "decay_speed")
     if vd == vd:
         td = (_num(g, "speed_initial") - vd) / _num(g, "deceleration")
-        ax.axvline(td, color="r", ls="--", lw=0.9, label=f"dies out at {vd:.2f} m/s = {vd * 3.6:.1f} km/h")
+        ax.axvline(td, color="r", ls="--", lw=0.9,
+                   label=f"dies out at {vd:.2f} m/s = {vd * 3.6:.1f} km/h ({_attr(g, 'holder')} last)")
     ax.set_xlabel("time [s]")
     ax.set_ylabel("lateral displacement [mm]")
     ax.grid(True, alpha=0.3)
@@ -94,6 +99,8 @@ def bifurcation(f, save):
     v = g["speed"][:]
     amp = np.atleast_2d(g["amplitude"][:])
     out = g["outcome"][:].astype(int)
+    holder = g["holder"][:].astype(int) if "holder" in g else np.zeros(len(v), dtype=int)
+    held = amp[np.arange(len(v)), holder]
     names = str(_attr(g, "wheelsets")).split(",")
     order = np.argsort(v)
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -105,10 +112,12 @@ def bifurcation(f, save):
     for code, marker in ((2, "^"), (3, "2"), (4, "v"), (5, "s")):
         sel = out == code
         if sel.any():
-            ax.plot(v[sel] * 3.6, amp[sel, 0] * 1e3, marker, color="k", ms=5, ls="none", label=OUTCOMES[code])
+            ax.plot(v[sel] * 3.6, held[sel] * 1e3, marker, color="k", ms=5, ls="none",
+                    label=f"{OUTCOMES[code]} (holding wheelset)")
     lo, hi = _num(g, "bracket_low"), _num(g, "bracket_high")
     if lo == lo and hi == hi:
-        ax.axvspan(lo * 3.6, hi * 3.6, color="r", alpha=0.25, label=f"fold in [{lo * 3.6:.2f}, {hi * 3.6:.2f}] km/h")
+        ax.axvspan(lo * 3.6, hi * 3.6, color="r", alpha=0.25,
+                   label=f"fold in [{lo * 3.6:.2f}, {hi * 3.6:.2f}] km/h, cycle held by {_attr(g, 'holder')}")
     hopf = _num(g, "hopf_speed")
     if hopf == hopf:
         ax.axvline(hopf * 3.6, color="g", ls="--", lw=0.9, label=f"Hopf (eigenvalues) {hopf * 3.6:.1f} km/h")
@@ -149,10 +158,10 @@ def sweep(f, save):
     for kk in sorted(set(zip(k11, k22)), reverse=True):
         sel = (k11 == kk[0]) & (k22 == kk[1])
         order = np.argsort(v[sel])
-        a = np.where(out[sel] == 0, 0.0, amp[sel, 0])
+        a = np.where(out[sel] == 0, 0.0, np.nanmax(amp[sel], axis=1))
         ax.plot(v[sel][order] * 3.6, a[order] * 1e3, "o-", ms=3, lw=0.8, label=f"K = ({kk[0]:g}, {kk[1]:g})")
     ax.set_xlabel("speed [km/h]")
-    ax.set_ylabel(f"{str(_attr(g, 'wheelsets')).split(',')[0]} amplitude [mm]")
+    ax.set_ylabel("largest wheelset amplitude [mm]")
     ax.set_title(f"sweep from a lateral disturbance: {_attr(f, 'scene_name')}", fontsize=9)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7)

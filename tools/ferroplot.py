@@ -74,17 +74,29 @@ def plot_eigen(f, out, formats):
     vc = float(g.attrs.get("critical_speed", float("nan")))
     vcf = float(g.attrs.get("closed_form_critical_speed", float("nan")))
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-    a1.plot(v * 3.6, g["damping_ratio"][:], lw=1.2)
+    # Classified modes: the hunting mode and the least damped contact / track modes apart;
+    # otherwise the least damped mode.
+    series = []
+    if "hunting_mode" in g:
+        series.append(("hunting mode", g["hunting_mode"]))
+        for cls in ("contact", "track"):
+            if cls in g and (g[cls]["damping_ratio"][:] == g[cls]["damping_ratio"][:]).any():
+                series.append((f"least damped {cls} mode", g[cls]))
+    else:
+        series.append(("least damped mode", g))
+    for label, s in series:
+        a1.plot(v * 3.6, s["damping_ratio"][:], lw=1.2, label=label)
+        a2.plot(v * 3.6, s["frequency"][:], lw=1.2, label=label)
     a1.axhline(0.0, color="k", lw=0.6)
     if vc == vc:
-        a1.axvline(vc * 3.6, color="r", ls="--", lw=0.9, label=f"eigenvalue Vc = {vc * 3.6:.1f} km/h")
+        a1.axvline(vc * 3.6, color="r", ls="--", lw=0.9, label=f"Hopf speed Vc = {vc * 3.6:.1f} km/h")
     if vcf == vcf:
         a1.axvline(vcf * 3.6, color="g", ls=":", lw=1.2, label=f"eq. (151) Vc = {vcf * 3.6:.1f} km/h")
-    a1.set_ylabel("damping ratio of least damped mode [-]")
+    a1.set_ylabel("damping ratio [-]")
     a1.legend(fontsize=8)
     a1.grid(True, alpha=0.3)
     a1.set_title(attr(f, "scene_name"), fontsize=9)
-    a2.plot(v * 3.6, g["frequency"][:], lw=1.2)
+    a2.set_yscale("log" if len(series) > 1 else "linear")
     a2.set_xlabel("speed [km/h]")
     a2.set_ylabel("frequency [Hz]")
     a2.grid(True, alpha=0.3)

@@ -58,9 +58,9 @@ mim::Field capped_pressure(const mim::Field& pressure, double friction, double y
 
 namespace {
 
-mim::NormalSolution normal_solve(mim::ComplianceOperator& op, const mim::Field& gap,
-                                 const SlopeCase& c, const SlopeOptions& options) {
-  mim::NormalSolution n = mim::solve_normal_force(op, gap, c.normal_force, options.mim.normal);
+mim::NormalGridSolution normal_solve(mim::ComplianceOperator& op, const mim::Field& gap,
+                                     const SlopeCase& c, const SlopeOptions& options) {
+  mim::NormalGridSolution n = mim::solve_normal_force(op, gap, c.normal_force, options.mim.normal);
   if (n.boundary_contact_elements > 0) {
     throw std::runtime_error(fmt::format(
         "creep_stiffness: the contact patch reaches the grid boundary ({} elements); enlarge "
@@ -70,9 +70,9 @@ mim::NormalSolution normal_solve(mim::ComplianceOperator& op, const mim::Field& 
   return n;
 }
 
-mim::TangentialSolution rolling(mim::ComplianceOperator& op, const mim::Field& bound_pressure,
-                                double friction, double xi_x, double xi_y, double spin,
-                                const SlopeOptions& options) {
+mim::TangentialGridSolution rolling(mim::ComplianceOperator& op, const mim::Field& bound_pressure,
+                                    double friction, double xi_x, double xi_y, double spin,
+                                    const SlopeOptions& options) {
   mim::RollingInput in;
   in.creepage_x = xi_x;
   in.creepage_y = xi_y;
@@ -89,13 +89,13 @@ CreepStiffness creep_stiffness(mim::ComplianceOperator& op, const mim::Field& ga
                                const SlopeCase& c, const SlopeOptions& options) {
   c.validate();
   options.validate();
-  const mim::NormalSolution n = normal_solve(op, gap, c, options);
+  const mim::NormalGridSolution n = normal_solve(op, gap, c, options);
   const mim::Field p = capped_pressure(n.pressure, c.friction, c.yield_shear);
   const double xi = options.probe_creepage;
   const double phi = options.probe_spin_times_a / c.semi_axis_x;
-  const mim::TangentialSolution rx = rolling(op, p, c.friction, xi, 0.0, 0.0, options);
-  const mim::TangentialSolution ry = rolling(op, p, c.friction, 0.0, xi, 0.0, options);
-  const mim::TangentialSolution rs = rolling(op, p, c.friction, 0.0, 0.0, phi, options);
+  const mim::TangentialGridSolution rx = rolling(op, p, c.friction, xi, 0.0, 0.0, options);
+  const mim::TangentialGridSolution ry = rolling(op, p, c.friction, 0.0, xi, 0.0, options);
+  const mim::TangentialGridSolution rs = rolling(op, p, c.friction, 0.0, 0.0, phi, options);
   // Moment about the patch centre: the grid is centred on the contact point.
   CreepStiffness s;
   s.s11 = -rx.force_x / xi;
@@ -142,7 +142,7 @@ CreepCurve creep_curve(mim::ComplianceOperator& op, const mim::Field& gap, const
     throw std::invalid_argument(
         fmt::format("creep_curve: direction must be 'x' or 'y', got '{}'", direction));
   }
-  const mim::NormalSolution n = normal_solve(op, gap, c, options);
+  const mim::NormalGridSolution n = normal_solve(op, gap, c, options);
   const mim::Field p = capped_pressure(n.pressure, c.friction, c.yield_shear);
   CreepCurve out;
   out.direction = direction;
@@ -153,9 +153,9 @@ CreepCurve creep_curve(mim::ComplianceOperator& op, const mim::Field& gap, const
       throw std::invalid_argument(fmt::format(
           "creep_curve: creepages must be finite and strictly increasing (index {})", i));
     }
-    const mim::TangentialSolution t = direction == 'x'
-                                          ? rolling(op, p, c.friction, xi, 0.0, 0.0, options)
-                                          : rolling(op, p, c.friction, 0.0, xi, 0.0, options);
+    const mim::TangentialGridSolution t = direction == 'x'
+                                              ? rolling(op, p, c.friction, xi, 0.0, 0.0, options)
+                                              : rolling(op, p, c.friction, 0.0, xi, 0.0, options);
     out.creepage.push_back(xi);
     out.force.push_back(direction == 'x' ? t.force_x : t.force_y);
     out.converged = out.converged && t.converged;

@@ -108,7 +108,7 @@ ElastoplasticKij elastoplastic_reduction_factors(const ElastoplasticKijSpec& spe
         dented[g.index(ix, iy)] +=
             out.cycle.residual_dent[load.dent_grid.index(0, iy + extra - widen)];
     mim::InfluenceOperator g_half_space(g, pair);
-    const mim::NormalSolution n =
+    const mim::NormalGridSolution n =
         mim::solve_normal_force(g_half_space, dented, sc.normal_force, options.mim.normal);
     if (n.boundary_contact_elements > 0) continue;
     out.shaken_down.half_space = creep_stiffness(g_half_space, g_gap, sc, options);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
 
 namespace ferro::fe_contact {

@@ -75,7 +75,7 @@ py::dict eigenvalues(const SceneSource& source, double k11, double k22, const py
   const std::vector<std::string_view> keys = {"speed_min", "speed_max", "points", "tangential"};
   set_parameters(scenarios::select_parameters(scenarios::parameters(range), keys), kw);
   try {
-    if (k11 != 1.0 || k22 != 1.0) scene = an::with_reduction(scene, {k11, k22});
+    if (k11 != 1.0 || k22 != 1.0) scene = an::with_reduction(scene, contact::ReductionFactors::following_k22(k11, k22));
     scenarios::apply_overrides(scene, range, scenarios::Spelling::key);
   } catch (const std::invalid_argument& e) {
     raise_scene_error(e, scene.path);
@@ -91,8 +91,10 @@ py::dict branch_dict(const an::KijRow& row, const std::vector<std::string>& name
   py::list outcome;
   std::vector<double> amplitude, period, time;
   std::vector<bool> bisection;
+  std::vector<double> holder;
   for (const auto& p : b.points) {
     outcome.append(an::to_string(p.run.outcome));
+    holder.push_back(static_cast<double>(p.run.holder));
     for (std::size_t j = 0; j < names.size(); ++j)
       amplitude.push_back(j < p.run.amplitude.size() ? p.run.amplitude[j] : NAN);
     period.push_back(p.run.period);
@@ -105,6 +107,8 @@ py::dict branch_dict(const an::KijRow& row, const std::vector<std::string>& name
   d["period"] = arr(std::move(period));
   d["time"] = arr(std::move(time));
   d["bisection"] = py::array(py::cast(bisection));
+  d["holder"] = arr(std::move(holder));
+  d["fold_holder"] = b.holder;
   d["wheelsets"] = names;
   d["k11"] = row.k.k11;
   d["k22"] = row.k.k22;
@@ -129,9 +133,20 @@ py::dict ramp(const SceneSource& source, const py::kwargs& kw) {
   py::dict d;
   d["time"] = arr(r.time);
   d["speed"] = arr(r.speed);
-  d["signal"] = arr(r.signal);
+  // Samples x observed states, as the program's /ramp/signal and /ramp/wheelset_envelope.
+  const auto by_rows = [&r](const std::vector<std::vector<double>>& columns) {
+    std::vector<double> v;
+    v.reserve(r.time.size() * columns.size());
+    for (std::size_t i = 0; i < r.time.size(); ++i)
+      for (const auto& c : columns) v.push_back(i < c.size() ? c[i] : NAN);
+    return to_numpy(std::move(v), {static_cast<py::ssize_t>(r.time.size()),
+                                   static_cast<py::ssize_t>(columns.size())});
+  };
+  d["signal"] = by_rows(r.signals);
+  d["wheelset_envelope"] = by_rows(r.envelopes);
   d["envelope"] = arr(r.envelope);
   d["observed"] = study.observed;
+  d["holder"] = r.holder < study.observed.size() ? study.observed[r.holder] : std::string();
   d["decay_speed"] = opt(r.decay_speed);
   d["decay_time"] = r.decay_time;
   d["peak_speed"] = r.peak_speed;
@@ -146,7 +161,7 @@ py::dict bifurcation(const SceneSource& source, const py::kwargs& kw) {
   an::BranchRequest request;
   set_parameters(an::parameters(request), kw);
   std::vector<std::string> names;
-  const an::Reduction k{request.settle.k11, request.settle.k22};
+  const auto k = contact::ReductionFactors::following_k22(request.settle.k11, request.settle.k22);
   const auto row = released(source.scene.path, [&] {
     return an::run_bifurcation(source.scene, request, k, &names, {}, scenarios::Spelling::key);
   });
@@ -199,6 +214,7 @@ py::dict sweep(const SceneSource& source, const py::object& output, const py::kw
   d["speed"] = column(p, [](const auto& x) { return x.point.speed; });
   d["k11"] = column(p, [](const auto& x) { return x.point.k.k11; });
   d["k22"] = column(p, [](const auto& x) { return x.point.k.k22; });
+  d["holder"] = column(p, [](const auto& x) { return static_cast<double>(x.holder); });
   py::list outcome;
   std::vector<double> amplitude;
   for (const auto& x : p) {
@@ -302,8 +318,10 @@ void bind_analysis(py::module_& m) {
   static const std::string ramp_doc =
       "critical_speed_ramp(scene, **request) -> dict\n\nDecelerating run after a lateral "
       "disturbance (`ferrodyn critical-speed ramp`). Keys: time [s], speed [m/s], signal and\n"
-      "envelope [m] of the observed state, decay_speed [m/s] (None: none), peak_speed [m/s],\n"
-      "envelope_growth, completed, message, summary. Request:\n" +
+      "wheelset_envelope [m] (samples x observed states), envelope [m] (the vehicle's: the\n"
+      "largest), observed (each wheelset's lateral state), holder (the last to die out),\n"
+      "decay_speed [m/s] (None: none), peak_speed [m/s], envelope_growth, completed, message,\n"
+      "summary. Request:\n" +
       parameter_doc(an::parameters(ramp_request));
   m.def("critical_speed_ramp", &ramp, py::arg("scene"), ramp_doc.c_str());
 
@@ -312,7 +330,8 @@ void bind_analysis(py::module_& m) {
       "critical_speed_bifurcation(scene, **request) -> dict\n\nLimit-cycle amplitudes "
       "followed down the periodic branch to its fold (`ferrodyn critical-speed bifurcation`).\n"
       "Keys: speed [m/s], outcome, amplitude [m] (points x wheelsets), period [s], time [s],\n"
-      "bisection, wheelsets, fold_found, lowest_sustained [m/s] (the nonlinear critical speed),\n"
+      "bisection, holder (index of the wheelset holding each point's outcome), fold_holder,\n"
+      "wheelsets, fold_found, lowest_sustained [m/s] (the nonlinear critical speed),\n"
       "bracket_low, bracket_high [m/s], hopf_speed [m/s], summary. Request:\n" +
       parameter_doc(an::parameters(branch_request));
   m.def("critical_speed_bifurcation", &bifurcation, py::arg("scene"), bif_doc.c_str());
@@ -332,7 +351,8 @@ void bind_analysis(py::module_& m) {
       "sweep(scene, output=None, **request) -> dict\n\nIndependent constant-speed runs over "
       "speeds x reduction factors on `jobs` threads (`ferrodyn sweep`; the same numbers as\n"
       "the program's serial, threaded and MPI sweeps). output: HDF5 file (and its resumable\n"
-      "journal <output>.points/ until complete). Keys: speed [m/s], k11, k22, outcome,\n"
+      "journal <output>.points/ until complete). Keys: speed [m/s], k11, k22, holder (index of\n"
+      "the wheelset holding the outcome), outcome,\n"
       "amplitude [m] (points x wheelsets), period [s], time [s], cpu_time [s], wheelsets,\n"
       "complete, wall_seconds, summary. Request:\n" +
       parameter_doc(an::parameters(sweep_request));

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "common.hpp"
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 #include "ferro/scenarios/h5_reader.hpp"
 
 namespace ferro::python {

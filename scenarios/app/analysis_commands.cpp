@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <mutex>
 
@@ -19,6 +20,7 @@
 #include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
 #include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/report.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "plotting.hpp"
 #include "terminal.hpp"
@@ -29,6 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace an = scenarios::analysis;
+namespace fc = ferro::contact;
 using scenarios::Scene;
 constexpr scenarios::Spelling kOption = scenarios::Spelling::option;
 
@@ -78,16 +81,20 @@ int do_ramp(const RampArgs& a) {
 using BranchArgs = Analysis<an::BranchRequest>;
 
 // Progress of the branch of factors k, on stderr.
-std::function<void(const an::BranchPoint&)> branch_progress(const an::Reduction& k) {
-  return [k](const an::BranchPoint& p) {
+std::function<void(const an::BranchPoint&)> branch_progress(
+    const fc::ReductionFactors& k, const std::vector<std::string>& names) {
+  return [k, &names](const an::BranchPoint& p) {
     const auto& fit = p.run.fit;
     const std::string growth =
         fit.valid() ? fmt::format(" (sigma = {:.3g} +- {:.2g} /s, beta = {:.3g} /(s mm^2))",
                                   fit.sigma, fit.sigma_error, fit.beta * 1e-6)
                     : std::string();
-    fmt::print(stderr, "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm after {:.1f} s{}\n",
+    fmt::print(stderr,
+               "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm ({}) after {:.1f} s{}\n",
                k.k11, k.k22, p.speed, p.bisection ? " (bisection)" : "",
-               an::to_string(p.run.outcome), p.run.amplitude.front() * 1e3, p.run.time, growth);
+               an::to_string(p.run.outcome), p.run.amplitude[p.run.holder] * 1e3,
+               p.run.holder < names.size() ? names[p.run.holder] : std::string("?"), p.run.time,
+               growth);
   };
 }
 
@@ -97,8 +104,9 @@ int do_branch(const BranchArgs& a) {
   fmt::print("ferrodyn critical-speed bifurcation: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, settle.k11, settle.k22);
   std::vector<std::string> names;
-  const an::Reduction k{settle.k11, settle.k22};
-  const auto row = an::run_bifurcation(scene, a.request, k, &names, branch_progress(k), kOption);
+  const auto k = fc::ReductionFactors::following_k22(settle.k11, settle.k22);
+  const auto row =
+      an::run_bifurcation(scene, a.request, k, &names, branch_progress(k, names), kOption);
   fmt::print("{}", an::branch_report(row, names));
   const std::string out = a.output_or(scene.output.file, "_bifurcation.h5");
   an::write_branch(an::with_reduction(scene, row.k), row.branch, names, row.hopf_speed, out);
@@ -121,18 +129,13 @@ struct EigenArgs : VerbArgs {
 };
 
 int do_eigen(const EigenArgs& a) {
-  Scene scene = an::with_reduction(scenarios::load_scene(a.input), {a.k11, a.k22});
+  Scene scene = an::with_reduction(scenarios::load_scene(a.input),
+                                   fc::ReductionFactors::following_k22(a.k11, a.k22));
   scenarios::apply_overrides(scene, a.range, kOption);
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.k11, a.k22);
-  if (r.critical_speed) {
-    fmt::print("  Hopf speed (least damped mode crosses zero): {:.4f} m/s = {:.2f} km/h\n",
-               *r.critical_speed, *r.critical_speed * 3.6);
-  } else {
-    fmt::print("  no eigenvalue crossing in [{}, {}] m/s\n", scene.eigen.speed_min,
-               scene.eigen.speed_max);
-  }
+  print_eigen_report(scene, r, 16);
   const std::string out = a.output_or(scene.output.file, "_eig.h5");
   scenarios::write_eigen_report(scene, r, out);
   a.finish(out);
@@ -190,9 +193,10 @@ int do_sweep_ranked(const SweepArgs& args, an::SweepExecutor& ex) {
       const double el =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       fmt::print(stderr, "[rank {} {:>4}/{:<4} {:6.1f} s] V = {:8.4f} m/s K = ({:.3f}, {:.3f}): {} "
-                 "{:.4f} mm\n",
+                 "{:.4f} mm (wheelset {})\n",
                  ex.rank(), done, todo, el, r.point.speed, r.point.k.k11, r.point.k.k22,
-                 an::to_string(r.outcome), r.amplitude.empty() ? NAN : r.amplitude.front() * 1e3);
+                 an::to_string(r.outcome),
+                 r.amplitude.empty() ? NAN : r.amplitude[r.holder] * 1e3, r.holder + 1);
     };
   }
   const auto r = an::run_sweep(scene, a, ex, cb, kOption);
@@ -234,6 +238,11 @@ void add_common(CLI::App* c, Args& a, const char* input, const char* input_help,
 }
 
 }  // namespace
+
+void print_eigen_report(const Scene& scene, const scenarios::EigenReport& r,
+                        std::size_t max_rows) {
+  fmt::print("{}", scenarios::eigen_modes_report(scene, r, max_rows));
+}
 
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   const char* scene = "Scene YAML file";

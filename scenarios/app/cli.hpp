@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,11 +19,26 @@ class Option;
 
 namespace ferro::scenarios {
 struct Parameter;
+struct Scene;
+struct EigenReport;
 }
 
 namespace ferro::cli {
 
 using VerbHandler = std::function<int()>;
+
+/// What the environment gives a tangential model the command line names (the program reads the
+/// environment, the library never does): mim_table without a "table" option gets
+/// table = $FERRO_MIM_TABLE when that is set. Other models: `options` unchanged.
+[[nodiscard]] std::map<std::string, std::string> with_environment_options(
+    const std::string& model, std::map<std::string, std::string> options = {});
+
+/// The eigenvalue sweep as `eig` and `critical-speed eigen` print it: per speed (at most
+/// `max_rows`, evenly strided) the least damped hunting mode (damping ratio, frequency, shape)
+/// and the least damped mode of each other class apart; the Hopf speed (a hunting mode
+/// crossing zero); the least damped modes at the scene's own speed.
+void print_eigen_report(const scenarios::Scene& scene, const scenarios::EigenReport& report,
+                        std::size_t max_rows);
 
 /// Exit codes of the ferrodyn program.
 inline constexpr int kExitOk = 0;

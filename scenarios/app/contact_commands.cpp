@@ -6,22 +6,22 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "ferro/contact/hertz.hpp"
-#include "ferro/contact/reduction_factors.hpp"
-#include "ferro/contact/tangential_model.hpp"
 #include "cli.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
@@ -123,7 +123,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
                                           std::cout);
         return kExitOk;
       }
-      const auto model = fc::make_tangential_model(input.model, options);
+      const auto model =
+          fc::make_tangential_model(input.model, with_environment_options(input.model, options));
       print_json(input, scenarios::evaluate_contact(input, *model, source));
       return kExitOk;
     };

@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +19,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -29,7 +29,7 @@
 
 #include "cli.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/pair_report.hpp"
 #include "ferro/scenarios/pose_search.hpp"

@@ -10,7 +10,8 @@
 #include <thread>
 
 #include "cli.hpp"
-#include "ferro/contact/mim_table.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/mim_solve.hpp"
 
 namespace ferro::cli {

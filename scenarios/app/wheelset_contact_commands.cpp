@@ -17,8 +17,8 @@
 #include "cli.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/report.hpp"
+#include "ferro/scenarios/wheelset_contact_file.hpp"
 #include "plotting.hpp"
-#include "ferro/scenarios/wheelset_contact.hpp"
 
 namespace ferro::cli {
 namespace {
@@ -31,7 +31,7 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
   if (!only.empty()) {
     std::set<int> known;
     for (const auto& c : in.cases) known.insert(c.id);
-    std::vector<scenarios::WheelsetCase> kept;
+    std::vector<fc::WheelsetCase> kept;
     for (int id : only) {
       if (!known.count(id)) {
         throw std::invalid_argument(fmt::format("--cases: case {} is not in {} (ids {}..{})", id,
@@ -44,12 +44,12 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
     in.cases = kept;
   }
   const fc::WheelRailPair pair = scenarios::make_wheel_rail_pair(in.pair);
-  const auto results = scenarios::solve_wheelset_contacts(pair, in);
+  const auto results = fc::solve_wheelset_contacts(pair, in.spec, in.cases);
   fmt::print("{}", scenarios::wheelset_contact_report(results));
   std::filesystem::path h5(out);
   std::filesystem::path csv = h5;
   csv.replace_extension(".csv");
-  scenarios::write_wheelset_contacts(results, in, h5.string(), csv.string());
+  fc::write_wheelset_contacts(results, in.spec, in.pair.path, h5.string(), csv.string());
   fmt::print("wrote {}, {}\n", h5.string(), csv.string());
   if (plot) {
     if (run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "ferro/contact/io/room.hpp"
+#include "ferro/io/room.hpp"
 
 namespace ferro::scenarios {
 

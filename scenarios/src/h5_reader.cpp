@@ -1,7 +1,7 @@
 // Reading any ferrodyn HDF5 file back (see the header).
 #include "ferro/scenarios/h5_reader.hpp"
 
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::scenarios {
 namespace {

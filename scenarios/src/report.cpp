@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <vector>
 #include <numbers>
 
 #include "ferro/scenarios/model_factory.hpp"
@@ -69,27 +71,96 @@ std::string run_report(const Scene& scene, const RunSummary& s) {
   return text;
 }
 
+std::string eigen_modes_report(const Scene& scene, const EigenReport& r, std::size_t max_rows) {
+  std::string text;
+  auto out = std::back_inserter(text);
+  using vehicle::ModeClass;
+  const auto cell = [](const vehicle::Mode& m) {
+    return std::isnan(m.damping_ratio) ? fmt::format("{:>10} {:>8}", "-", "-")
+                                       : fmt::format("{:>+10.5f} {:>8.3f}", m.damping_ratio,
+                                                     m.frequency_hz);
+  };
+  const bool classified = !r.sweep.empty() && r.sweep.front().least_damped.kind !=
+                                                  ModeClass::unclassified;
+  const std::size_t stride = std::max<std::size_t>(1, (r.sweep.size() + max_rows - 1) / max_rows);
+  if (classified) {
+    // Classes other than hunting and contact only where the model has such modes.
+    std::vector<ModeClass> shown = {ModeClass::hunting, ModeClass::contact};
+    for (const auto c : {ModeClass::longitudinal, ModeClass::body, ModeClass::track}) {
+      for (const auto& p : r.sweep) {
+        if (!std::isnan(p.of(c).damping_ratio)) {
+          shown.push_back(c);
+          break;
+        }
+      }
+    }
+    fmt::format_to(out, "  hunting mode (followed down from the highest speed by its shape) and the least "
+               "damped mode of each other class: damping ratio, frequency [Hz]; shapes as "
+               "kinetic-energy shares\n");
+    fmt::format_to(out, "  {:>8} {:>8}", "V [m/s]", "V [km/h]");
+    for (const auto c : shown) fmt::format_to(out, " | {:<19}", vehicle::to_string(c));
+    fmt::format_to(out, " | hunting mode shape\n");
+    for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
+      const auto& p = r.sweep[i];
+      fmt::format_to(out, "  {:>8.3f} {:>8.2f}", p.speed, p.speed * 3.6);
+      for (const auto c : shown) fmt::format_to(out, " | {}", cell(c == ModeClass::hunting ? p.hunting : p.of(c)));
+      fmt::format_to(out, " | {}{}\n", p.hunting.shape(),
+                 p.hunting_correlation < vehicle::kShapeTracked
+                     ? " (branch lost above: least damped hunting-class mode)"
+                     : "");
+    }
+  } else {
+    fmt::format_to(out, "  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
+               "freq [Hz]");
+    for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
+      const auto& p = r.sweep[i];
+      fmt::format_to(out, "  {:>10.3f} {:>10.2f} {:>+14.5f} {:>12.4f}\n", p.speed, p.speed * 3.6,
+                 p.least_damped.damping_ratio, p.least_damped.frequency_hz);
+    }
+  }
+  if (r.critical_speed) {
+    fmt::format_to(out, "  Hopf speed ({} mode crosses zero damping): {:.6f} m/s = {:.3f} km/h\n",
+               classified ? "a hunting" : "the least damped", *r.critical_speed,
+               *r.critical_speed * 3.6);
+  } else {
+    fmt::format_to(out, "  no {}critical speed in [{:g}, {:g}] m/s\n", classified ? "hunting " : "",
+               scene.eigen.speed_min, scene.eigen.speed_max);
+  }
+  if (classified) {
+    // Other classes that are unstable somewhere: reported, not taken for hunting.
+    for (const auto c : {ModeClass::contact, ModeClass::longitudinal, ModeClass::body,
+                         ModeClass::track}) {
+      for (const auto& p : r.sweep) {
+        if (p.of(c).damping_ratio <= -vehicle::kNeutralDamping) {
+          fmt::format_to(out, "  note      a {} mode is unstable at {:.3f} m/s ({:.3f} Hz, damping {:+.5f}, "
+                     "{})\n",
+                     vehicle::to_string(c), p.speed, p.of(c).frequency_hz, p.of(c).damping_ratio,
+                     p.of(c).shape());
+          break;
+        }
+      }
+    }
+    if (!r.modes_at_scene_speed.empty()) {
+      fmt::format_to(out, "  modes at the scene's speed {:.3f} m/s, least damped first (up to 12):\n",
+                 scene.simulation.speed);
+      std::size_t shown = 0;
+      for (const auto& m : r.modes_at_scene_speed) {
+        if (m.eigenvalue.imag() < 0.0) continue;  // one of each complex pair
+        fmt::format_to(out, "    {:<12} {:>+10.5f} {:>9.3f} Hz  {}\n", vehicle::to_string(m.kind),
+                   m.damping_ratio, m.frequency_hz, m.shape());
+        if (++shown == 12) break;
+      }
+    }
+  }
+  return text;
+}
+
 std::string eigen_sweep_report(const Scene& scene, const EigenReport& r) {
   std::string text;
   auto out = std::back_inserter(text);
   fmt::format_to(out, "ferrodyn eig: {} ({}), {} speeds in [{:g}, {:g}] m/s\n", scene.name,
                  scene.path, scene.eigen.points, scene.eigen.speed_min, scene.eigen.speed_max);
-  fmt::format_to(out, "  {:>10} {:>10} {:>14} {:>12}\n", "V [m/s]", "V [km/h]", "damping ratio",
-                 "freq [Hz]");
-  const std::size_t stride = std::max<std::size_t>(1, r.sweep.size() / 15);
-  for (std::size_t i = 0; i < r.sweep.size(); i += stride) {
-    const auto& p = r.sweep[i];
-    fmt::format_to(out, "  {:>10.3f} {:>10.2f} {:>+14.5f} {:>12.4f}\n", p.speed, p.speed * 3.6,
-                   p.least_damped.damping_ratio, p.least_damped.frequency_hz);
-  }
-  if (r.critical_speed) {
-    fmt::format_to(out,
-                   "  critical speed (least damped mode crosses zero): {:.6f} m/s = {:.3f} km/h\n",
-                   *r.critical_speed, *r.critical_speed * 3.6);
-  } else {
-    fmt::format_to(out, "  no critical speed in [{:g}, {:g}] m/s\n", scene.eigen.speed_min,
-                   scene.eigen.speed_max);
-  }
+  text += eigen_modes_report(scene, r, 16);
   if (r.closed_form_critical_speed) {
     fmt::format_to(out, "  closed form eq. (151): {:.6f} m/s", *r.closed_form_critical_speed);
     if (r.critical_speed) {
@@ -103,7 +174,7 @@ std::string eigen_sweep_report(const Scene& scene, const EigenReport& r) {
   return text;
 }
 
-std::string wheelset_contact_report(const std::vector<WheelsetContact>& results) {
+std::string wheelset_contact_report(const std::vector<contact::WheelsetContact>& results) {
   std::string text;
   auto out = std::back_inserter(text);
   fmt::format_to(

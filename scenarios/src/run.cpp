@@ -12,7 +12,8 @@
 #include <optional>
 #include <thread>
 
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/io/text_writer.hpp"
+#include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 
@@ -293,14 +294,15 @@ std::optional<double> hopf_speed(const vehicle::LinearisationAtSpeed& family, do
 }
 
 std::optional<double> hopf_speed(const Scene& scene, double v_min, double v_max, int scan_points) {
-  return hopf_speed(linearisation_family(scene), v_min, v_max, scan_points);
+  return hopf_speed(analysis::with_mode_shapes(scene, linearisation_family(scene)), v_min, v_max,
+                    scan_points);
 }
 
 EigenReport run_eigen(const Scene& scene) {
   EigenReport report;
   // Each speed about its own equilibrium (for a vehicle the static equilibrium depends on the
   // speed through the creep forces' dependence on it, see linearisation_family()).
-  const auto family = linearisation_family(scene);
+  const auto family = analysis::with_mode_shapes(scene, linearisation_family(scene));
   std::vector<double> speeds(static_cast<std::size_t>(scene.eigen.points));
   for (int i = 0; i < scene.eigen.points; ++i) {
     speeds[static_cast<std::size_t>(i)] =
@@ -311,8 +313,8 @@ EigenReport run_eigen(const Scene& scene) {
   report.critical_speed =
       hopf_speed(family, scene.eigen.speed_min, scene.eigen.speed_max, scene.eigen.points);
   const auto at_scene_speed = family(scene.simulation.speed);
-  report.modes_at_scene_speed =
-      vehicle::linear_modes(*at_scene_speed.system, 0.0, at_scene_speed.x_eq);
+  report.modes_at_scene_speed = vehicle::linear_modes(*at_scene_speed.system, 0.0,
+                                                      at_scene_speed.x_eq, at_scene_speed.shapes);
   if (scene.model.type == "suspended_wheelset") {
     try {
       report.closed_form_critical_speed = vehicle::analytic_critical_speed(
@@ -337,12 +339,58 @@ void write_eigen_report(const Scene& scene, const EigenReport& report, const std
     im.push_back(p.least_damped.eigenvalue.imag());
   }
   file.write_vector("/eigen/speed", v, "m/s", "forward speed of the sweep");
-  file.write_vector("/eigen/damping_ratio", zeta, "-", "damping ratio of the least damped mode");
+  file.write_vector("/eigen/damping_ratio", zeta, "-",
+                    "damping ratio of the least damped mode of any class");
   file.write_vector("/eigen/frequency", freq, "Hz", "frequency of the least damped mode");
   file.write_vector("/eigen/eigenvalue_real", re, "1/s",
                     "real part of the least damped eigenvalue");
   file.write_vector("/eigen/eigenvalue_imag", im, "1/s",
                     "imaginary part of the least damped eigenvalue");
+  // The hunting mode followed over the speeds, and the least damped mode of each class (NaN
+  // where the class has none), with their participation.
+  if (!report.sweep.empty() && report.sweep.front().least_damped.kind !=
+                                   vehicle::ModeClass::unclassified) {
+    std::vector<double> hz, hf, hc, hs;
+    for (const auto& p : report.sweep) {
+      hz.push_back(p.hunting.damping_ratio);
+      hf.push_back(p.hunting.frequency_hz);
+      hc.push_back(p.hunting_correlation);
+      for (double s : p.hunting.participation) hs.push_back(s);
+    }
+    file.write_vector("/eigen/hunting_mode/damping_ratio", hz, "-",
+                      "damping ratio of the hunting mode (followed down from the highest speed)");
+    file.write_vector("/eigen/hunting_mode/frequency", hf, "Hz", "frequency of the hunting mode");
+    file.write_vector("/eigen/hunting_mode/correlation", hc, "-",
+                      "shape correlation with the hunting mode of the speed above (below 0.5: "
+                      "branch lost, the least damped hunting-class mode taken)");
+    file.write_matrix("/eigen/hunting_mode/participation", hs, report.sweep.size(),
+                      static_cast<std::size_t>(vehicle::kDofGroups), "-",
+                      "kinetic-energy share of each group, speeds x groups");
+  }
+  for (const auto c : {vehicle::ModeClass::hunting, vehicle::ModeClass::contact,
+                       vehicle::ModeClass::longitudinal, vehicle::ModeClass::body,
+                       vehicle::ModeClass::track}) {
+    const std::string name = vehicle::to_string(c);
+    std::vector<double> cz, cf, share;
+    for (const auto& p : report.sweep) {
+      cz.push_back(p.of(c).damping_ratio);
+      cf.push_back(p.of(c).frequency_hz);
+      for (double s : p.of(c).participation) share.push_back(s);
+    }
+    file.write_vector("/eigen/" + name + "/damping_ratio", cz, "-",
+                      "damping ratio of the least damped " + name + " mode");
+    file.write_vector("/eigen/" + name + "/frequency", cf, "Hz",
+                      "frequency of the least damped " + name + " mode");
+    file.write_matrix("/eigen/" + name + "/participation", share, report.sweep.size(),
+                      static_cast<std::size_t>(vehicle::kDofGroups), "-",
+                      "kinetic-energy share of each group (attribute groups), speeds x groups");
+    std::string groups;
+    for (int g = 0; g < vehicle::kDofGroups; ++g) {
+      if (g > 0) groups += ',';
+      groups += vehicle::to_string(static_cast<vehicle::DofGroup>(g));
+    }
+    file.set_attribute("/eigen/" + name, "groups", groups);
+  }
   file.set_attribute("/eigen", "critical_speed", report.critical_speed.value_or(std::nan("")));
   file.set_attribute("/eigen", "closed_form_critical_speed",
                      report.closed_form_critical_speed.value_or(std::nan("")));

@@ -9,7 +9,7 @@
 #include <optional>
 #include <set>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/vehicle_file.hpp"
@@ -286,8 +286,8 @@ void read_contact_part(MapReader& top, Scene& scene, Parts& included) {
     cr.semi_axis_a = c.number("semi_axis_a");
     cr.semi_axis_b = c.number("semi_axis_b");
     cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
-    cr.k11 = c.number_or("k11", cr.k11);
-    cr.k22 = c.number_or("k22", cr.k22);
+    cr.reduction.k11 = c.number_or("k11", cr.reduction.k11);
+    cr.reduction.k22 = c.number_or("k22", cr.reduction.k22);
     read_material(c.map_or_empty("wheel"), cr.wheel);
     read_material(c.map_or_empty("rail"), cr.rail);
     c.finish();
@@ -491,7 +491,8 @@ Scene load_scene_text(const std::string& text, const std::string& path,
   return read_scene_with(parse_yaml_text(text, path), overrides);
 }
 
-void override_tangential(Scene& scene, const std::string& name, const std::string& flag) {
+void override_tangential(Scene& scene, const std::string& name, const std::string& flag,
+                         const contact::ModelOptions& options) {
   if (scene.model.type != "vehicle") {
     throw std::invalid_argument(fmt::format(
         "{}: only vehicle scenes choose a tangential model (this one is {})", flag,
@@ -504,6 +505,7 @@ void override_tangential(Scene& scene, const std::string& name, const std::strin
   }
   auto& w = scene.model.vehicle.wheel_rail;
   if (w.tangential_model != name) w.tangential_options.clear();
+  w.tangential_options.insert(options.begin(), options.end());  // keeps the keys already set
   w.tangential_model = name;
   try {
     (void)contact::make_tangential_model(name, w.tangential_options);

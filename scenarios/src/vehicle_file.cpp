@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "located.hpp"
 #include "yaml_values.hpp"
 
@@ -110,13 +110,19 @@ BodyBlock read_body(MapReader b, BodyKind kind) {
     out.inertia[2] = in.number("yaw");
     in.finish();
   }
+  // Default degrees of freedom: every body free but the car body's x (the vehicle's
+  // longitudinal position, neutral: nothing holds it lengthwise) and the wheelset's pitch (its
+  // rotation about the axle is the spin). Bogie frames and wheelsets move lengthwise on the
+  // secondary and primary longitudinal suspension, and the wheelsets' spin speed is free, so
+  // longitudinal creep forces pass through the suspension instead of into a constraint.
   std::vector<std::string> dof_names = {"x", "y", "z", "roll", "pitch", "yaw"};
   std::vector<std::string> defaults = {"y", "z", "roll", "pitch", "yaw"};
+  if (kind == BodyKind::bogie_frame) defaults = {"x", "y", "z", "roll", "pitch", "yaw"};
   if (kind == BodyKind::wheelset) {
     out.rolling_radius = b.number("nominal_rolling_radius");
     out.flange_back_distance = b.number_or("flange_back_distance", out.flange_back_distance);
     dof_names = {"x", "y", "z", "roll", "yaw", "spin", "spin_perturbation"};
-    defaults = {"y", "z", "roll", "yaw"};
+    defaults = {"x", "y", "z", "roll", "yaw", "spin"};
   } else {
     out.cg_height = b.number("cg_height");
   }
@@ -326,10 +332,11 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   }
   if (r.has("reduction")) {
     MapReader k = r.map("reduction");
-    const char* names[] = {"k11", "k22", "k23", "k33"};
-    for (int i = 0; i < 4; ++i) {
-      w.reduction[static_cast<std::size_t>(i)] = k.number_or(names[i], 1.0);
-    }
+    const std::pair<const char*, double*> factors[] = {{"k11", &w.reduction.k11},
+                                                       {"k22", &w.reduction.k22},
+                                                       {"k23", &w.reduction.k23},
+                                                       {"k33", &w.reduction.k33}};
+    for (const auto& [name, value] : factors) *value = k.number_or(name, 1.0);
     k.finish();
   } else {
     r.allow("reduction");

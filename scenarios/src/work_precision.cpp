@@ -11,7 +11,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/io/text_writer.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 
 namespace ferro::scenarios {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "ferro/contact/mim/mim.hpp"
-#include "ferro/contact/mim_tangential_model.hpp"
-#include "ferro/contact/saturation_laws.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/mim_model.hpp"
+#include "ferro/contact/tangential/saturation_laws.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "reference_tangential_case.hpp"
 
 namespace fc = ferro::contact;

@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "reference_tangential_case.hpp"
 
 namespace fc = ferro::contact;

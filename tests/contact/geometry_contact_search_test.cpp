@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 
 namespace fc = ferro::contact;
 

@@ -8,8 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/contact/geometry/contact_source_factory.hpp"
+#include "ferro/contact/geometry/multi_point_contact_table.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace fc = ferro::contact;
 namespace fio = ferro::io;

@@ -5,16 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include "a22_pair.hpp"
-
 #include <cmath>
 #include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/hertz.hpp"
+#include "a22_pair.hpp"
+#include "ferro/contact/geometry/conical_source.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/geometry/search_source.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 
 namespace fc = ferro::contact;
 

@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include "a22_pair.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,7 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "a22_pair.hpp"
+#include "ferro/contact/geometry/multi_point_contact_table.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/geometry/search_source.hpp"
 
 namespace fc = ferro::contact;
 

@@ -1,5 +1,5 @@
 // Hertz normal contact against closed forms, the thesis's annex A.1 table and Table 3.7.
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <numbers>
 #include <string>
 
-#include "ferro/contact/elliptic.hpp"
 #include "ferro/contact/material.hpp"
-#include "ferro/contact/normal_model.hpp"
+#include "ferro/contact/normal/elliptic.hpp"
+#include "ferro/contact/normal/normal_model.hpp"
 
 namespace fc = ferro::contact;
 constexpr double kPi = std::numbers::pi;

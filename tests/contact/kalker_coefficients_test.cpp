@@ -1,5 +1,5 @@
 // Kalker's C_ij: annex A.2 nodes, the g -> 0 asymptotes and VOCO's fits (eq. 154).
-#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 
 namespace fc = ferro::contact;
 

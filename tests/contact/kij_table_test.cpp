@@ -1,11 +1,11 @@
 // K_ij tables: HDF5 round trip in the docs/KIJ_TABLE.md layout and multilinear interpolation.
+#include "ferro/contact/kij/kij_table.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <string>
-
-#include "ferro/contact/reduction_factors.hpp"
 
 namespace fc = ferro::contact;
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 
 namespace fc = ferro::contact;
 

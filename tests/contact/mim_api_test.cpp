@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/io/hdf5.hpp"
-#include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/io/hdf5.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;

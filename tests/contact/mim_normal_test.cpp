@@ -40,7 +40,7 @@ TEST(MimNormal, hertz_spheres_profile_and_force) {
   const Field gap = sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kR); });
 
   const double delta = 0.4e-3;
-  const NormalSolution s = solve_normal_approach(op, gap, delta);
+  const NormalGridSolution s = solve_normal_approach(op, gap, delta);
   ASSERT_TRUE(s.converged) << s.iterations;
   EXPECT_LE(s.gap_residual, 1.0e-8);
   EXPECT_LE(s.penetration_residual, 1.0e-8);
@@ -74,7 +74,7 @@ TEST(MimNormal, hertz_spheres_profile_and_force) {
   // F(delta) law over the thesis's range (figure 2.6), load control: the approach is an output.
   for (double d : {0.1e-3, 0.25e-3, 0.55e-3}) {
     const double f = hertz_force(m.contact_modulus, d);
-    const NormalSolution sf = solve_normal_force(op, gap, f);
+    const NormalGridSolution sf = solve_normal_force(op, gap, f);
     ASSERT_TRUE(sf.converged);
     EXPECT_NEAR(sf.normal_force, f, 1.0e-9 * f);
     EXPECT_NEAR(sf.approach / d, 1.0, kForceTol) << "delta = " << d;
@@ -103,7 +103,7 @@ TEST(MimNormal, love_rigid_cone) {
   InfluenceOperator op(grid, m);
   const Field gap = sample(grid, [&](double x, double y) { return std::hypot(x, y) / tan_theta; });
   const double delta = 0.4e-3;
-  const NormalSolution s = solve_normal_approach(op, gap, delta);
+  const NormalGridSolution s = solve_normal_approach(op, gap, delta);
   ASSERT_TRUE(s.converged);
 
   const double f_love = 2.0 / std::numbers::pi * estar * tan_theta * delta * delta;  // (95)
@@ -146,7 +146,7 @@ TEST(MimNormal, complementarity_on_arbitrary_gap) {
   });
   for (double& z : gap) z += 0.5e-6 * rnd();
   const double fn = 20.0e3;
-  const NormalSolution s = solve_normal_force(op, gap, fn);
+  const NormalGridSolution s = solve_normal_force(op, gap, fn);
   ASSERT_TRUE(s.converged);
   EXPECT_NEAR(s.normal_force, fn, 1.0e-9 * fn);
   double umax = 0.0;
@@ -168,7 +168,7 @@ TEST(MimNormal, truncated_patch_is_flagged) {
     const Grid grid = Grid::centred(n, n, 0.5e-3, 0.5e-3);
     InfluenceOperator op(grid, m);
     const Field gap = sample(grid, [](double x, double y) { return (x * x + y * y) / (2.0 * kR); });
-    const NormalSolution s = solve_normal_approach(op, gap, 0.4e-3);
+    const NormalGridSolution s = solve_normal_approach(op, gap, 0.4e-3);
     ASSERT_TRUE(s.converged);
     if (n == 41)
       EXPECT_EQ(s.boundary_contact_elements, 0);

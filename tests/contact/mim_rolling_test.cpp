@@ -4,16 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "mim_kalker.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/mim/mim.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/contact/mim/tangential_solver.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "mim_kalker.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -28,7 +28,7 @@ struct SphereCase {
   CombinedMaterial m = combine(kSteel, kSteel);
   Grid grid = Grid::centred(37, 37, 0.5e-3, 0.5e-3);
   InfluenceOperator op{grid, m};
-  NormalSolution normal;
+  NormalGridSolution normal;
   double a = 0.0;
   SphereCase() {
     const Field gap =
@@ -83,7 +83,7 @@ TEST(MimRolling, thesis_sphere_cases) {
   for (const RollingInput in :
        {RollingInput{3.0e-3, 0.0, 0.0, mu}, RollingInput{0.0, 3.0e-3, 0.0, mu},
         RollingInput{0.0, 0.0, 0.6, mu}}) {
-    const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in);
+    const TangentialGridSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in);
     ASSERT_TRUE(t.converged);
     EXPECT_LE(t.coulomb_residual, 1.0e-5);
     const double lin_x = -g * a * a * kc.c11 * in.creepage_x;
@@ -135,7 +135,7 @@ TEST(MimRolling, thesis_creep_curve_25_points) {
   std::vector<double> fx;
   for (int k = 0; k < 25; ++k) {
     const double xi = -20.0e-3 + k * (40.0e-3 / 24.0);
-    const TangentialSolution t =
+    const TangentialGridSolution t =
         solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{xi, 0.0, 0.0, mu});
     ASSERT_TRUE(t.converged) << xi;
     EXPECT_LE(std::abs(t.force_x), mu * fn * (1.0 + 1.0e-9));
@@ -150,7 +150,7 @@ TEST(MimRolling, thesis_creep_curve_25_points) {
   EXPECT_NEAR(fx[0], mu * fn, 1.0e-3 * mu * fn);
   EXPECT_NEAR(fx[24], -mu * fn, 1.0e-3 * mu * fn);
   const double tiny = 1.0e-7;
-  const TangentialSolution lin =
+  const TangentialGridSolution lin =
       solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{tiny, 0.0, 0.0, mu});
   const double c11 = -lin.force_x / (sc.m.shear_modulus * sc.a * sc.a * tiny);
   EXPECT_NEAR(c11 / kalker_coefficients_table(1.0, 1.0, 0.28).c11, 1.0, 0.05);
@@ -163,13 +163,13 @@ TEST(MimRolling, thesis_creep_curve_25_points) {
 TEST(MimRolling, saturation_combined) {
   SphereCase sc;
   const double mu = 0.2, fn = sc.normal.normal_force;
-  const TangentialSolution t =
+  const TangentialGridSolution t =
       solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{0.03, 0.04, 0.0, mu});
   ASSERT_TRUE(t.converged);
   EXPECT_EQ(t.stick_elements, 0);
   EXPECT_NEAR(std::hypot(t.force_x, t.force_y), mu * fn, 1.0e-3 * mu * fn);
   EXPECT_NEAR(std::atan2(-t.force_y, -t.force_x), std::atan2(0.04, 0.03), 0.5 * 3.14159265 / 180.0);
-  const TangentialSolution ts =
+  const TangentialGridSolution ts =
       solve_steady_rolling(sc.op, sc.normal.pressure, RollingInput{0.02, 0.01, 3.0, mu});
   ASSERT_TRUE(ts.converged);
   EXPECT_LT(std::hypot(ts.force_x, ts.force_y), mu * fn);  // spin diverts part of the traction
@@ -195,7 +195,7 @@ TEST(MimRolling, robustness_envelope) {
     const HertzGap hg = hertz_gap_for_ellipse(a, b, fn, m.contact_modulus);
     const Grid grid = grid_for_ellipse(a, b, 24);
     InfluenceOperator op(grid, m);
-    const NormalSolution s =
+    const NormalGridSolution s =
         solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
     ASSERT_TRUE(s.converged);
     for (double level : {0.1, 0.5, 1.0, 3.0}) {
@@ -205,13 +205,13 @@ TEST(MimRolling, robustness_envelope) {
       for (const RollingInput in :
            {RollingInput{xs, 0.0, 0.0, mu}, RollingInput{0.0, ys, 0.0, mu},
             RollingInput{0.0, 0.0, ps, mu}, RollingInput{0.6 * xs, -0.6 * ys, 0.5 * ps, mu}}) {
-        const TangentialSolution t = solve_steady_rolling(op, s.pressure, in);
+        const TangentialGridSolution t = solve_steady_rolling(op, s.pressure, in);
         ++cases;
         ASSERT_TRUE(t.converged) << "a/b " << ratio << " level " << level;
         EXPECT_LE(t.coulomb_residual, 1.0e-9);
         EXPECT_LE(std::hypot(t.force_x, t.force_y), mu * fn * (1.0 + 1.0e-9));
         if (level == 0.5) {
-          const TangentialSolution r = solve_steady_rolling(
+          const TangentialGridSolution r = solve_steady_rolling(
               op, s.pressure, RollingInput{-in.creepage_x, -in.creepage_y, -in.spin, mu});
           ASSERT_TRUE(r.converged);
           EXPECT_NEAR(r.force_x, -t.force_x, 1.0e-5 * mu * fn);
@@ -232,13 +232,13 @@ TEST(MimRolling, solver_options_same_solution) {
   const RollingInput in{2.0e-3, -1.0e-3, 0.4, mu};
   TangentialSolverOptions fft;
   fft.fft_preconditioner_min_elements = 0;
-  const TangentialSolution ref = solve_steady_rolling(sc.op, sc.normal.pressure, in, fft);
+  const TangentialGridSolution ref = solve_steady_rolling(sc.op, sc.normal.pressure, in, fft);
   TangentialSolverOptions plain;
   plain.fft_preconditioner_min_elements = std::numeric_limits<int>::max();
   TangentialSolverOptions nested;
   nested.nested = true;
   for (const TangentialSolverOptions& o : {plain, nested}) {
-    const TangentialSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in, o);
+    const TangentialGridSolution t = solve_steady_rolling(sc.op, sc.normal.pressure, in, o);
     ASSERT_TRUE(ref.converged && t.converged);
     EXPECT_NEAR(t.force_x, ref.force_x, 1.0e-5 * mu * fn);
     EXPECT_NEAR(t.force_y, ref.force_y, 1.0e-5 * mu * fn);

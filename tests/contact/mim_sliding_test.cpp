@@ -27,14 +27,16 @@ TEST(MimSliding, cattaneo_mindlin) {
   InfluenceOperator op(grid, m);
   const Field gap =
       sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
-  const NormalSolution normal = solve_normal_approach(op, gap, 0.4e-3);
+  const NormalGridSolution normal = solve_normal_approach(op, gap, 0.4e-3);
   ASSERT_TRUE(normal.converged);
   const double fn = normal.normal_force;
   const double a = std::cbrt(3.0 * fn * r_rel / (4.0 * m.contact_modulus));
   const double mu = 0.2;
 
+  TangentialWorkspace workspace;  // one Krylov basis for every shift
   for (double shift : {0.01e-3, 0.03e-3, 0.05e-3, 0.07e-3, 0.09e-3}) {
-    const TangentialSolution t = solve_sliding(op, normal.pressure, SlidingInput{shift, 0.0, mu});
+    const TangentialGridSolution t =
+        solve_sliding(op, normal.pressure, SlidingInput{shift, 0.0, mu}, {}, workspace);
     ASSERT_TRUE(t.converged) << shift;
     EXPECT_LE(t.coulomb_residual, 1.0e-9);
     const double base =
@@ -64,12 +66,13 @@ TEST(MimSliding, cattaneo_mindlin_oblique) {
   InfluenceOperator op(grid, m);
   const Field gap =
       sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
-  const NormalSolution normal = solve_normal_approach(op, gap, 0.4e-3);
+  const NormalGridSolution normal = solve_normal_approach(op, gap, 0.4e-3);
   const double fn = normal.normal_force;
   const double a = std::cbrt(3.0 * fn * r_rel / (4.0 * m.contact_modulus));
   const double mu = 0.2;
-  const TangentialSolution t =
-      solve_sliding(op, normal.pressure, SlidingInput{0.03e-3, 0.04e-3, mu});
+  TangentialWorkspace workspace;
+  const TangentialGridSolution t =
+      solve_sliding(op, normal.pressure, SlidingInput{0.03e-3, 0.04e-3, mu}, {}, workspace);
   ASSERT_TRUE(t.converged);
   const double base =
       1.0 - 16.0 * a * m.shear_modulus * 0.05e-3 / (6.0 * (2.0 - m.poisson) * mu * fn);

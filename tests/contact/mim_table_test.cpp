@@ -1,5 +1,7 @@
 // Tabulated MIM ("mim_table"): interpolated forces against direct MIM solves at off-node
 // points, symmetries, HDF5 round trip, registry.
+#include "ferro/contact/tangential/mim_table.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,9 +10,8 @@
 #include <random>
 #include <string>
 
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/mim_tangential_model.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/mim_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fc = ferro::contact;
 
@@ -137,8 +138,9 @@ TEST(mim_table, hdf5_round_trip_and_registry) {
   }
   const auto model = fc::make_tangential_model("mim_table", {{"table", path}});
   EXPECT_EQ(model->name(), "mim_table");
+  // A table that cannot be opened is bad input, as every table the user names.
   EXPECT_THROW((void)fc::make_tangential_model("mim_table", {{"table", path + ".missing"}}),
-               std::runtime_error);
+               std::invalid_argument);
   EXPECT_THROW((void)fc::make_tangential_model("mim_table", {{"tabel", path}}),
                std::invalid_argument);
   // nu of the problem must match the table's.

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "ferro/contact/mim_tangential_model.hpp"
-#include "ferro/contact/normal_model.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/normal/normal_model.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/mim_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fc = ferro::contact;
 

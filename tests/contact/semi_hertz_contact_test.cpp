@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/geometry/search_source.hpp"
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
 
 namespace fc = ferro::contact;

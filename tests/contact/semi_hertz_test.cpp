@@ -1,5 +1,5 @@
 // Semi-Hertz (Ayasse-Chollet) against Hertz on a quadratic gap, and on two-lobe gaps.
-#include "ferro/contact/semi_hertz.hpp"
+#include "ferro/contact/normal/semi_hertz.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <numbers>
 #include <random>
 
-#include "ferro/contact/hertz.hpp"
-#include "ferro/contact/normal_model.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/contact/normal/normal_model.hpp"
 
 namespace fc = ferro::contact;
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/hertz.hpp"
-#include "ferro/contact/normal_model.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/contact/normal/normal_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fc = ferro::contact;
 

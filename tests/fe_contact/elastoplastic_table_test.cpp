@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/fe_contact/elastoplastic.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <utility>
 
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"
 
 namespace fs = std::filesystem;

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/influence_operator.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"
 #include "thesis_hertz_case.hpp"
 
@@ -78,7 +78,8 @@ TEST(InterfaceLayer, yield_shear_lowers_saturation_not_initial_slope) {
   const CreepStiffness sp = creep_stiffness(op, gap, plastic);
   EXPECT_NEAR(sp.s11, se.s11, kSlopeTolerance * se.s11);
   // Saturation at large creepage: full slip, F_x = -sum min(mu p, tau_c) dA exactly.
-  const contact::mim::NormalSolution n = contact::mim::solve_normal_force(op, gap, c.normal_force);
+  const contact::mim::NormalGridSolution n =
+      contact::mim::solve_normal_force(op, gap, c.normal_force);
   double bound_sum = 0.0;
   for (double p : n.pressure) bound_sum += std::min(c.friction * p, plastic.yield_shear);
   bound_sum *= grid.element_area();

@@ -1,5 +1,7 @@
 // `ferrodyn bench contact`: the case set reaches from micro-slip to full slip, and a quick run
 // orders the models as the theory says and keeps every saturating model within Coulomb.
+#include "ferro/scenarios/contact_bench.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,8 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "ferro/contact/tangential_model.hpp"
-#include "ferro/scenarios/contact_bench.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fs = ferro::scenarios;
 

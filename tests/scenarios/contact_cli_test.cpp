@@ -1,6 +1,5 @@
 // Smoke and consistency tests of `ferrodyn contact eval | curve | patch` on the shipped cases.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
@@ -8,14 +7,15 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 #include <string>
 
-#include "ferro/contact/io/hdf5.hpp"
-#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/contact/material.hpp"
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace fs = std::filesystem;
 

@@ -36,7 +36,7 @@ TEST(WheelsetCriticalSpeed, RampEnvelopePeaksAtHopfSpeed) {
   o.solver = s.solver;
   const auto family = speed_family(s);
   const auto probe = family(o.speed_initial);
-  o.observed = lateral_states(*probe).index.front();
+  o.observed = lateral_states(*probe).index;
   const auto x0 = disturbed_state(s, *probe, 1e-4);
   const auto r = ramp_down(family, x0, o);
   ASSERT_TRUE(r.completed) << r.message;
@@ -72,15 +72,19 @@ TEST(WheelsetCriticalSpeed, FoldBracketContainsHopfSpeed) {
 
 TEST(WheelsetCriticalSpeed, ReductionFactorsReachTheModel) {
   const Scene s = hunting_scene();
-  const auto k = with_reduction(s, {0.5, 0.7});
+  const auto k = with_reduction(s, contact::ReductionFactors::following_k22(0.5, 0.7));
   const auto c1 = vehicle::creep_coefficients(s.contact.creep);
   const auto c2 = vehicle::creep_coefficients(k.contact.creep);
   EXPECT_DOUBLE_EQ(c2.f11, 0.5 * c1.f11);
   EXPECT_DOUBLE_EQ(c2.f22, 0.7 * c1.f22);
-  EXPECT_THROW((void)with_reduction(s, {0.0, 1.0}), std::invalid_argument);
-  EXPECT_THROW((void)with_reduction(s, {1.0, 1.2}), std::invalid_argument);
-  const auto u = with_reduction(s, Reduction::uniform(0.6));
-  EXPECT_EQ(u.model.vehicle.wheel_rail.reduction, (std::array<double, 4>{0.6, 0.6, 0.6, 0.6}));
+  EXPECT_THROW((void)with_reduction(s, contact::ReductionFactors::following_k22(0.0, 1.0)),
+               std::invalid_argument);
+  EXPECT_THROW((void)with_reduction(s, contact::ReductionFactors::following_k22(1.0, 1.2)),
+               std::invalid_argument);
+  EXPECT_EQ(k.model.vehicle.wheel_rail.reduction,
+            (contact::ReductionFactors{0.5, 0.7, 0.7, 0.7}));  // K23, K33 follow K22
+  const auto u = with_reduction(s, contact::ReductionFactors::uniform(0.6));
+  EXPECT_EQ(u.model.vehicle.wheel_rail.reduction, contact::ReductionFactors::uniform(0.6));
 }
 
 }  // namespace

@@ -39,6 +39,27 @@ class HopfNormalForm final : public vehicle::OdeSystem {
   bool sub_;
 };
 
+/// Two uncoupled subcritical normal forms, a "front" one with mu = V - 1 (fold at V = 0.75) and a
+/// "rear" one with mu = V - 1 + shift (fold at 0.75 - shift): a vehicle whose rear bogie keeps a
+/// cycle below the speed where the front one loses it. States x1, y1, x2, y2.
+class TwoBogies final : public vehicle::OdeSystem {
+ public:
+  TwoBogies(double v, double shift) : front_(v - 1.0, true), rear_(v - 1.0 + shift, true) {}
+  [[nodiscard]] std::size_t size() const override { return 4; }
+  int rhs(double t, std::span<const double> x, std::span<double> xd) const override;
+  [[nodiscard]] std::vector<vehicle::SignalInfo> state_info() const override {
+    return {{"x1", "-", ""}, {"y1", "-", ""}, {"x2", "-", ""}, {"y2", "-", ""}};
+  }
+
+ private:
+  HopfNormalForm front_, rear_;
+};
+
+int TwoBogies::rhs(double t, std::span<const double> x, std::span<double> xd) const {
+  front_.rhs(t, x.subspan(0, 2), xd.subspan(0, 2));
+  return rear_.rhs(t, x.subspan(2, 2), xd.subspan(2, 2));
+}
+
 double subcritical_amplitude(double mu) { return std::sqrt(0.5 * (1.0 + std::sqrt(1.0 + 4.0 * mu))); }
 
 vehicle::SystemAtSpeed factory(bool subcritical) {
@@ -310,6 +331,7 @@ TEST(Ramp, SupercriticalDecaySpeed) {
   o.max_amplitude = 10.0;
   o.solver.rtol = 1e-9;
   o.solver.atol = 1e-12;
+  o.observed = {0, 1};
   const std::vector<double> x0 = {0.05, 0.0};
   const auto r = ramp_down(factory(false), x0, o);
   ASSERT_TRUE(r.completed) << r.message;
@@ -318,6 +340,59 @@ TEST(Ramp, SupercriticalDecaySpeed) {
   constexpr double kLag = 0.012;  // lag estimate above, doubled
   EXPECT_LT(*r.decay_speed, 1.09 + 1e-3);
   EXPECT_GT(*r.decay_speed, 1.09 - kLag);
+}
+
+// The rear pair (fold 0.65) keeps its cycle at V = 0.7 while the front pair (fold 0.75) decays:
+// the system is sustained, held by the rear pair, whose amplitude is the analytic cycle.
+TEST(LimitCycle, SustainedWhenAnyObservedStateKeepsACycle) {
+  constexpr double kShift = 0.1;
+  auto o = settle_options();
+  o.observed = {0, 2};
+  TwoBogies sys(0.7, kShift);
+  const std::vector<double> x0 = {1.0, 0.0, 1.0, 0.0};
+  const auto r = run_until_settled(sys, x0, o);
+  ASSERT_EQ(r.outcome, Oscillation::kSteady) << r.message;
+  EXPECT_EQ(r.holder, 1u);
+  const double expected = subcritical_amplitude(0.7 - 1.0 + kShift);
+  EXPECT_NEAR(r.amplitude[1], expected, 2e-3 * expected);
+  // The front pair has died out beside it (below 1 % of the cycle: a settled run).
+  EXPECT_LT(r.amplitude[0], 0.01 * r.amplitude[1]) << "the front pair decays";
+  // Watched alone, the front pair decays: the old single-state decision.
+  o.observed = {0};
+  EXPECT_EQ(run_until_settled(sys, x0, o).outcome, Oscillation::kDecayed);
+}
+
+// The fold of the system is the lowest speed where any pair keeps a cycle: the rear pair's
+// 0.75 - shift, not the front pair's 0.75; the bisection continues from the rear pair's cycle.
+TEST(PeriodicBranch, FoldIsTheLowestSpeedWhereAnyStateKeepsACycle) {
+  constexpr double kShift = 0.1;
+  BranchOptions o;
+  o.settle = settle_options();
+  o.settle.observed = {0, 2};
+  o.speed_start = 1.2;
+  o.speed_stop = 0.4;
+  o.speed_step = 0.1;
+  o.bracket = 2e-3;
+  const vehicle::SystemAtSpeed factory2 = [](double v) -> std::unique_ptr<vehicle::OdeSystem> {
+    return std::make_unique<TwoBogies>(v, 0.1);
+  };
+  const std::vector<double> x0 = {1.2, 0.0, 1.2, 0.0};
+  const auto b = follow_periodic_branch(factory2, x0, o);
+  ASSERT_TRUE(b.fold_found);
+  std::printf("[ figures  ] two pairs, folds 0.75 and %.2f: bracket [%.6f, %.6f], held by %zu\n",
+              0.75 - kShift, b.bracket_low, b.bracket_high, b.holder);
+  constexpr double kSlowPassage = 5e-4;  // as in SubcriticalFoldAtMuMinusQuarter
+  EXPECT_LE(b.bracket_low, 0.75 - kShift + 1e-12);
+  EXPECT_GE(b.bracket_high, 0.75 - kShift - kSlowPassage);
+  EXPECT_EQ(b.holder, 1u);
+  // Below the front pair's fold every sustained run is held by the rear pair, with the front
+  // pair at rest.
+  for (const auto& p : b.points) {
+    if (p.speed < 0.75 - 1e-3 && sustained(p.run.outcome)) {
+      EXPECT_EQ(p.run.holder, 1u) << p.speed;
+      EXPECT_LT(p.run.amplitude[0], 0.01 * p.run.amplitude[1]) << p.speed;
+    }
+  }
 }
 
 }  // namespace

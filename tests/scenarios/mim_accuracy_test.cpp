@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "bench_errors.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace fc = ferro::contact;
 

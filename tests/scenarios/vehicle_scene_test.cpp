@@ -25,9 +25,9 @@ TEST(VehicleScene, contact_and_track_parts_override_the_vehicle_file) {
   EXPECT_EQ(w.friction, 0.4);
   EXPECT_EQ(w.tangential_model, "fastsim");
   EXPECT_EQ(w.tangential_options.at("mx"), "12");
-  EXPECT_EQ(w.reduction[0], 0.5);
-  EXPECT_EQ(w.reduction[1], 0.6);
-  EXPECT_EQ(w.reduction[2], 1.0);
+  EXPECT_EQ(w.reduction.k11, 0.5);
+  EXPECT_EQ(w.reduction.k22, 0.6);
+  EXPECT_EQ(w.reduction.k23, 1.0);
   EXPECT_EQ(w.regularisation_speed, 0.5);
   EXPECT_EQ(w.track_gauge, 1.445);       // from the track part
   EXPECT_EQ(s.track.design.gauge, 1.445);

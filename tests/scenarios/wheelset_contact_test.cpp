@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 #include "process.hpp"
 #include "wheelset_contact_reference.hpp"
 
@@ -24,23 +24,23 @@ namespace {
 // Oracle: the vertical force on the rail rebuilt from the reported contact-frame forces and the
 // contact angle, Q = F_n cos(g) - s F_y sin(g) with s = +1 right, -1 left (t2 = n x t1), equals
 // the prescribed wheel load within the solve tolerance. Returns the frictionless part.
-double expect_vertical_balance(int id, const fs::WheelContact& w, double load) {
+double expect_vertical_balance(int id, const fc::WheelContact& w, double load) {
   const double s = w.side == fc::Side::right ? 1.0 : -1.0;
   double q = 0.0, q_frictionless = 0.0;
-  for (const fs::PatchContact& p : w.patches) {
+  for (const fc::PatchContact& p : w.patches) {
     const double g = p.contact_angle;
     q += p.normal_force * std::cos(g) - s * p.force_y * std::sin(g);
     q_frictionless += p.normal_force * std::cos(g);
   }
-  EXPECT_NEAR(q, load, fs::kVerticalLoadTolerance * load) << "case " << id;
+  EXPECT_NEAR(q, load, fc::kVerticalLoadTolerance * load) << "case " << id;
   return q_frictionless;
 }
 
 // |F_t| <= mu F_n on every patch. Tolerance 1e-3 relative: the MIM solver's Coulomb residual is
 // below 1e-5 of mu p per element; the rest is rounding of the sums.
-void expect_coulomb_bound(int id, const fs::WheelContact& w, double mu) {
+void expect_coulomb_bound(int id, const fc::WheelContact& w, double mu) {
   constexpr double kCoulombTol = 1.0e-3;
-  for (const fs::PatchContact& p : w.patches) {
+  for (const fc::PatchContact& p : w.patches) {
     EXPECT_TRUE(p.converged) << "case " << id;
     EXPECT_LE(std::hypot(p.force_x, p.force_y), mu * p.normal_force * (1.0 + kCoulombTol))
         << "case " << id;
@@ -60,8 +60,8 @@ TEST(manchester_a22, all_42_wheel_cases_match_the_reference_solution) {
   const auto& all = ferro::test::a22_results();
   ASSERT_EQ(all.size(), 21u);
   int within = 0;
-  for (const fs::WheelsetContact& r : all) {
-    for (const fs::WheelContact& w : r.wheels) {
+  for (const fc::WheelsetContact& r : all) {
+    for (const fc::WheelContact& w : r.wheels) {
       ferro::test::expect_matches_reference(r.input.id, w);
       const auto& ref = ferro::test::a22_reference_row(r.input.id, w.side);
       const double s = w.side == fc::Side::right ? 1.0 : -1.0;
@@ -70,13 +70,13 @@ TEST(manchester_a22, all_42_wheel_cases_match_the_reference_solution) {
           std::abs(w.patches[0].wheel_y - s * ref.ycp_wheel) <= ferro::test::kPositionTol) {
         ++within;
       }
-      const double q0 = expect_vertical_balance(r.input.id, w, in.load_per_wheel);
+      const double q0 = expect_vertical_balance(r.input.id, w, in.spec.load_per_wheel);
       // On the flange the friction part is a large share of the vertical load: a frictionless
       // balance would miss the load by more than 20 %.
       if (r.input.id == 14 && w.side == fc::Side::right) {
-        EXPECT_GT(std::abs(q0 - in.load_per_wheel), 0.2 * in.load_per_wheel);
+        EXPECT_GT(std::abs(q0 - in.spec.load_per_wheel), 0.2 * in.spec.load_per_wheel);
       }
-      expect_coulomb_bound(r.input.id, w, in.friction);
+      expect_coulomb_bound(r.input.id, w, in.spec.friction);
     }
   }
   EXPECT_EQ(within, 42);
@@ -85,8 +85,8 @@ TEST(manchester_a22, all_42_wheel_cases_match_the_reference_solution) {
 TEST(manchester_a22, deepest_point_is_not_the_patch_centre_on_two_lobe_cases) {
   // On the two-lobe cases the penetration-weighted centre and the deepest point lie more than
   // the 0.5 mm tolerance apart (why the centre is needed; the reference is met by the centre).
-  for (const fs::WheelsetContact& r : ferro::test::a22_results({1, 2})) {
-    const fs::PatchContact& p = r.wheels[1].patches.at(0);
+  for (const fc::WheelsetContact& r : ferro::test::a22_results({1, 2})) {
+    const fc::PatchContact& p = r.wheels[1].patches.at(0);
     EXPECT_GT(std::abs(p.rail_y - p.deepest_rail_y), 1.0e-3) << "case " << r.input.id;
   }
 }
@@ -99,11 +99,11 @@ TEST(manchester_a22, single_tread_patch_follows_hertz) {
   // elements; the peak pressure (one element's value) gets twice that.
   constexpr double kHertzTol = 0.01;
   const fs::WheelsetContactInput& in = ferro::test::a22_input();
-  const double estar = fc::combine(in.material, in.material).contact_modulus;
-  const fs::WheelsetContact& r = ferro::test::a22_results({14}).at(0);
-  const fs::WheelContact& w = r.wheels[0];
+  const double estar = fc::combine(in.spec.material, in.spec.material).contact_modulus;
+  const fc::WheelsetContact& r = ferro::test::a22_results({14}).at(0);
+  const fc::WheelContact& w = r.wheels[0];
   ASSERT_EQ(w.patches.size(), 1u);
-  const fs::PatchContact& p = w.patches[0];
+  const fc::PatchContact& p = w.patches[0];
   const fc::WheelsetPose pose{r.input.lateral, w.vertical, r.input.roll, r.input.yaw};
   const auto cands = fc::candidate_points(ferro::test::a22_pair_model(), pose, fc::Side::left);
   const fc::ContactPoint& c = fc::deepest_candidate(cands);

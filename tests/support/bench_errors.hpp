@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/contact_patch.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/normal/contact_patch.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
 
 namespace ferro::test {

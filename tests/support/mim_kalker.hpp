@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/material.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/contact/mim/tangential_solver.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 
 namespace ferro::test {
 
@@ -25,13 +25,13 @@ inline contact::KalkerCoefficients mim_creep_coefficients(double a, double b, in
   const HertzGap hg = hertz_gap_for_ellipse(a, b, fn, m.contact_modulus);
   const Grid grid = grid_for_ellipse(a, b, elements, 0.04);
   InfluenceOperator op(grid, m);
-  const NormalSolution s =
+  const NormalGridSolution s =
       solve_normal_force(op, quadratic_gap(grid, hg.curvature_x, hg.curvature_y), fn);
   EXPECT_TRUE(s.converged);
   const double g = m.shear_modulus, c = a * b, tiny = 1.0e-6, mu = 1.0e6;
   KalkerCoefficients k;
   auto rolling = [&](const RollingInput& in) {
-    const TangentialSolution t = solve_steady_rolling(op, s.pressure, in);
+    const TangentialGridSolution t = solve_steady_rolling(op, s.pressure, in);
     EXPECT_TRUE(t.converged);
     return t;
   };

@@ -2,9 +2,9 @@
 // Test support: the tangential models' reference set (F_n = 82 kN, G = 82 GPa, nu = 0.28,
 // mu = 0.3, both bodies alike) and one Hertzian case of it: an elliptic patch and the tangential
 // problem on it. Shared by the tangential-model accuracy tests.
-#include "ferro/contact/contact_patch.hpp"
 #include "ferro/contact/material.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/normal/contact_patch.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace ferro::test {
 

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "ferro/scenarios/csv_batch.hpp"
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/pair_file.hpp"
-#include "ferro/scenarios/wheelset_contact.hpp"
+#include "ferro/scenarios/wheelset_contact_file.hpp"
 
 namespace ferro::test {
 
@@ -38,20 +38,20 @@ inline const contact::WheelRailPair& a22_pair_model() {
 }
 
 /// Our solution of the given case ids (every case when empty), computed once per set.
-inline const std::vector<scenarios::WheelsetContact>& a22_results(std::vector<int> ids = {}) {
-  static std::map<std::vector<int>, std::vector<scenarios::WheelsetContact>> cache;
+inline const std::vector<contact::WheelsetContact>& a22_results(std::vector<int> ids = {}) {
+  static std::map<std::vector<int>, std::vector<contact::WheelsetContact>> cache;
   std::sort(ids.begin(), ids.end());
   auto it = cache.find(ids);
   if (it != cache.end()) return it->second;
   scenarios::WheelsetContactInput in = a22_input();
   if (!ids.empty()) {
-    std::vector<scenarios::WheelsetCase> kept;
+    std::vector<contact::WheelsetCase> kept;
     for (const auto& c : in.cases) {
       if (std::binary_search(ids.begin(), ids.end(), c.id)) kept.push_back(c);
     }
     in.cases = kept;
   }
-  return cache[ids] = scenarios::solve_wheelset_contacts(a22_pair_model(), in);
+  return cache[ids] = contact::solve_wheelset_contacts(a22_pair_model(), in.spec, in.cases);
 }
 
 /// One row of the reference solution.
@@ -67,7 +67,7 @@ inline const std::vector<A22Reference>& a22_reference() {
     const std::string path =
         std::string(FERRO_SOURCE_DIR) + "/tests/data/manchester_a22_contact_reference.csv";
     std::ifstream f(path);
-    scenarios::CsvBatchReader csv(f, path);
+    io::CsvReader csv(f, path);
     std::vector<A22Reference> out;
     std::vector<std::string> cells;
     const auto& h = csv.header();
@@ -132,13 +132,13 @@ inline constexpr double kSpinRel = 0.02, kSpinAbs = 0.02;
 /// patches, so the force direction follows the creepages above).
 inline constexpr double kCreepForceTol = 0.03;
 
-inline void expect_matches_reference(int id, const scenarios::WheelContact& w) {
+inline void expect_matches_reference(int id, const contact::WheelContact& w) {
   const A22Reference& ref = a22_reference_row(id, w.side);
   const double s = w.side == contact::Side::right ? 1.0 : -1.0;
   const std::string where =
       "case " + std::to_string(id) + (w.side == contact::Side::right ? " right" : " left");
   ASSERT_EQ(w.patches.size(), 1u) << where;  // the reference has one patch on every wheel
-  const scenarios::PatchContact& p = w.patches[0];
+  const contact::PatchContact& p = w.patches[0];
   EXPECT_NEAR(p.rail_y, s * ref.ycp_rail, kPositionTol) << where;
   EXPECT_NEAR(p.wheel_y, s * ref.ycp_wheel, kPositionTol) << where;
   EXPECT_NEAR(w.vertical, ref.z_ws, kHeightTol) << where;
@@ -152,7 +152,7 @@ inline void expect_matches_reference(int id, const scenarios::WheelContact& w) {
   EXPECT_NEAR(p.creepage.longitudinal, -ref.cksi, ctol) << where;
   EXPECT_NEAR(p.creepage.lateral, ref.ceta, ctol) << where;
   EXPECT_NEAR(p.creepage.spin, ref.cphi, kSpinRel * std::abs(ref.cphi) + kSpinAbs) << where;
-  const double ftol = kCreepForceTol * a22_input().friction * ref.fn;
+  const double ftol = kCreepForceTol * a22_input().spec.friction * ref.fn;
   EXPECT_NEAR(p.force_x, -ref.fx, ftol) << where;
   EXPECT_NEAR(p.force_y, ref.fs, ftol) << where;
 }

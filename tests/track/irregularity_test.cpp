@@ -154,7 +154,7 @@ TEST_F(MeasuredCsv, errors_name_file_and_line) {
   {
     const auto p = write("bad_number.csv", "# c\n" + header + "0,0,0,0,0\n1,0,x1,0,0\n");
     const auto e = error_of(p);
-    EXPECT_TRUE(starts(e, p + ":4: field 3 ('x1') is not a finite number")) << e;
+    EXPECT_TRUE(starts(e, p + ":4, column 'vertical_mm': not a number: 'x1'")) << e;
   }
   {
     const auto p = write("not_increasing.csv", header + "0,0,0,0,0\n1,0,0,0,0\n1,0,0,0,0\n");
@@ -163,7 +163,7 @@ TEST_F(MeasuredCsv, errors_name_file_and_line) {
   }
   {
     const auto p = write("fields.csv", header + "0,0,0,0,0\n1,0,0,0\n");
-    EXPECT_TRUE(starts(error_of(p), p + ":3: 4 fields, the header has 5")) << error_of(p);
+    EXPECT_TRUE(starts(error_of(p), p + ":3: 4 cells, the header has 5")) << error_of(p);
   }
   {
     const auto p = write("unknown.csv", "s_m,lateral_inch\n0,0\n");
@@ -179,7 +179,7 @@ TEST_F(MeasuredCsv, errors_name_file_and_line) {
   }
   {
     const auto p = write("empty.csv", "# nothing\n");
-    EXPECT_TRUE(starts(error_of(p), p + ":1: no header line found")) << error_of(p);
+    EXPECT_TRUE(starts(error_of(p), p + ": empty input")) << error_of(p);
   }
   const std::string missing = "/nonexistent/dir/irr.csv";
   EXPECT_TRUE(starts(error_of(missing), missing + ": cannot open")) << error_of(missing);

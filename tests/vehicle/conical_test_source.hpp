@@ -28,8 +28,9 @@ class ConicalTestSource final : public contact::ContactGeometrySource {
  public:
   explicit ConicalTestSource(ConicalTestParams p) : p_(p) {}
   [[nodiscard]] std::string_view name() const override { return "conical_test"; }
-  void contacts(const contact::WheelsetPose& pose,
-                std::vector<contact::WheelRailContact>& out) const override {
+  using contact::ContactGeometrySource::contacts;
+  void contacts(const contact::WheelsetPose& pose, std::vector<contact::WheelRailContact>& out,
+                contact::ContactScratch& /*scratch*/) const override {
     out.clear();
     for (contact::Side side : {contact::Side::left, contact::Side::right}) {
       const double sy = side == contact::Side::left ? -1.0 : 1.0;  // contact-frame y sign

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "conical_test_source.hpp"
-#include "ferro/contact/hertz.hpp"
 #include "ferro/contact/material.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 #include "ferro/track/irregularity.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/stability.hpp"

@@ -13,8 +13,8 @@
 #include <memory>
 #include <string>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/geometry/conical_source.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 #include "manchester_config.hpp"
 

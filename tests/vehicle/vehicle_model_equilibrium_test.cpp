@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <string>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/conical_source.hpp"
 #include "ferro/track/kinematics.hpp"
-#include "manchester_config.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
+#include "manchester_config.hpp"
 
 namespace ferro::vehicle {
 namespace {

@@ -61,11 +61,13 @@ std::shared_ptr<track::Track> straight_with(std::shared_ptr<const track::Irregul
 struct SimRun {
   IntegrationResult result;
   double max_abs_lateral = 0.0;      // largest |y| of any wheelset relative to its rails [m]
+  double late_abs_lateral = 0.0;     // the same over the last 0.5 s [m]
   double min_wheel_normal = 1e300;   // smallest wheel normal force seen [N]
   double max_wheel_normal = 0.0;
 };
 
 SimRun simulate(const VehicleModel& m, std::vector<double> x0, double t_end) {
+  constexpr double kLateWindow = 0.5;  // [s]
   IntegratorSettings s;
   const auto states = m.state_info();
   const bool flexible = std::any_of(states.begin(), states.end(), [](const SignalInfo& i) {
@@ -103,7 +105,9 @@ SimRun simulate(const VehicleModel& m, std::vector<double> x0, double t_end) {
     // rails move too, with the alignment defect and elastically).
     for (std::size_t i = 0; i < info.size(); ++i) {
       if (info[i].name.find(".y_rel_rails") != std::string::npos) {
-        run.max_abs_lateral = std::max(run.max_abs_lateral, std::abs(sig[i]));
+        const double y = std::abs(sig[i]);
+        run.max_abs_lateral = std::max(run.max_abs_lateral, y);
+        if (t >= t_end - kLateWindow) run.late_abs_lateral = std::max(run.late_abs_lateral, y);
       }
     }
     return true;
@@ -150,8 +154,10 @@ TEST_P(VehicleModelHardCases, wheelset_dropped_onto_the_rails_lands_and_settles)
 
 TEST_P(VehicleModelHardCases, severe_twist_lifts_a_wheel_without_stalling) {
   // Cross-level defect of 100 mm over 5 m (twist up to 63 mm/m, far beyond EN 14363's limits)
-  // under the leading bogie at 10 m/s. Conical wheels have no flange: the lateral bound is the
-  // cone's own (the cross-level tilts the wheelsets and gravity pushes them sideways).
+  // under the leading bogie at 10 m/s. Conical wheels have no flange, so nothing but the creep
+  // forces bounds the lateral motion: the cross-level tilts the wheelsets, gravity pushes them
+  // sideways (the leading bogie's wheelsets swing out by about 50 mm), and once the defect has
+  // passed (at 0.8 s) the creep forces must bring them back: the swing decays.
   track::IsolatedDefectSpec d;
   d.channel = track::IrregularityChannel::kCrossLevel;
   d.amplitude = 0.100;
@@ -164,7 +170,13 @@ TEST_P(VehicleModelHardCases, severe_twist_lifts_a_wheel_without_stalling) {
   const SimRun r = simulate(m, static_equilibrium(m), 2.0);
   ASSERT_EQ(r.result.status, IntegrationResult::Status::kCompleted) << r.result.message;
   EXPECT_EQ(r.min_wheel_normal, 0.0);  // a wheel lifted
-  EXPECT_LT(r.max_abs_lateral, 5.0 * kFlangeway);
+  EXPECT_GT(r.max_abs_lateral, kFlangeway);  // the defect threw the bogie sideways
+  // Decaying, not running away: over the last 0.5 s (0.7 s after the defect has passed) the
+  // lateral excursion is below half the peak. Far below the Hopf speed the kinematic
+  // oscillation is damped by the creep forces (measured on the rigid track: 50 mm peak, 21 mm in
+  // the last 0.5 s);
+  // a runaway keeps or grows its amplitude.
+  EXPECT_LT(r.late_abs_lateral, 0.5 * r.max_abs_lateral);
 }
 
 TEST_P(VehicleModelHardCases, low_and_high_friction_through_an_alignment_defect) {

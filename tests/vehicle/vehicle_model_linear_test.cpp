@@ -13,10 +13,10 @@
 #include <cstdio>
 
 #include "conical_test_source.hpp"
-#include "ferro/contact/hertz.hpp"
-#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/contact/material.hpp"
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 #include "ferro/vehicle/stability.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
@@ -35,7 +35,7 @@ constexpr double kG = 9.81;
 struct LinearCreep {
   double penetration = 0.0;  // Hertz approach at the wheel load [m]
   double f = 0.0;            // f11 = f22 = G a b min(C11, C22) [N]
-  std::array<double, 4> reduction{};
+  contact::ReductionFactors reduction;
 };
 
 LinearCreep linear_creep(double wheel_load, double A, double B) {
@@ -167,10 +167,10 @@ TEST(VehicleModelLinear, kij_table_in_the_rhs_scales_the_critical_speed_as_eq_15
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const double k = k_load[i] * g_layer[j];
-      k11.push_back(k * lc.reduction[0]);
-      k22.push_back(k * lc.reduction[1]);
-      k23.push_back(lc.reduction[2]);
-      k33.push_back(lc.reduction[3]);
+      k11.push_back(k * lc.reduction.k11);
+      k22.push_back(k * lc.reduction.k22);
+      k23.push_back(lc.reduction.k23);
+      k33.push_back(lc.reduction.k33);
     }
   }
   const std::string path = ::testing::TempDir() + "vehicle_kij_table.h5";

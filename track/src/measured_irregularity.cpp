@@ -1,4 +1,4 @@
-// Measured irregularities from CSV, cubic Hermite interpolation.
+// Measured irregularities from CSV (the one CSV reader), cubic Hermite interpolation.
 //
 // References: EN 13848-1:2019 (channels). Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980)
 // for piecewise cubic Hermite interpolation (here without their monotonicity limiter).
@@ -9,37 +9,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
 
+#include "ferro/io/csv.hpp"
+#include "ferro/numerics/interpolation.hpp"
+
 namespace ferro::track {
 namespace {
-
-std::string_view trim(std::string_view v) {
-  while (!v.empty() && (v.front() == ' ' || v.front() == '\t' || v.front() == '\r')) {
-    v.remove_prefix(1);
-  }
-  while (!v.empty() && (v.back() == ' ' || v.back() == '\t' || v.back() == '\r')) {
-    v.remove_suffix(1);
-  }
-  return v;
-}
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= line.size(); ++i) {
-    if (i == line.size() || line[i] == ',' || line[i] == ';' || line[i] == '\t') {
-      out.push_back(trim(line.substr(start, i - start)));
-      start = i + 1;
-    }
-  }
-  return out;
-}
 
 // Column roles: 0 = s, 1..4 = lateral, vertical, cross_level, gauge.
 struct Column {
@@ -67,72 +46,46 @@ std::optional<Column> parse_column(std::string_view name) {
 }  // namespace
 
 MeasuredIrregularity::MeasuredIrregularity(const std::string& path) : source_(path) {
-  std::ifstream in(path);
-  if (!in) {
-    throw std::invalid_argument(fmt::format("{}: cannot open the irregularity file", path));
-  }
+  io::CsvFormat format;
+  format.separators = ",;\t";
+  io::CsvReader csv = io::CsvReader::open(path, format, "irregularity file");
   std::vector<Column> columns;
-  std::string line;
-  int line_no = 0;
   for (auto& v : values_) v.clear();
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string_view text = trim(line);
-    if (text.empty() || text.front() == '#') continue;
-    const auto fields = split(text);
-    if (columns.empty()) {
-      // Header.
-      std::array<bool, 5> seen{};
-      for (const auto f : fields) {
-        const auto col = parse_column(f);
-        if (!col) {
-          throw std::invalid_argument(fmt::format(
-              "{}:{}: unknown column '{}' (allowed: s_m or s_km; lateral, vertical, cross_level, "
-              "gauge with _m or _mm)",
-              path, line_no, f));
-        }
-        if (seen[col->role]) {
-          throw std::invalid_argument(
-              fmt::format("{}:{}: column '{}' given twice", path, line_no, f));
-        }
-        seen[col->role] = true;
-        columns.push_back(*col);
-      }
-      if (!seen[0]) {
-        throw std::invalid_argument(
-            fmt::format("{}:{}: the header has no arc-length column s_m (or s_km)", path, line_no));
-      }
-      continue;
+  // Header.
+  std::array<bool, 5> seen{};
+  for (const std::string& f : csv.header()) {
+    const auto col = parse_column(f);
+    if (!col) {
+      throw std::invalid_argument(csv.located(fmt::format(
+          "unknown column '{}' (allowed: s_m or s_km; lateral, vertical, cross_level, gauge with "
+          "_m or _mm)",
+          f)));
     }
-    if (fields.size() != columns.size()) {
-      throw std::invalid_argument(fmt::format("{}:{}: {} fields, the header has {}", path, line_no,
-                                              fields.size(), columns.size()));
+    if (seen[col->role]) {
+      throw std::invalid_argument(csv.located(fmt::format("column '{}' given twice", f)));
     }
+    seen[col->role] = true;
+    columns.push_back(*col);
+  }
+  if (!seen[0]) {
+    throw std::invalid_argument(csv.located("the header has no arc-length column s_m (or s_km)"));
+  }
+  std::vector<std::string> fields;
+  while (csv.next(fields)) {
     std::array<double, 5> row{};
     for (std::size_t i = 0; i < fields.size(); ++i) {
-      double x = 0.0;
-      const auto f = fields[i];
-      const auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), x);
-      if (ec != std::errc() || ptr != f.data() + f.size() || !std::isfinite(x)) {
-        throw std::invalid_argument(
-            fmt::format("{}:{}: field {} ('{}') is not a finite number", path, line_no, i + 1, f));
-      }
-      row[columns[i].role] = x * columns[i].to_si;
+      row[columns[i].role] = csv.number(fields, i) * columns[i].to_si;
     }
     if (!s_.empty() && !(row[0] > s_.back())) {
-      throw std::invalid_argument(
-          fmt::format("{}:{}: s = {} m does not increase (previous row: {} m)", path, line_no,
-                      row[0], s_.back()));
+      throw std::invalid_argument(csv.located(
+          fmt::format("s = {} m does not increase (previous row: {} m)", row[0], s_.back())));
     }
     s_.push_back(row[0]);
     for (int c = 0; c < 4; ++c) values_[c].push_back(row[c + 1]);
   }
-  if (columns.empty()) {
-    throw std::invalid_argument(fmt::format("{}:{}: no header line found", path, line_no));
-  }
   if (s_.size() < 2) {
-    throw std::invalid_argument(fmt::format("{}:{}: at least two data rows are needed (found {})",
-                                            path, line_no, s_.size()));
+    throw std::invalid_argument(
+        csv.located(fmt::format("at least two data rows are needed (found {})", s_.size())));
   }
   finish();
 }
@@ -208,23 +161,18 @@ IrregularitySample MeasuredIrregularity::at(double s) const {
     out.gauge = values_[3].back();
     return out;
   }
-  const auto it = std::upper_bound(s_.begin(), s_.end(), s);
-  const std::size_t j = static_cast<std::size_t>(std::distance(s_.begin(), it)) - 1;
+  const numerics::AxisCell cell = numerics::locate(s_, s);
+  const std::size_t j = cell.index;
   const double h = s_[j + 1] - s_[j];
-  const double tau = (s - s_[j]) / h;
-  const double t2 = tau * tau, t3 = t2 * tau;
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + tau, h01 = -2 * t3 + 3 * t2,
-               h11 = t3 - t2;
-  const double g00 = 6 * t2 - 6 * tau, g10 = 3 * t2 - 4 * tau + 1, g01 = -g00,
-               g11 = 3 * t2 - 2 * tau;
+  const numerics::HermiteBasis b(cell.t);
   constexpr std::array<IrregularityChannel, 4> kOrder = {
       IrregularityChannel::kLateral, IrregularityChannel::kVertical,
       IrregularityChannel::kCrossLevel, IrregularityChannel::kGauge};
   for (int c = 0; c < 4; ++c) {
     const auto& y = values_[c];
     const auto& m = slopes_[c];
-    const double v = h00 * y[j] + h10 * h * m[j] + h01 * y[j + 1] + h11 * h * m[j + 1];
-    const double dv = (g00 * y[j] + g01 * y[j + 1]) / h + g10 * m[j] + g11 * m[j + 1];
+    const double v = b.h00 * y[j] + b.h10 * h * m[j] + b.h01 * y[j + 1] + b.h11 * h * m[j + 1];
+    const double dv = (b.g00 * y[j] + b.g01 * y[j + 1]) / h + b.g10 * m[j] + b.g11 * m[j + 1];
     out.add(kOrder[c], v, dv);
   }
   return out;

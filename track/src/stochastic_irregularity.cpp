@@ -18,6 +18,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "ferro/numerics/interpolation.hpp"
+
 namespace ferro::track {
 namespace {
 
@@ -168,17 +170,12 @@ IrregularitySample StochasticIrregularity::at(double s) const {
   const double tau = t / spacing_ - static_cast<double>(j);
   const auto& p0 = nodes_[j];
   const auto& p1 = nodes_[j + 1 == n ? 0 : j + 1];
-  // Cubic Hermite basis and its derivative in tau.
-  const double t2 = tau * tau, t3 = t2 * tau;
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + tau, h01 = -2 * t3 + 3 * t2,
-               h11 = t3 - t2;
-  const double g00 = 6 * t2 - 6 * tau, g10 = 3 * t2 - 4 * tau + 1, g01 = -g00,
-               g11 = 3 * t2 - 2 * tau;
+  const numerics::HermiteBasis b(tau);
   double v[kChannels], dv[kChannels];
   for (std::size_t c = 0; c < kChannels; ++c) {
     const double y0 = p0[c], y1 = p1[c], m0 = p0[c + kChannels], m1 = p1[c + kChannels];
-    v[c] = h00 * y0 + h10 * spacing_ * m0 + h01 * y1 + h11 * spacing_ * m1;
-    dv[c] = (g00 * y0 + g01 * y1) / spacing_ + g10 * m0 + g11 * m1;
+    v[c] = b.h00 * y0 + b.h10 * spacing_ * m0 + b.h01 * y1 + b.h11 * spacing_ * m1;
+    dv[c] = (b.g00 * y0 + b.g01 * y1) / spacing_ + b.g10 * m0 + b.g11 * m1;
   }
   IrregularitySample out;
   out.lateral = v[0];

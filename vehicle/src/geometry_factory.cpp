@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/contact_source_factory.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::vehicle {

@@ -9,7 +9,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/contact_geometry_source.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "model_data.hpp"
 
 namespace ferro::vehicle::detail {
@@ -197,8 +198,7 @@ void build_contact_mechanics(ModelData& m) {
   }
   c.material = contact::Material{wr.shear_modulus, wr.poisson};
   c.contact_modulus = contact::combine(c.material, c.material).contact_modulus;
-  c.reduction = contact::ReductionFactors{wr.reduction[0], wr.reduction[1], wr.reduction[2],
-                                          wr.reduction[3]};
+  c.reduction = wr.reduction;
   if (!wr.reduction_table.empty()) {
     try {
       c.reduction_table.emplace(contact::KijTable::read_hdf5(wr.reduction_table),

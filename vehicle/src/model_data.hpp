@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/reduction_factors.hpp"
-#include "ferro/contact/semi_hertz.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
+#include "ferro/contact/normal/semi_hertz.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 
 namespace ferro::vehicle {
 namespace {
@@ -49,8 +49,7 @@ void LinearCreepParams::validate(const std::string& where) const {
   require_positive(semi_axis_b, where, "semi_axis_b", "m");
   wheel.validate(where + ".wheel");
   rail.validate(where + ".rail");
-  require_positive(k11, where, "k11", "- (reduction factor)");
-  require_positive(k22, where, "k22", "- (reduction factor)");
+  reduction.validate(where.c_str());
   if (coefficients != "kalker_table" && coefficients != "equal") {
     throw std::invalid_argument(fmt::format(
         "{}.coefficients: unknown '{}'; allowed: kalker_table, equal", where, coefficients));
@@ -64,7 +63,7 @@ CreepCoefficients creep_coefficients(const LinearCreepParams& creep) {
       contact::kalker_coefficients_table(creep.semi_axis_a, creep.semi_axis_b, m.poisson);
   const double gab = m.shear_modulus * creep.semi_axis_a * creep.semi_axis_b;
   const double c22 = creep.coefficients == "equal" ? c.c11 : c.c22;
-  return CreepCoefficients{gab * c.c11 * creep.k11, gab * c22 * creep.k22};
+  return CreepCoefficients{gab * c.c11 * creep.reduction.k11, gab * c22 * creep.reduction.k22};
 }
 
 SuspendedWheelset::SuspendedWheelset(SuspendedWheelsetParams params, CreepCoefficients creep,

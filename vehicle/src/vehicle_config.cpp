@@ -163,11 +163,13 @@ void WheelRailSpec::validate_mechanics(const std::string& where) const {
   require(normal_model == "hertz" || normal_model == "semi_hertz", where, "normal",
           fmt::format("'{}' is not available in the vehicle model; allowed: hertz, semi_hertz",
                       normal_model));
-  static constexpr const char* kReduction[] = {"k11", "k22", "k23", "k33"};
-  for (std::size_t i = 0; i < 4; ++i) {
-    require(std::isfinite(reduction[i]) && reduction[i] > 0.0 && reduction[i] <= 1.0, where,
-            fmt::format("reduction.{}", kReduction[i]),
-            fmt::format("K_ij must lie in (0, 1], got {}", reduction[i]));
+  const std::pair<const char*, double> factors[] = {{"k11", reduction.k11},
+                                                    {"k22", reduction.k22},
+                                                    {"k23", reduction.k23},
+                                                    {"k33", reduction.k33}};
+  for (const auto& [name, k] : factors) {
+    require(std::isfinite(k) && k > 0.0 && k <= 1.0, where, fmt::format("reduction.{}", name),
+            fmt::format("K_ij must lie in (0, 1], got {}", k));
   }
   for (const auto& [axis, value] : reduction_table_point) {
     require(std::isfinite(value), where, fmt::format("reduction_table_point.{}", axis),

@@ -40,9 +40,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ferro/contact/contact_patch.hpp"
-#include "ferro/vehicle/frames.hpp"
 #include "dynamics.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/normal/contact_patch.hpp"
+#include "ferro/contact/tangential/creepage.hpp"
+#include "ferro/vehicle/frames.hpp"
 
 namespace ferro::vehicle::detail {
 namespace {
@@ -78,7 +80,9 @@ std::array<RailPlacement, 2> place_rails(const ModelData& m, const BodyData& bod
   const double spacing = k.frame.rail_spacing > 0.0 ? k.frame.rail_spacing : m.nominal_rail_spacing;
   const double level_ratio = std::clamp(irr.cross_level / spacing, -1.0, 1.0);
   const double pair_roll = -std::asin(level_ratio);
-  const Eigen::Vector3d rails_origin(0.0, irr.lateral, irr.vertical);
+  // The rails' section under the wheelset: at its own longitudinal position (a wheelset free
+  // to move lengthwise carries its contact points with it).
+  const Eigen::Vector3d rails_origin(k.u.x(), irr.lateral, irr.vertical);
   std::array<RailPlacement, 2> rails;
   for (int side = 0; side < 2; ++side) {
     RailPlacement& r = rails[static_cast<std::size_t>(side)];
@@ -204,24 +208,18 @@ void apply_point(const ModelData& m, const contact::WheelRailContact& c,
     damping_factor = std::max(0.0, 1.0 + m.in.config.wheel_rail.hunt_crossley_alpha * penetration_rate);
     if (!(damping_factor > 0.0)) return;  // separating faster than 1/alpha: no force
   }
-  // Wheel material point: axial offset along the axle, radial at the rolling radius.
-  const Eigen::Vector3d d = p - w.centre;
-  const Eigen::Vector3d axial = d.dot(w.axle) * w.axle;
-  Eigen::Vector3d radial = d - axial;
-  const double radial_length = radial.norm();
-  radial = radial_length > 0.0 ? Eigen::Vector3d(radial / radial_length)
-                               : Eigen::Vector3d(-Eigen::Vector3d::UnitZ());
-  const Eigen::Vector3d arm = axial + c.rolling_radius * radial;
-  const Eigen::Vector3d slip = w.centre_velocity + w.omega.cross(arm) - rail_velocity;
-
-  // Contact frame: t1 along the rail, n the rail->wheel normal, t2 = n x t1.
-  Eigen::Vector3d t1 = Eigen::Vector3d::UnitX() - n.x() * n;
-  t1.normalize();
-  const Eigen::Vector3d t2 = n.cross(t1);
+  // Wheel material point at the rolling radius, contact frame (t1 along the rail, n the
+  // rail->wheel normal, t2 = n x t1) and creepages: the contact layer's one definition. The
+  // rail's material point moves with the track; its rotation is not in the spin.
+  const Eigen::Vector3d arm = contact::wheel_point_arm(p - w.centre, w.axle, c.rolling_radius,
+                                                       -Eigen::Vector3d::UnitZ());
+  const contact::ContactFrame frame = contact::ContactFrame::from_normal(n);
+  const Eigen::Vector3d& t1 = frame.t1;
+  const Eigen::Vector3d& t2 = frame.t2;
   contact::TangentialProblem problem;
-  problem.creepage.longitudinal = slip.dot(t1) / w.rolling_speed;
-  problem.creepage.lateral = slip.dot(t2) / w.rolling_speed;
-  problem.creepage.spin = w.omega.dot(n) / w.rolling_speed;
+  problem.creepage =
+      contact::creepage(w.centre_velocity + w.omega.cross(arm), w.omega, rail_velocity,
+                        Eigen::Vector3d::Zero(), frame, w.rolling_speed);
   problem.friction = m.in.config.wheel_rail.friction;
   problem.body1 = m.contact.material;
   problem.body2 = m.contact.material;

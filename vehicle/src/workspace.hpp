@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "ferro/contact/geometry/contact_geometry_source.hpp"
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/semi_hertz.hpp"
+#include "ferro/contact/geometry/point_normal_contact.hpp"
+#include "ferro/contact/normal/semi_hertz.hpp"
 #include "ferro/track/kinematics.hpp"
 #include "ferro/track/track.hpp"
 #include "ferro/track/track_structure.hpp"

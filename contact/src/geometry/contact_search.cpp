@@ -30,22 +30,16 @@ void require(bool ok, const char* field, const std::string& what) {
 struct SideContext {
   const WheelRailPair* pair;
   double sgn;  // +1 right, -1 left
-  double cpsi, spsi, cphi, sphi;
-  double y_ws, z_c;  // axle centre in the track frame
+  WheelsetFrame f;  // rotation and axle centre
   double wheel_offset, rail_offset, rail_top, r0, zw0;
 };
 
 SideContext make_context(const WheelRailPair& pair, const WheelsetPose& pose, Side side) {
   SideContext c{};
   c.pair = &pair;
-  c.sgn = side == Side::right ? 1.0 : -1.0;
-  c.cpsi = std::cos(pose.yaw);
-  c.spsi = std::sin(pose.yaw);
-  c.cphi = std::cos(pose.roll);
-  c.sphi = std::sin(pose.roll);
-  c.y_ws = pose.lateral;
+  c.sgn = side_sign(side);
   c.r0 = pair.params().nominal_radius;
-  c.z_c = -c.r0 + pose.vertical;
+  c.f = WheelsetFrame(pose, c.r0);
   c.wheel_offset = pair.wheel_offset();
   c.rail_offset = pair.rail_offset();
   c.rail_top = pair.rail_reference().top_z;
@@ -70,10 +64,11 @@ Section section_min(const SideContext& c, double yw) {
   if (!wheel.contains(yw)) return s;
   const double r = c.r0 + wheel.z(yw) - c.zw0;
   const double Y = c.sgn * (c.wheel_offset + yw);
-  const double ay = c.cpsi * c.cphi * Y, az = c.sphi * Y;
+  const double ay = c.f.cos_yaw * c.f.cos_roll * Y, az = c.f.sin_roll * Y;
   // P_y = y_ws + ay + r (spsi sin th - cpsi sphi cos th);  P_z = z_c + az + cphi r cos th
   auto py_of = [&](double th) {
-    return c.y_ws + ay + r * (c.spsi * std::sin(th) - c.cpsi * c.sphi * std::cos(th));
+    return c.f.centre_y + ay +
+           r * (c.f.sin_yaw * std::sin(th) - c.f.cos_yaw * c.f.sin_roll * std::cos(th));
   };
   double th = 0.0;
   double yr = c.sgn * py_of(th) - c.rail_offset;
@@ -82,18 +77,18 @@ Section section_min(const SideContext& c, double yw) {
   rail.eval(yr, zr, dzr);
   double f1 = c.sgn * dzr;
   // Linearised first guess, then Newton on d(gap)/d(theta) = 0.
-  th = -f1 * c.spsi / (c.cphi + f1 * c.cpsi * c.sphi);
+  th = -f1 * c.f.sin_yaw / (c.f.cos_roll + f1 * c.f.cos_yaw * c.f.sin_roll);
   for (int it = 0; it < 5; ++it) {
     const double st = std::sin(th), ct = std::cos(th);
-    const double py = c.y_ws + ay + r * (c.spsi * st - c.cpsi * c.sphi * ct);
+    const double py = c.f.centre_y + ay + r * (c.f.sin_yaw * st - c.f.cos_yaw * c.f.sin_roll * ct);
     yr = c.sgn * py - c.rail_offset;
     if (!rail.contains(yr)) return s;
     rail.eval2(yr, zr, dzr, ddzr);
     const double f1n = c.sgn * dzr, f2 = ddzr;
-    const double dpy = r * (c.spsi * ct + c.cpsi * c.sphi * st);
-    const double dpz = -c.cphi * r * st;
-    const double ddpy = r * (-c.spsi * st + c.cpsi * c.sphi * ct);
-    const double ddpz = -c.cphi * r * ct;
+    const double dpy = r * (c.f.sin_yaw * ct + c.f.cos_yaw * c.f.sin_roll * st);
+    const double dpz = -c.f.cos_roll * r * st;
+    const double ddpy = r * (-c.f.sin_yaw * st + c.f.cos_yaw * c.f.sin_roll * ct);
+    const double ddpz = -c.f.cos_roll * r * ct;
     const double g1 = f1n * dpy - dpz;
     const double g2 = f2 * dpy * dpy + f1n * ddpy - ddpz;
     if (!(g2 > 0.0)) break;
@@ -102,9 +97,9 @@ Section section_min(const SideContext& c, double yw) {
     if (std::abs(step) < 1e-10) break;
   }
   const double st = std::sin(th), ct = std::cos(th);
-  s.py = c.y_ws + ay + r * (c.spsi * st - c.cpsi * c.sphi * ct);
-  s.pz = c.z_c + az + c.cphi * r * ct;
-  s.px = c.cpsi * r * st - c.spsi * (c.cphi * Y - c.sphi * r * ct);
+  s.py = c.f.centre_y + ay + r * (c.f.sin_yaw * st - c.f.cos_yaw * c.f.sin_roll * ct);
+  s.pz = c.f.centre_z + az + c.f.cos_roll * r * ct;
+  s.px = c.f.cos_yaw * r * st - c.f.sin_yaw * (c.f.cos_roll * Y - c.f.sin_roll * r * ct);
   s.rail_y = c.sgn * s.py - c.rail_offset;
   if (!rail.contains(s.rail_y)) return s;
   s.gap = (rail.z(s.rail_y) - c.rail_top) - s.pz;
@@ -122,17 +117,17 @@ double section_estimate(const SideContext& c, double yw) {
   const ProfileCurve& rail = c.pair->rail();
   const double r = c.r0 + c.pair->wheel().z(yw) - c.zw0;
   const double Y = c.sgn * (c.wheel_offset + yw);
-  const double py = c.y_ws + c.cpsi * (c.cphi * Y - c.sphi * r);
-  const double pz = c.z_c + c.sphi * Y + c.cphi * r;
+  const double py = c.f.centre_y + c.f.cos_yaw * (c.f.cos_roll * Y - c.f.sin_roll * r);
+  const double pz = c.f.centre_z + c.f.sin_roll * Y + c.f.cos_roll * r;
   const double yr = c.sgn * py - c.rail_offset;
   if (!rail.contains(yr)) return kFar;
   double z, dz, ddz;
   rail.eval2(yr, z, dz, ddz);
   const double f1 = c.sgn * dz;
-  const double dpy = r * c.spsi;
+  const double dpy = r * c.f.sin_yaw;
   const double g0 = (z - c.rail_top) - pz;
   const double g1 = f1 * dpy;
-  const double g2 = ddz * dpy * dpy + f1 * r * c.cpsi * c.sphi + c.cphi * r;
+  const double g2 = ddz * dpy * dpy + f1 * r * c.f.cos_yaw * c.f.sin_roll + c.f.cos_roll * r;
   return g2 > 0.0 ? g0 - 0.5 * g1 * g1 / g2 : g0;
 }
 
@@ -271,14 +266,15 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
   // Only sections whose bottom point lies over the rail can touch it: invert the (nearly
   // linear) map y_w -> track y of the circle bottom, with a margin for the radius term and lead.
   const ProfileCurve& rail = pair.rail();
-  const double a = c.cpsi * c.cphi * c.sgn;  // d(P_y)/d(y_w), ignoring r(y_w) sin(roll)
-  const double b = c.y_ws + c.cpsi * c.cphi * c.sgn * c.wheel_offset - c.cpsi * c.sphi * c.r0;
+  const double a = c.f.cos_yaw * c.f.cos_roll * c.sgn;  // d(P_y)/d(y_w), ignoring r(y_w) sin(roll)
+  const double b = c.f.centre_y + c.f.cos_yaw * c.f.cos_roll * c.sgn * c.wheel_offset -
+                   c.f.cos_yaw * c.f.sin_roll * c.r0;
   // Rail y_r = sgn * P_y - rail_offset  =>  P_y range for each end of the rail.
   const double p1 = c.sgn * (rail.y_min() + c.rail_offset),
                p2 = c.sgn * (rail.y_max() + c.rail_offset);
   double w1 = (p1 - b) / a, w2 = (p2 - b) / a;
   if (w1 > w2) std::swap(w1, w2);
-  const double margin = 2e-3 + 0.05 * std::abs(c.sphi) + 0.5 * std::abs(c.spsi) * c.r0;
+  const double margin = 2e-3 + 0.05 * std::abs(c.f.sin_roll) + 0.5 * std::abs(c.f.sin_yaw) * c.r0;
   const double kmin_d = std::floor((w1 - margin - wheel.y_min()) / h);
   const double kmax_d = std::ceil((w2 + margin - wheel.y_min()) / h);
   const std::size_t kmin = kmin_d < 0.0 ? 0 : std::min(n, static_cast<std::size_t>(kmin_d));

@@ -16,7 +16,7 @@
 #include <stdexcept>
 
 #include "ferro/contact/geometry/wheel_rail_geometry.hpp"
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -170,16 +170,11 @@ WheelsetPose touching_pose(const WheelRailPair& pair, const WheelsetPose& pose) 
 ContactPlaneGap::ContactPlaneGap(const WheelRailPair& pair, const WheelsetPose& pose,
                                  const ContactPoint& pt, double plane_angle)
     : pair_(&pair),
-      sgn_(pt.side == Side::right ? 1.0 : -1.0),
+      sgn_(side_sign(pt.side)),
       px_(pt.x),
       py_(pt.y),
       pz_(pt.z),
-      cp_(std::cos(pose.yaw)),
-      sp_(std::sin(pose.yaw)),
-      cr_(std::cos(pose.roll)),
-      sr_(std::sin(pose.roll)),
-      yc_(pose.lateral),
-      zc_(-pair.params().nominal_radius + pose.vertical) {
+      frame_(pose, pair.params().nominal_radius) {
   double dzr = 0.0;
   if (std::isfinite(plane_angle)) {
     dzr = -std::tan(plane_angle);  // contact_angle = -atan(dzr)
@@ -194,17 +189,8 @@ ContactPlaneGap::ContactPlaneGap(const WheelRailPair& pair, const WheelsetPose& 
   ty_ = sgn_ / nn;
   tz_ = sgn_ * f1 / nn;  // lateral tangent, to the field
   double mx = 0.0;
-  to_local(0.0, ny_, nz_, mx, my_, mz_);  // normal in the wheelset frame
+  frame_.to_wheelset(0.0, ny_, nz_, mx, my_, mz_);  // normal in the wheelset frame
   mx_ = mx;
-}
-
-void ContactPlaneGap::to_local(double x, double y, double z, double& lx, double& ly,
-                               double& lz) const {
-  // Wheelset rotation R = Rz(yaw) Rx(roll); R^T: Rz^T then Rx^T.
-  const double x1 = cp_ * x + sp_ * y, y1 = -sp_ * x + cp_ * y, z1 = z;
-  lx = x1;
-  ly = cr_ * y1 + sr_ * z1;
-  lz = -sr_ * y1 + cr_ * z1;
 }
 
 double ContactPlaneGap::at(double x_rel, double s) const {
@@ -231,7 +217,8 @@ double ContactPlaneGap::at(double x_rel, double s) const {
   double t_w = t_r;
   for (int it = 0; it < 30; ++it) {
     double lx, ly, lz;
-    to_local(x, qy + t_w * ny_ - yc_, qz + t_w * nz_ - zc_, lx, ly, lz);
+    frame_.to_wheelset(x, qy + t_w * ny_ - frame_.centre_y, qz + t_w * nz_ - frame_.centre_z, lx,
+                       ly, lz);
     const double yw = sgn_ * ly - wo;
     if (!wheel.contains(yw)) return std::numeric_limits<double>::quiet_NaN();
     double zw, dzw;

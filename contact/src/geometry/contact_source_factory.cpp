@@ -3,17 +3,21 @@
 // References: none (construction only).
 // Known deviations: none.
 
+#include "ferro/contact/geometry/contact_source_factory.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
 
-#include <unistd.h>
-
-#include "ferro/contact/geometry/contact_sources.hpp"
+#include "ferro/contact/geometry/conical_source.hpp"
+#include "ferro/contact/geometry/imported_contact_table.hpp"
+#include "ferro/contact/geometry/multi_point_contact_table.hpp"
+#include "ferro/contact/geometry/search_source.hpp"
 
 namespace ferro::contact {
 namespace {

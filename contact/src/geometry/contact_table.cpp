@@ -7,14 +7,15 @@
 
 #include "ferro/contact/geometry/contact_table.hpp"
 
-#include "ferro/contact/io/hdf5.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "ferro/io/hdf5.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -42,15 +43,6 @@ enum Col {
   kLongR,
   kNumPoints
 };
-
-double interp(const std::vector<double>& x, const std::vector<double>& v, double xq) {
-  if (xq <= x.front()) return v.front();
-  if (xq >= x.back()) return v.back();
-  const auto it = std::upper_bound(x.begin(), x.end(), xq);
-  const std::size_t i = static_cast<std::size_t>(it - x.begin()) - 1;
-  const double t = (xq - x[i]) / (x[i + 1] - x[i]);
-  return v[i] + t * (v[i + 1] - v[i]);
-}
 
 }  // namespace
 
@@ -158,25 +150,17 @@ ContactTableEntry ContactTable::lookup(double lateral, double yaw) const {
   std::size_t j = 0;
   double w = 0.0;
   if (yaw_.size() > 1) {
-    if (yaw <= yaw_.front()) {
-      j = 0;
-    } else if (yaw >= yaw_.back()) {
-      j = yaw_.size() - 2;
-      w = 1.0;
-    } else {
-      j = static_cast<std::size_t>(std::upper_bound(yaw_.begin(), yaw_.end(), yaw) - yaw_.begin()) -
-          1;
-      w = (yaw - yaw_[j]) / (yaw_[j + 1] - yaw_[j]);
-    }
+    const numerics::AxisCell cell = numerics::locate(yaw_, yaw);
+    j = cell.index;
+    w = cell.t;
   }
   const std::size_t k00 = j * n + i;
   const std::size_t k10 = yaw_.size() > 1 ? k00 + n : k00;
   double v[kColumns];
   for (int c = 0; c < kColumns; ++c) {
     const std::vector<double>& d = data_[static_cast<std::size_t>(c)];
-    const double a = d[k00] + t * (d[k00 + 1] - d[k00]);
-    const double b = d[k10] + t * (d[k10 + 1] - d[k10]);
-    v[c] = a + w * (b - a);
+    v[c] = numerics::lerp(numerics::lerp(d[k00], d[k00 + 1], t),
+                          numerics::lerp(d[k10], d[k10 + 1], t), w);
   }
   ContactTableEntry e;
   e.delta_r = v[kDeltaR];
@@ -201,7 +185,7 @@ double ContactTable::delta_r(double lateral, double yaw) const {
   const auto i = static_cast<std::size_t>(u);
   const double t = u - static_cast<double>(i);
   const std::vector<double>& d = data_[kDeltaR];
-  return d[i] + t * (d[i + 1] - d[i]);
+  return numerics::lerp(d[i], d[i + 1], t);
 }
 
 void ContactTable::save_hdf5(const std::string& path) const {
@@ -225,14 +209,7 @@ void ContactTable::save_hdf5(const std::string& path) const {
 }
 
 ContactTable ContactTable::load_hdf5(const std::string& path) {
-  const io::H5File file = [&] {
-    try {
-      return io::H5File::open_read(path);
-    } catch (const io::Hdf5Error& e) {
-      throw std::invalid_argument(fmt::format("{}: cannot open HDF5 contact table ({})", path,
-                                              e.what()));
-    }
-  }();
+  const io::H5File file = io::H5File::open_input(path, "contact table");
   const auto read = [&](const std::string& name, std::size_t expected) {
     if (!file.exists(name))
       throw std::invalid_argument(fmt::format("{}: dataset '{}' missing", path, name));
@@ -296,7 +273,7 @@ double equivalent_conicity(const std::vector<double>& lateral, const std::vector
   double sum = 0.0;
   for (int k = 0; k < kN; ++k) {
     const double t = 2.0 * std::numbers::pi * (k + 0.5) / kN;
-    sum += interp(lateral, delta_r, amplitude * std::sin(t)) * std::sin(t);
+    sum += numerics::interpolate_linear(lateral, delta_r, amplitude * std::sin(t)) * std::sin(t);
   }
   const double integral = sum * 2.0 * std::numbers::pi / kN;
   return integral / (2.0 * std::numbers::pi * amplitude);

@@ -1,21 +1,22 @@
-// One-point contact table imported from CSV (data/cooperrider_wagon/ layout): strict reader with
-// located errors, natural cubic spline per column, frame conversion, normal-law state.
+// One-point contact table imported from CSV (data/cooperrider_wagon/ layout): strict columns
+// through the one CSV reader (located errors), natural cubic spline per column, frame conversion,
+// normal-law state.
 //
-// References: see ImportedContactTable in contact_sources.hpp.
-// Known deviations: see ImportedContactTable in contact_sources.hpp.
+// References: see ImportedContactTable in imported_contact_table.hpp.
+// Known deviations: see ImportedContactTable in imported_contact_table.hpp.
+
+#include "ferro/contact/geometry/imported_contact_table.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
-#include <charconv>
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "param_spline.hpp"
+#include "ferro/io/csv.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -51,44 +52,20 @@ enum Column {
   kRailY
 };
 
-// Splits one CSV line at commas (no quoting: the layout has none); strips a trailing '\r'.
-std::vector<std::string_view> split(std::string_view line) {
-  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    out.push_back(line.substr(start, comma == std::string_view::npos ? std::string_view::npos
-                                                                      : comma - start));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
 }  // namespace
 
 struct ImportedContactTable::Data {
   std::vector<double> lateral;
   std::array<std::vector<double>, kColumns> values;
-  std::array<detail::CubicSpline1, kColumns> splines;
+  std::array<numerics::NaturalCubicSpline, kColumns> splines;
 };
 
 ImportedContactTable::ImportedContactTable(const std::string& csv_path) : path_(csv_path) {
-  std::ifstream in(csv_path);
-  if (!in) {
-    throw std::invalid_argument(fmt::format("{}: cannot open the contact table", csv_path));
-  }
+  io::CsvReader csv = io::CsvReader::open(csv_path, io::CsvFormat::csv(), "contact table");
   auto data = std::make_shared<Data>();
-  std::string line;
-  int line_no = 0;
-  auto fail = [&](const std::string& what) {
-    throw std::invalid_argument(fmt::format("{}:{}: {}", csv_path, line_no, what));
-  };
+  auto fail = [&](const std::string& what) { throw std::invalid_argument(csv.located(what)); };
   // Header: exactly the expected names, in order.
-  ++line_no;
-  if (!std::getline(in, line)) fail("empty file, expected the header row");
-  const std::vector<std::string_view> head = split(line);
+  const std::vector<std::string>& head = csv.header();
   if (head.size() != kColumns) {
     fail(fmt::format("header has {} columns, expected {}: {}", head.size(), kColumns,
                      fmt::join(kHeader, ",")));
@@ -99,22 +76,10 @@ ImportedContactTable::ImportedContactTable(const std::string& csv_path) : path_(
                        head[static_cast<std::size_t>(c)], kHeader[static_cast<std::size_t>(c)]));
     }
   }
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::vector<std::string_view> f = split(line);
-    if (f.size() != kColumns) {
-      fail(fmt::format("{} fields, expected {}", f.size(), kColumns));
-    }
+  std::vector<std::string> cells;
+  while (csv.next(cells)) {
     for (int c = 0; c < kColumns; ++c) {
-      const std::string_view t = f[static_cast<std::size_t>(c)];
-      double v = 0.0;
-      const char* end = t.data() + t.size();
-      // from_chars does not take a leading '+'; the layout never writes one.
-      const auto res = std::from_chars(t.data(), end, v);
-      if (t.empty() || res.ec != std::errc() || res.ptr != end || !std::isfinite(v)) {
-        fail(fmt::format("column {} ({}): '{}' is not a finite number", c + 1,
-                         kHeader[static_cast<std::size_t>(c)], t));
-      }
+      const double v = csv.number(cells, static_cast<std::size_t>(c));
       if (c == kLat) {
         if (!data->lateral.empty() && !(v > data->lateral.back())) {
           fail(fmt::format("column 1 ({}): {} does not increase (previous {})", kHeader[0], v,
@@ -144,7 +109,7 @@ ImportedContactTable::ImportedContactTable(const std::string& csv_path) : path_(
   }
   for (int c = 1; c < kColumns; ++c) {
     data->splines[static_cast<std::size_t>(c)] =
-        detail::CubicSpline1(data->lateral, data->values[static_cast<std::size_t>(c)]);
+        numerics::NaturalCubicSpline(data->lateral, data->values[static_cast<std::size_t>(c)]);
   }
   // The source tool's limit: the magnitude of the first value, applied to |y|, both wheels.
   limit_ = std::min(-data->lateral.front(), data->lateral.back());
@@ -166,7 +131,7 @@ double ImportedContactTable::column(int column, double y_file) const {
     throw std::invalid_argument(
         fmt::format("ImportedContactTable: column {} outside [1, {})", column, kColumns));
   }
-  const detail::CubicSpline1& s = data_->splines[static_cast<std::size_t>(column)];
+  const numerics::NaturalCubicSpline& s = data_->splines[static_cast<std::size_t>(column)];
   double f, df, ddf;
   s.eval(s.segment(y_file), y_file, f, df, ddf);
   return f;
@@ -220,8 +185,8 @@ WheelRailContact ImportedContactTable::wheel_point(const WheelsetPose& pose, Sid
   return c;
 }
 
-void ImportedContactTable::contacts(const WheelsetPose& pose,
-                                    std::vector<WheelRailContact>& out) const {
+void ImportedContactTable::contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out,
+                                    ContactScratch& /*scratch*/) const {
   out.clear();
   for (const Side side : {Side::left, Side::right}) {
     const WheelRailContact c = wheel_point(pose, side);

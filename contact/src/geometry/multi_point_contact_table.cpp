@@ -1,8 +1,10 @@
 // Multi-point contact table: every candidate point per wheel over lateral shift, roll and yaw;
 // penetration online from the vertical position; per-branch interpolation; HDF5 I/O.
 //
-// References: see wheel_rail_geometry.hpp (search), contact_sources.hpp (branches).
-// Known deviations: see MultiPointContactTable in contact_sources.hpp.
+// References: see wheel_rail_geometry.hpp (search), multi_point_contact_table.hpp (branches).
+// Known deviations: see MultiPointContactTable in multi_point_contact_table.hpp.
+
+#include "ferro/contact/geometry/multi_point_contact_table.hpp"
 
 #include <fmt/format.h>
 
@@ -14,8 +16,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "ferro/contact/geometry/contact_sources.hpp"
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::contact {
 namespace {
@@ -184,12 +185,13 @@ MultiPointContactTable MultiPointContactTable::build(const WheelRailPair& pair,
           // rotation omega (roll: about the yawed axle direction (cos yaw, sin yaw, 0); yaw:
           // about z). A barrier is a maximum over sections of these minima: same formula at
           // its own section.
-          const double sgn = side == Side::right ? 1.0 : -1.0;
-          const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
+          const double sgn = side_sign(side);
+          const WheelsetFrame frame(pose, pair.params().nominal_radius);
+          const double cy = frame.cos_yaw, sy = frame.sin_yaw;
           auto gradient = [&](double x, double y, double z_rail, double gap, double angle) {
             const double slope = -sgn * std::tan(angle);
-            const double dx = x, dy = y - pose.lateral;
-            const double dz = (z_rail - gap) - (-pair.params().nominal_radius);
+            const double dx = x, dy = y - frame.centre_y;
+            const double dz = (z_rail - gap) - frame.centre_z;
             return std::array<double, 3>{slope, slope * (-cy * dz) - (cy * dy - sy * dx),
                                          slope * dx};
           };
@@ -508,57 +510,55 @@ void MultiPointContactTable::candidates(const WheelsetPose& pose,
   });
 }
 
-void MultiPointContactTable::contacts(const WheelsetPose& pose,
-                                      std::vector<WheelRailContact>& out) const {
+void MultiPointContactTable::contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out,
+                                      ContactScratch& scratch) const {
   out.clear();
-  // Interpolated candidates of the cell (at most kMaxPointsPerWheel per wheel and corner).
-  constexpr int kBuf = 2 * kMaxPointsPerWheel * 8;
-  // Per-thread scratch (13 kB of candidates): a local array would be value-initialised on every
-  // call, which cost more than the interpolation itself.
-  thread_local std::array<Candidate, kBuf> buf;
-  thread_local std::array<double, kBuf> share;  // load share of each, with buf
-  int n = 0;
+  // Interpolated candidates of the cell (at most kMaxPointsPerWheel per wheel and corner), in
+  // the caller's scratch: its buffers grow once to this size and are reused from call to call.
+  constexpr std::size_t kBuf = 2 * kMaxPointsPerWheel * 8;
+  std::vector<WheelRailContact>& candidates = scratch.candidates;
+  std::vector<RunMember>& members = scratch.members;
+  if (candidates.capacity() < kBuf) {
+    candidates.reserve(kBuf);
+    members.reserve(kBuf);
+    scratch.gaps.reserve(kBuf);
+  }
+  candidates.clear();
+  members.clear();
   interpolate(pose, [&](const Candidate& s, double load_share) {
-    if (n < kBuf) {
-      share[static_cast<std::size_t>(n)] = load_share;
-      buf[static_cast<std::size_t>(n++)] = s;
+    if (candidates.size() < kBuf) {
+      candidates.push_back(WheelRailContact::geometry_of(s));
+      members.push_back({s.side, s.gap, s.barrier, load_share});
     }
   });
   // Left first, each wheel in increasing wheel_y (insertion sort: a handful of entries).
+  const int n = static_cast<int>(candidates.size());
   for (int i = 1; i < n; ++i) {
-    const Candidate key = buf[static_cast<std::size_t>(i)];
-    const double key_share = share[static_cast<std::size_t>(i)];
+    const WheelRailContact key = candidates[static_cast<std::size_t>(i)];
+    const RunMember key_member = members[static_cast<std::size_t>(i)];
     int j = i - 1;
-    auto before = [](const Candidate& a, const Candidate& b) {
+    auto before = [](const WheelRailContact& a, const WheelRailContact& b) {
       if (a.side != b.side) return a.side == Side::left;
       return a.wheel_y < b.wheel_y;
     };
-    while (j >= 0 && before(key, buf[static_cast<std::size_t>(j)])) {
-      buf[static_cast<std::size_t>(j + 1)] = buf[static_cast<std::size_t>(j)];
-      share[static_cast<std::size_t>(j + 1)] = share[static_cast<std::size_t>(j)];
+    while (j >= 0 && before(key, candidates[static_cast<std::size_t>(j)])) {
+      candidates[static_cast<std::size_t>(j + 1)] = candidates[static_cast<std::size_t>(j)];
+      members[static_cast<std::size_t>(j + 1)] = members[static_cast<std::size_t>(j)];
       --j;
     }
-    buf[static_cast<std::size_t>(j + 1)] = key;
-    share[static_cast<std::size_t>(j + 1)] = key_share;
+    candidates[static_cast<std::size_t>(j + 1)] = key;
+    members[static_cast<std::size_t>(j + 1)] = key_member;
   }
   // Penetrating candidates, joined runs sharing their depth as contacts_from_candidates().
-  const double drop = pose.vertical;
-  thread_local std::array<RunMember, kBuf> members;
-  thread_local std::array<double, kBuf> gap;
-  for (int i = 0; i < n; ++i) {
-    const Candidate& s = buf[static_cast<std::size_t>(i)];
-    members[static_cast<std::size_t>(i)] = {s.side, s.gap, s.barrier,
-                                            share[static_cast<std::size_t>(i)]};
-  }
-  share_joined_runs(members.data(), n, drop, gap.data());
-  for (int i = 0; i < n; ++i) {
-    const double g = gap[static_cast<std::size_t>(i)];
+  std::vector<double>& gaps = scratch.gaps;
+  gaps.resize(candidates.size());
+  share_joined_runs(members.data(), n, pose.vertical, gaps.data());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const double g = gaps[i];
     if (!(g < 0.0)) continue;
-    const Candidate& s = buf[static_cast<std::size_t>(i)];
-    out.push_back(WheelRailContact::geometry_of(s));
+    out.push_back(candidates[i]);
     out.back().vertical_gap = g;
-    out.back().penetration =
-        shared_penetration(g, s.contact_angle, share[static_cast<std::size_t>(i)]);
+    out.back().penetration = shared_penetration(g, candidates[i].contact_angle, members[i].share);
   }
 }
 
@@ -605,14 +605,7 @@ bool MultiPointContactTable::is_table_of_another_version(const std::string& path
 }
 
 MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path) {
-  const io::H5File file = [&] {
-    try {
-      return io::H5File::open_read(path);
-    } catch (const io::Hdf5Error& e) {
-      throw std::invalid_argument(
-          fmt::format("{}: cannot open as an HDF5 file ({})", path, e.what()));
-    }
-  }();
+  const io::H5File file = io::H5File::open_input(path, "multi-point contact table");
   const auto read_attribute = [&](const std::string& name) {
     if (!file.has_attribute("/", name)) {
       throw std::invalid_argument(fmt::format("{}: missing attribute '{}'", path, name));

@@ -1,43 +1,28 @@
-// Reading and checking wheel/rail profiles.
+// Reading (through the one CSV reader) and checking wheel/rail profiles.
 //
 // References: SIMPACK Rail-Wheel Profile format (.prw/.prr): keys inside spline.begin/end,
 // points between point.begin/end, processing order 1..7 as numbered in the file header comments.
 // Known deviations: approx.smooth, point.dist.min and point weights are ignored.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
 
 #include "ferro/contact/geometry/profile.hpp"
+#include "ferro/io/csv.hpp"
 
 namespace ferro::contact {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
-std::string strip_comment(const std::string& s) {
-  const auto p = s.find('!');
-  return p == std::string::npos ? s : s.substr(0, p);
-}
-
 double parse_number(const std::string& text, const std::string& path, int line,
                     const std::string& what) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (trim(text.substr(used)).empty() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
+  const std::optional<double> v = io::parse_number(text);
+  if (v && std::isfinite(*v)) return *v;
   throw std::invalid_argument(
       fmt::format("{}:{}: cannot read {} from '{}' (expected a number)", path, line, what, text));
 }
@@ -123,18 +108,17 @@ void check_profile_scale(const Profile& p, const std::string& unit_hint) {
 }  // namespace
 
 Profile read_simpack_profile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(fmt::format("{}: cannot open profile file", path));
+  io::CsvFormat format = io::CsvFormat::blanks();
+  format.comment_marks = "!";
+  format.trailing_comments = true;
+  io::CsvReader file = io::CsvReader::open(path, format, "profile file");
   std::map<std::string, std::pair<std::string, int>> keys;
   std::vector<double> ys, zs;
   std::vector<int> lines;
   bool in_points = false, saw_points = false, saw_end = false, in_header = false;
-  std::string raw;
-  int line_no = 0;
-  while (std::getline(in, raw)) {
-    ++line_no;
-    const std::string s = trim(strip_comment(raw));
-    if (s.empty()) continue;
+  std::string s;
+  while (file.next_line(s)) {
+    const int line_no = file.line();
     if (s == "header.begin" || s == "header.end") {
       in_header = s == "header.begin";
       continue;
@@ -150,25 +134,26 @@ Profile read_simpack_profile(const std::string& path) {
       continue;
     }
     if (in_points) {
-      std::istringstream cols(s);
-      std::string a, b;
-      if (!(cols >> a >> b)) {
+      const std::vector<std::string> cols = io::split_cells(s, format);
+      if (cols.size() < 2) {
         throw std::invalid_argument(fmt::format(
             "{}:{}: expected 'y z [weight]' in the point block, got '{}'", path, line_no, s));
       }
-      ys.push_back(parse_number(a, path, line_no, "y"));
-      zs.push_back(parse_number(b, path, line_no, "z"));
+      ys.push_back(parse_number(cols[0], path, line_no, "y"));
+      zs.push_back(parse_number(cols[1], path, line_no, "z"));
       lines.push_back(line_no);
       continue;
     }
     const auto eq = s.find('=');
     if (eq != std::string::npos) {
-      std::string val = trim(s.substr(eq + 1));
+      std::string val(io::trim(std::string_view(s).substr(eq + 1)));
       if (val.size() >= 2 && val.front() == '\'') val = val.substr(1, val.size() - 2);
       // Header keys are prefixed: the spline block has its own "type" (data file type).
-      keys[(in_header ? "header." : "") + trim(s.substr(0, eq))] = {val, line_no};
+      keys[(in_header ? "header." : "") +
+           std::string(io::trim(std::string_view(s).substr(0, eq)))] = {val, line_no};
     }
   }
+  const int line_no = file.line();
   if (!saw_points || !saw_end) {
     throw std::invalid_argument(fmt::format(
         "{}:{}: not a SIMPACK profile: missing point.begin / point.end block", path, line_no));
@@ -225,27 +210,24 @@ Profile read_simpack_profile(const std::string& path) {
 }
 
 Profile read_two_column_profile(const std::string& path, ProfileKind kind) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument(fmt::format("{}: cannot open profile file", path));
+  io::CsvFormat format;
+  format.separators = ",;\t";
+  format.blank_separated = true;
+  format.comment_marks = "#!%";
+  format.header = false;
+  io::CsvReader file = io::CsvReader::open(path, format, "profile file");
   Profile p;
   p.kind = kind;
   p.source = path;
-  std::string raw;
-  int line_no = 0;
-  while (std::getline(in, raw)) {
-    ++line_no;
-    std::string s = trim(raw);
-    if (s.empty() || s[0] == '#' || s[0] == '!' || s[0] == '%') continue;
-    std::replace_if(
-        s.begin(), s.end(), [](char ch) { return ch == ',' || ch == ';' || ch == '\t'; }, ' ');
-    std::istringstream cols(s);
-    std::string a, b;
-    if (!(cols >> a >> b)) {
+  std::vector<std::string> cols;
+  while (file.next(cols)) {
+    const int line_no = file.line();
+    if (cols.size() < 2) {
       throw std::invalid_argument(fmt::format("{}:{}: expected two columns 'y z' in mm, got '{}'",
-                                              path, line_no, trim(raw)));
+                                              path, line_no, fmt::join(cols, " ")));
     }
-    p.y.push_back(parse_number(a, path, line_no, "y [mm]") * 1e-3);
-    p.z.push_back(parse_number(b, path, line_no, "z [mm]") * 1e-3);
+    p.y.push_back(parse_number(cols[0], path, line_no, "y [mm]") * 1e-3);
+    p.z.push_back(parse_number(cols[1], path, line_no, "z [mm]") * 1e-3);
     p.line.push_back(line_no);
   }
   check_profile(p);

@@ -5,13 +5,13 @@
 
 #include "ferro/contact/mim/hertz_gap.hpp"
 
-#include "ferro/contact/elliptic.hpp"
-
 #include <fmt/format.h>
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "ferro/contact/normal/elliptic.hpp"
 
 namespace ferro::contact::mim {
 

@@ -97,11 +97,13 @@ void HertzRollingInput::validate(const std::string& where) const {
 namespace {
 
 // Steady rolling on a solved normal problem, assembled into a MimResult.
-MimResult rolling_on(ComplianceOperator& op, const NormalSolution& n, const RollingInput& rolling,
-                     const MimOptions& options) {
+MimResult rolling_on(ComplianceOperator& op, const NormalGridSolution& n,
+                     const RollingInput& rolling, const MimOptions& options,
+                     TangentialWorkspace& workspace) {
   TangentialSolverOptions tangential = options.tangential;
   tangential.nested = tangential.nested && op.has_coarse();  // dense operators have no coarse grid
-  const TangentialSolution t = solve_steady_rolling(op, n.pressure, rolling, tangential);
+  const TangentialGridSolution t =
+      solve_steady_rolling(op, n.pressure, rolling, tangential, workspace);
   MimResult r;
   r.grid = op.grid();
   r.normal_force = n.normal_force;
@@ -130,13 +132,20 @@ MimResult rolling_on(ComplianceOperator& op, const NormalSolution& n, const Roll
 }  // namespace
 
 MimResult solve_rolling_contact(ComplianceOperator& op, const Field& gap, const NormalLoad& load,
-                                const RollingInput& rolling, const MimOptions& options) {
+                                const RollingInput& rolling, const MimOptions& options,
+                                TangentialWorkspace& workspace) {
   load.validate();
   rolling.validate();
-  const NormalSolution n = std::isnan(load.normal_force)
-                               ? solve_normal_approach(op, gap, load.approach, options.normal)
-                               : solve_normal_force(op, gap, load.normal_force, options.normal);
-  return rolling_on(op, n, rolling, options);
+  const NormalGridSolution n = std::isnan(load.normal_force)
+                                   ? solve_normal_approach(op, gap, load.approach, options.normal)
+                                   : solve_normal_force(op, gap, load.normal_force, options.normal);
+  return rolling_on(op, n, rolling, options, workspace);
+}
+
+MimResult solve_rolling_contact(ComplianceOperator& op, const Field& gap, const NormalLoad& load,
+                                const RollingInput& rolling, const MimOptions& options) {
+  TangentialWorkspace workspace;
+  return solve_rolling_contact(op, gap, load, rolling, options, workspace);
 }
 
 struct HertzMimSolver::Entry {
@@ -148,7 +157,7 @@ struct HertzMimSolver::Entry {
   // Last normal solution on this grid and the unit-grid inputs it was solved for: the normal
   // problem does not depend on the creepages (K = 0), so a repeated patch reuses it exactly.
   double curvature_x = kNaN, curvature_y = kNaN, load = kNaN;
-  NormalSolution normal;
+  NormalGridSolution normal;
 };
 
 HertzMimSolver::HertzMimSolver(MimOptions options, std::size_t max_cached_grids)
@@ -222,7 +231,7 @@ MimResult HertzMimSolver::solve_grid(const HertzRollingInput& input) {
   RollingInput rolling = input.rolling;
   rolling.validate();
   rolling.spin *= h;
-  MimResult r = rolling_on(op, entry->normal, rolling, options_);
+  MimResult r = rolling_on(op, entry->normal, rolling, options_, workspace_);
 
   // Back to SI.
   const double g = m.shear_modulus;

@@ -1,4 +1,4 @@
-// HDF5 output of a MIM solution (through the io layer, ferro/contact/io/hdf5.hpp).
+// HDF5 output of a MIM solution (through the io layer, ferro/io/hdf5.hpp).
 //
 // References: none (file format). Known deviations: none.
 
@@ -6,12 +6,12 @@
 
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
-#include "ferro/contact/io/hdf5.hpp"
 #include "ferro/contact/mim/mim.hpp"
+#include "ferro/io/hdf5.hpp"
 
 namespace ferro::contact::mim {
 

@@ -27,8 +27,8 @@ void NormalSolverOptions::validate(const std::string& where) const {
 
 namespace {
 
-NormalSolution solve(ComplianceOperator& op, const Field& gap, double target, bool force_control,
-                     const NormalSolverOptions& options) {
+NormalGridSolution solve(ComplianceOperator& op, const Field& gap, double target,
+                         bool force_control, const NormalSolverOptions& options) {
   options.validate();
   const Grid& grid = op.grid();
   const std::size_t n = grid.size();
@@ -41,7 +41,7 @@ NormalSolution solve(ComplianceOperator& op, const Field& gap, double target, bo
   }
   const double area = grid.element_area();
 
-  NormalSolution out;
+  NormalGridSolution out;
   Field& p = out.pressure;
   p.assign(n, 0.0);
   Field u(n), g(n), t(n, 0.0), r(n);
@@ -183,16 +183,16 @@ NormalSolution solve(ComplianceOperator& op, const Field& gap, double target, bo
 
 }  // namespace
 
-NormalSolution solve_normal_approach(ComplianceOperator& op, const Field& gap, double approach,
-                                     const NormalSolverOptions& options) {
+NormalGridSolution solve_normal_approach(ComplianceOperator& op, const Field& gap, double approach,
+                                         const NormalSolverOptions& options) {
   if (!std::isfinite(approach)) {
     throw std::invalid_argument(fmt::format("approach: must be finite (m), got {}", approach));
   }
   return solve(op, gap, approach, false, options);
 }
 
-NormalSolution solve_normal_force(ComplianceOperator& op, const Field& gap, double normal_force,
-                                  const NormalSolverOptions& options) {
+NormalGridSolution solve_normal_force(ComplianceOperator& op, const Field& gap, double normal_force,
+                                      const NormalSolverOptions& options) {
   if (!(normal_force > 0.0) || !std::isfinite(normal_force)) {
     throw std::invalid_argument(
         fmt::format("normal_force: must be finite and > 0 N, got {}", normal_force));

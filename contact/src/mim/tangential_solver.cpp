@@ -108,9 +108,9 @@ using RigidSlip = std::function<void(const Grid&, Field&, Field&)>;
 // Minimum elements per side for a grid to be solved first on its coarsened grid.
 constexpr int kNestedMinElements = 24;
 
-TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double friction,
-                         const RigidSlip& rigid_slip, bool rolling,
-                         const TangentialSolverOptions& options) {
+TangentialGridSolution solve(ComplianceOperator& op, const Field& pressure, double friction,
+                             const RigidSlip& rigid_slip, bool rolling,
+                             const TangentialSolverOptions& options, GmresWorkspace& workspace) {
   options.validate();
   const Grid& grid = op.grid();
   const std::size_t n = grid.size();
@@ -123,7 +123,7 @@ TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double f
   if (friction == 0.0) {
     // Frictionless contact: no traction, so no elastic tangential displacement; every loaded
     // element slips with the rigid slip.
-    TangentialSolution out;
+    TangentialGridSolution out;
     out.traction_x.assign(n, 0.0);
     out.traction_y.assign(n, 0.0);
     out.slip_x.assign(n, 0.0);
@@ -144,7 +144,7 @@ TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double f
 
   // Nested iteration: solve on the grid coarsened by two (pressure averaged over the four
   // children, same force) and start from its tractions and stick/slip sets.
-  TangentialSolution start;
+  TangentialGridSolution start;
   const bool nested = options.nested && std::min(grid.nx, grid.ny) >= kNestedMinElements;
   if (nested) {
     ComplianceOperator& cop = op.coarse();
@@ -155,11 +155,11 @@ TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double f
       for (int ix = 0; ix < grid.nx; ++ix)
         cp[cg.index(ix / 2, iy / fy_per)] += pressure[grid.index(ix, iy)] / (2.0 * fy_per);
     TangentialSolverOptions copt = options;
-    start = solve(cop, cp, friction, rigid_slip, rolling, copt);
+    start = solve(cop, cp, friction, rigid_slip, rolling, copt, workspace);
     pb.matvecs += start.matvecs;
   }
 
-  TangentialSolution out;
+  TangentialGridSolution out;
   out.traction_x.assign(n, 0.0);
   out.traction_y.assign(n, 0.0);
   out.slip_x.assign(n, 0.0);
@@ -226,10 +226,8 @@ TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double f
   }
   std::vector<std::size_t> active;
   std::vector<std::size_t> offset(n, 0);
-  // Krylov basis kept per thread across solves: about restart x 2n doubles, which the allocator
-  // would otherwise return to the system after every solve and fault in again (a quarter of the
-  // time of a 25 x 25 solve). Nested solves finish before the parent's first GMRES call.
-  thread_local GmresWorkspace workspace;
+  // The Krylov basis is the caller's (TangentialWorkspace): nested solves finish before the
+  // parent's first GMRES call, so they share it.
   double inner_factor = options.linear_factor;
   int last_changes = static_cast<int>(n);  // first step: sets unknown, inexact
   // Set changes need a violation above a tenth of the tolerance: elements exactly on the
@@ -459,21 +457,23 @@ TangentialSolution solve(ComplianceOperator& op, const Field& pressure, double f
 
 }  // namespace
 
-TangentialSolution solve_sliding(ComplianceOperator& op, const Field& pressure,
-                                 const SlidingInput& input,
-                                 const TangentialSolverOptions& options) {
+TangentialGridSolution solve_sliding(ComplianceOperator& op, const Field& pressure,
+                                     const SlidingInput& input,
+                                     const TangentialSolverOptions& options,
+                                     TangentialWorkspace& workspace) {
   input.validate();
   // s = A tau - delta (eq. 103): q = -delta.
   const RigidSlip q = [&](const Grid& g, Field& qx, Field& qy) {
     qx.assign(g.size(), -input.shift_x);
     qy.assign(g.size(), -input.shift_y);
   };
-  return solve(op, pressure, input.friction, q, false, options);
+  return solve(op, pressure, input.friction, q, false, options, workspace.gmres);
 }
 
-TangentialSolution solve_steady_rolling(ComplianceOperator& op, const Field& pressure,
-                                        const RollingInput& input,
-                                        const TangentialSolverOptions& options) {
+TangentialGridSolution solve_steady_rolling(ComplianceOperator& op, const Field& pressure,
+                                            const RollingInput& input,
+                                            const TangentialSolverOptions& options,
+                                            TangentialWorkspace& workspace) {
   input.validate();
   // w/V = c - (B - A) tau / h with c = (xi_x - y phi, xi_y + x phi) (eqs. 111, 119-120); the
   // difference is taken at second order (Problem::apply).
@@ -481,7 +481,14 @@ TangentialSolution solve_steady_rolling(ComplianceOperator& op, const Field& pre
     qx = sample(g, [&](double, double y) { return input.creepage_x - y * input.spin; });
     qy = sample(g, [&](double x, double) { return input.creepage_y + x * input.spin; });
   };
-  return solve(op, pressure, input.friction, q, true, options);
+  return solve(op, pressure, input.friction, q, true, options, workspace.gmres);
+}
+
+TangentialGridSolution solve_steady_rolling(ComplianceOperator& op, const Field& pressure,
+                                            const RollingInput& input,
+                                            const TangentialSolverOptions& options) {
+  TangentialWorkspace workspace;
+  return solve_steady_rolling(op, pressure, input, options, workspace);
 }
 
 }  // namespace ferro::contact::mim

@@ -10,6 +10,31 @@
 
 namespace ferro::scenarios::analysis {
 
+namespace {
+
+/// Half the peak-to-peak of `signal` over the trailing `window` of `time` at each sample
+/// (monotone deques for the running minimum and maximum).
+std::vector<double> trailing_envelope(const std::vector<double>& time,
+                                      const std::vector<double>& signal, double window) {
+  const std::size_t n = time.size();
+  std::vector<double> envelope(n, 0.0);
+  std::deque<std::size_t> qmax, qmin;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    while (!qmax.empty() && signal[qmax.back()] <= signal[i]) qmax.pop_back();
+    while (!qmin.empty() && signal[qmin.back()] >= signal[i]) qmin.pop_back();
+    qmax.push_back(i);
+    qmin.push_back(i);
+    while (time[i] - time[start] > window) ++start;
+    while (qmax.front() < start) qmax.pop_front();
+    while (qmin.front() < start) qmin.pop_front();
+    envelope[i] = 0.5 * (signal[qmax.front()] - signal[qmin.front()]);
+  }
+  return envelope;
+}
+
+}  // namespace
+
 RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const double> x0,
                      const RampOptions& o) {
   if (!(o.speed_initial > o.speed_final && o.speed_final >= 0.0 && o.deceleration > 0.0 &&
@@ -20,7 +45,11 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
         "output_interval > 0, envelope_window > 0, max_amplitude > threshold > 0");
   RampResult r;
   std::vector<double> x(x0.begin(), x0.end());
-  if (o.observed >= x.size()) throw std::invalid_argument("ramp: observed state out of range");
+  if (o.observed.empty()) throw std::invalid_argument("ramp: no observed state");
+  for (auto i : o.observed)
+    if (i >= x.size()) throw std::invalid_argument("ramp: observed state out of range");
+  const std::size_t m = o.observed.size();
+  r.signals.assign(m, {});
   auto integrator = vehicle::make_integrator(o.solver);
   const double t_end = (o.speed_initial - o.speed_final) / o.deceleration;
   for (double t0 = 0.0; t0 < t_end - 1e-12; t0 += o.hold) {
@@ -29,23 +58,28 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
     const auto system = factory(v);
     const auto grid = vehicle::output_grid(t0, t1, o.output_interval);
     const bool first = r.time.empty();
-    bool diverged = false;
+    std::size_t diverged = m;  // the observed state that left the bounds, m: none
     const auto observer = [&](double t, std::span<const double> xs) {
       if (!first && t == t0) return true;  // the piece's start is the previous piece's end
       r.time.push_back(t);
       r.speed.push_back(o.speed_initial - o.deceleration * t);
-      r.signal.push_back(xs[o.observed]);
-      diverged = !(std::abs(xs[o.observed]) <= o.max_amplitude);
-      return !diverged;
+      for (std::size_t j = 0; j < m; ++j) {
+        const double value = xs[o.observed[j]];
+        r.signals[j].push_back(value);
+        if (!(std::abs(value) <= o.max_amplitude) && diverged == m) diverged = j;
+      }
+      return diverged == m;
     };
     const auto res = integrator->integrate(*system, x, grid, observer);
     x = res.state;
-    if (diverged) {
+    if (diverged < m) {
       r.completed = false;
+      r.holder = diverged;
       r.message = fmt::format(
-          "diverged: |x| above {} at t = {:.6g} s (V = {:.4g} m/s); start slower or use a model "
-          "with flange contact",
-          o.max_amplitude, res.t_reached, o.speed_initial - o.deceleration * res.t_reached);
+          "diverged: observed state {} above {} at t = {:.6g} s (V = {:.4g} m/s); start slower "
+          "or use a model with flange contact",
+          diverged + 1, o.max_amplitude, res.t_reached,
+          o.speed_initial - o.deceleration * res.t_reached);
       break;
     }
     if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
@@ -56,20 +90,12 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
       break;
     }
   }
-  // Envelope: max |x - mean| over the trailing window (monotone deques for min and max).
+  // Envelopes: each observed state's, and the system's (their largest).
   const std::size_t n = r.time.size();
   r.envelope.assign(n, 0.0);
-  std::deque<std::size_t> qmax, qmin;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    while (!qmax.empty() && r.signal[qmax.back()] <= r.signal[i]) qmax.pop_back();
-    while (!qmin.empty() && r.signal[qmin.back()] >= r.signal[i]) qmin.pop_back();
-    qmax.push_back(i);
-    qmin.push_back(i);
-    while (r.time[i] - r.time[start] > o.envelope_window) ++start;
-    while (qmax.front() < start) qmax.pop_front();
-    while (qmin.front() < start) qmin.pop_front();
-    r.envelope[i] = 0.5 * (r.signal[qmax.front()] - r.signal[qmin.front()]);
+  for (std::size_t j = 0; j < m; ++j) {
+    r.envelopes.push_back(trailing_envelope(r.time, r.signals[j], o.envelope_window));
+    for (std::size_t i = 0; i < n; ++i) r.envelope[i] = std::max(r.envelope[i], r.envelopes[j][i]);
   }
   if (n > 0) {
     const auto peak = std::max_element(r.envelope.begin(), r.envelope.end()) - r.envelope.begin();
@@ -82,11 +108,18 @@ RampResult ramp_down(const vehicle::SystemAtSpeed& factory, std::span<const doub
             ? std::max(1.0, r.envelope[static_cast<std::size_t>(peak)] / r.envelope[first_full])
             : NAN;
   }
-  // The decay point: the last time the envelope was above the threshold. Only meaningful once a
-  // full window has passed.
+  // The decay point: the last time the system's envelope was above the threshold. Only
+  // meaningful once a full window has passed.
   std::optional<std::size_t> last_above;
   for (std::size_t i = 0; i < n; ++i)
     if (r.envelope[i] >= o.threshold) last_above = i;
+  const auto largest_at = [&](std::size_t i) {
+    std::size_t h = 0;
+    for (std::size_t j = 1; j < m; ++j)
+      if (r.envelopes[j][i] > r.envelopes[h][i]) h = j;
+    return h;
+  };
+  if (r.completed && n > 0) r.holder = largest_at(last_above.value_or(n - 1));
   if (last_above && *last_above + 1 < n && r.completed) {
     r.decay_time = r.time[*last_above + 1];
     r.decay_speed = r.speed[*last_above + 1];
@@ -133,9 +166,15 @@ BranchResult follow_periodic_branch(const vehicle::SystemAtSpeed& factory,
     x_upper = next_start(r, x_upper);
     upper = v;
   }
+  const auto holder_at = [&out](double v) {
+    for (const auto& p : out.points)
+      if (p.speed == v && sustained(p.run.outcome)) return p.run.holder;
+    return std::size_t{0};
+  };
   if (std::isnan(lower)) {
     out.lowest_sustained = upper;
     out.bracket_high = upper;
+    out.holder = holder_at(upper);
     return out;
   }
   while (upper - lower > o.bracket) {
@@ -152,12 +191,14 @@ BranchResult follow_periodic_branch(const vehicle::SystemAtSpeed& factory,
   out.lowest_sustained = upper;
   out.bracket_low = lower;
   out.bracket_high = upper;
-  // Onset: A^2 against V through the lowest cycles, by least squares.
+  out.holder = holder_at(upper);
+  // Onset: A^2 against V through the lowest cycles, by least squares (each cycle's amplitude is
+  // that of the state holding it, its largest).
   std::vector<std::pair<double, double>> cycles;  // (V, A^2)
   for (const auto& p : out.points) {
     if (p.run.outcome != Oscillation::kSteady && p.run.outcome != Oscillation::kApproaching)
       continue;
-    const double a = p.run.amplitude[o.settle.reference];
+    const double a = p.run.amplitude[p.run.holder];
     cycles.emplace_back(p.speed, a * a);
   }
   std::sort(cycles.begin(), cycles.end());

@@ -240,10 +240,33 @@ SteadyAmplitude steady_amplitude(std::span<const double> t, std::span<const doub
   return out;
 }
 
+namespace {
+
+/// An observed state whose amplitude is below this share of the largest one's counts as settled
+/// whatever it still does (a decaying transient beside a cycle): 1 % is below the resolution of
+/// an amplitude table in mm to two digits at the cycles of interest.
+constexpr double kNegligibleShare = 0.01;
+
+/// Order of the outcomes from least to most sustained: a system takes the most sustained of its
+/// observed states.
+int sustain_rank(Oscillation o) {
+  switch (o) {
+    case Oscillation::kDecayed: return 0;
+    case Oscillation::kDecaying: return 1;
+    case Oscillation::kSteady: return 2;
+    case Oscillation::kApproaching: return 3;
+    case Oscillation::kGrowing: return 4;
+    case Oscillation::kDiverged: return 5;
+  }
+  return 0;
+}
+
+}  // namespace
+
 SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const double> x0,
                                const SettleOptions& options) {
-  if (options.observed.empty() || options.reference >= options.observed.size())
-    throw std::invalid_argument("settle: no observed state, or reference out of range");
+  if (options.observed.empty())
+    throw std::invalid_argument("settle: no observed state");
   for (auto i : options.observed)
     if (i >= system.size())
       throw std::invalid_argument(fmt::format("settle: observed state {} out of range", i));
@@ -257,10 +280,13 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
   r.final_state.assign(x0.begin(), x0.end());
   const std::size_t m = options.observed.size();
   auto integrator = vehicle::make_integrator(options.solver);
-  double previous_segment_amplitude = NAN, last_segment_amplitude = NAN;
+  // Per observed state: its amplitude over the segment before the last, and over the last.
+  std::vector<double> previous_segment_amplitude(m, NAN), last_segment_amplitude(m, NAN);
+  std::vector<double> last_period(m, NAN);
   std::vector<double> last_times;
   std::vector<std::vector<double>> last_series;
-  std::vector<double> window_times, window_reference;  // last two segments, for the fit
+  std::vector<double> window_times;               // last two segments, for the fits
+  std::vector<std::vector<double>> window_series;
   for (double t0 = 0.0; t0 < options.max_time - 1e-12; t0 += options.segment) {
     const double t1 = std::min(t0 + options.segment, options.max_time);
     const auto grid = vehicle::output_grid(t0, t1, options.output_interval);
@@ -274,14 +300,16 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
       for (auto& sj : series) sj.pop_back();
     }
     const std::size_t fresh = times.size();
-    bool left_bounds = false;
+    std::size_t left_bounds = m;  // the observed state that left [-max, max], m: none
     const auto observer = [&](double t, std::span<const double> x) {
       times.push_back(t);
       for (std::size_t j = 0; j < m; ++j) series[j].push_back(x[options.observed[j]]);
-      if (std::abs(x[options.observed[options.reference]]) > options.max_amplitude ||
-          !std::isfinite(x[options.observed[options.reference]])) {
-        left_bounds = true;
-        return false;
+      for (std::size_t j = 0; j < m; ++j) {
+        const double v = x[options.observed[j]];
+        if (!(std::abs(v) <= options.max_amplitude)) {
+          left_bounds = j;
+          return false;
+        }
       }
       return true;
     };
@@ -289,14 +317,18 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
     r.rhs_evaluations += res.rhs_evaluations;
     r.time = res.t_reached;
     r.final_state = res.state;
-    if (!left_bounds && res.status == vehicle::IntegrationResult::Status::kSolverFailure &&
+    const bool out_of_bounds = left_bounds < m;
+    if (!out_of_bounds && res.status == vehicle::IntegrationResult::Status::kSolverFailure &&
         t0 == 0.0) {
-      // A failure before the reference state has swung once across zero and back is no
+      // A failure before any observed state has swung once across zero and back is no
       // oscillation: the start itself cannot be integrated.
-      const auto& ref = series[options.reference];
       int sign_changes = 0;
-      for (std::size_t i = 1; i < ref.size(); ++i)
-        if ((ref[i] > 0.0) != (ref[i - 1] > 0.0)) ++sign_changes;
+      for (const auto& s : series) {
+        int changes = 0;
+        for (std::size_t i = 1; i < s.size(); ++i)
+          if ((s[i] > 0.0) != (s[i - 1] > 0.0)) ++changes;
+        sign_changes = std::max(sign_changes, changes);
+      }
       if (sign_changes < 2) {
         throw std::runtime_error(fmt::format(
             "the run failed at its start, before one oscillation (t = {:.3g} s: {}); the "
@@ -304,75 +336,126 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
             res.t_reached, res.message));
       }
     }
-    if (left_bounds || res.status == vehicle::IntegrationResult::Status::kSolverFailure) {
+    if (out_of_bounds || res.status == vehicle::IntegrationResult::Status::kSolverFailure) {
       r.outcome = Oscillation::kDiverged;
-      r.message = left_bounds ? fmt::format("amplitude above {} at t = {:.4g} s",
-                                            options.max_amplitude, res.t_reached)
-                              : res.message;
+      r.message = out_of_bounds ? fmt::format("observed state {} above {} at t = {:.4g} s",
+                                              left_bounds + 1, options.max_amplitude,
+                                              res.t_reached)
+                                : res.message;
       r.amplitude.assign(m, NAN);
       for (std::size_t j = 0; j < m; ++j) {
         double peak = 0.0;
         for (double v : series[j]) peak = std::max(peak, std::abs(v));
         r.amplitude[j] = peak;
       }
+      r.holder = out_of_bounds ? left_bounds
+                               : static_cast<std::size_t>(
+                                     std::max_element(r.amplitude.begin(), r.amplitude.end()) -
+                                     r.amplitude.begin());
       r.period = NAN;
       return r;
     }
     window_times = times;
-    window_reference = series[options.reference];
+    window_series = series;
     last_times.assign(times.begin() + static_cast<long>(fresh), times.end());
     last_series.assign(m, {});
     for (std::size_t j = 0; j < m; ++j)
       last_series[j].assign(series[j].begin() + static_cast<long>(fresh), series[j].end());
     r.amplitude.assign(m, 0.0);
-    SteadyAmplitude ref;
+    std::vector<SteadyAmplitude> steady(m);
     for (std::size_t j = 0; j < m; ++j) {
-      const auto a = steady_amplitude(times, series[j], options.amplitude);
-      r.amplitude[j] = a.amplitude;
-      if (j == options.reference) ref = a;
+      steady[j] = steady_amplitude(times, series[j], options.amplitude);
+      r.amplitude[j] = steady[j].amplitude;
+      last_period[j] = steady[j].period;
     }
-    r.period = ref.period;
     previous_segment_amplitude = last_segment_amplitude;
-    last_segment_amplitude = ref.amplitude;
-    if (ref.amplitude < options.zero_amplitude) {
+    last_segment_amplitude = r.amplitude;
+    // The largest oscillation holds the system's.
+    r.holder = static_cast<std::size_t>(
+        std::max_element(r.amplitude.begin(), r.amplitude.end()) - r.amplitude.begin());
+    const SteadyAmplitude& held = steady[r.holder];
+    r.period = held.period;
+    if (held.amplitude < options.zero_amplitude) {
       r.outcome = Oscillation::kDecayed;
       r.amplitude.assign(m, 0.0);
       return r;
     }
     // Settled: converged within this segment and consistent with the previous one.
-    const bool consistent =
-        std::isnan(previous_segment_amplitude) ||
-        std::abs(ref.amplitude - previous_segment_amplitude) <=
-            10.0 * options.amplitude.rel_tol * ref.amplitude;
-    if (ref.converged && consistent && t0 > 0.0) {
+    const double before = previous_segment_amplitude[r.holder];
+    const bool consistent = std::isnan(before) || std::abs(held.amplitude - before) <=
+                                                      10.0 * options.amplitude.rel_tol *
+                                                          held.amplitude;
+    // The other observed states must have settled too (converged, or negligible beside the
+    // holder), so that the amplitude of every one is that of the cycle, not of a transient.
+    bool others_settled = true;
+    for (std::size_t j = 0; j < m; ++j) {
+      const double negligible =
+          std::max(options.zero_amplitude, kNegligibleShare * held.amplitude);
+      if (j != r.holder && !steady[j].converged && !(steady[j].amplitude < negligible))
+        others_settled = false;
+    }
+    if (held.converged && consistent && others_settled && t0 > 0.0) {
       r.outcome = Oscillation::kSteady;
       return r;
     }
   }
-  // Time limit: the amplitude equation fitted to the last two segments decides where the run
-  // is heading; when it cannot tell the sign of the growth, the trend does.
-  r.fit = fit_amplitude_equation(window_times, window_reference);
+  // Time limit: the amplitude equation fitted to each observed state's last two segments
+  // decides where that state is heading (when it cannot tell the sign of the growth, the trend
+  // does); the system takes the most sustained of them.
   r.message = fmt::format("not settled after {} s", options.max_time);
-  if (r.fit.valid() && r.fit.conclusive) {
-    const double cycle = r.fit.cycle_amplitude();
-    if (!std::isnan(cycle)) {
-      r.outcome = Oscillation::kApproaching;
-      const double scale = cycle / r.amplitude[options.reference];
-      for (double& a : r.amplitude) a *= scale;
-      r.message +=
-          fmt::format("; amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)", cycle,
-                      r.fit.sigma, r.fit.sigma_error);
-    } else {
-      r.outcome = r.fit.sustained() ? Oscillation::kGrowing : Oscillation::kDecaying;
-      r.message += fmt::format("; amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)",
-                               r.fit.sustained() ? "unbounded growth" : "decay to rest",
-                               r.fit.sigma, r.fit.sigma_error);
+  r.fits.assign(m, AmplitudeEquation{});
+  std::vector<Oscillation> heading(m, Oscillation::kDecaying);
+  const double largest =
+      *std::max_element(last_segment_amplitude.begin(), last_segment_amplitude.end());
+  for (std::size_t j = 0; j < m; ++j) {
+    const double a = last_segment_amplitude[j];
+    // A state at rest, or negligible beside the largest oscillation (a motion the others force
+    // on it), does not decide: its trend is noise on the scale of the vehicle's oscillation.
+    if (!(a >= options.zero_amplitude) || a < kNegligibleShare * largest) {
+      heading[j] = Oscillation::kDecayed;
+      continue;
     }
-    return r;
+    AmplitudeEquation& fit = r.fits[j] = fit_amplitude_equation(window_times, window_series[j]);
+    if (fit.valid() && fit.conclusive) {
+      heading[j] = !std::isnan(fit.cycle_amplitude()) ? Oscillation::kApproaching
+                   : fit.sustained()                  ? Oscillation::kGrowing
+                                                      : Oscillation::kDecaying;
+    } else {
+      const double b = previous_segment_amplitude[j];
+      heading[j] = !std::isnan(b) && a > b ? Oscillation::kGrowing : Oscillation::kDecaying;
+    }
   }
-  const bool growing = !std::isnan(previous_segment_amplitude) &&
-                       last_segment_amplitude > previous_segment_amplitude;
-  r.outcome = growing ? Oscillation::kGrowing : Oscillation::kDecaying;
+  // The most sustained heading; among equals, the largest predicted cycle (approaching) or the
+  // largest amplitude (otherwise).
+  const auto size_of = [&](std::size_t j) {
+    return heading[j] == Oscillation::kApproaching ? r.fits[j].cycle_amplitude()
+                                                   : last_segment_amplitude[j];
+  };
+  std::size_t holder = 0;
+  for (std::size_t j = 1; j < m; ++j) {
+    const int a = sustain_rank(heading[j]), b = sustain_rank(heading[holder]);
+    if (a > b || (a == b && size_of(j) > size_of(holder))) holder = j;
+  }
+  r.holder = holder;
+  r.period = last_period[holder];
+  r.outcome = heading[holder] == Oscillation::kDecayed ? Oscillation::kDecaying : heading[holder];
+  r.fit = r.fits[holder];
+  const std::string who = m > 1 ? fmt::format("observed state {}: ", holder + 1) : std::string();
+  if (r.outcome == Oscillation::kApproaching) {
+    const double cycle = r.fit.cycle_amplitude();
+    const double scale = cycle / r.amplitude[holder];
+    for (double& a : r.amplitude) a *= scale;
+    r.message += fmt::format("; {}amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)",
+                             who, cycle, r.fit.sigma, r.fit.sigma_error);
+  } else if (r.fit.valid() && r.fit.conclusive) {
+    r.message += fmt::format("; {}amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)", who,
+                             r.outcome == Oscillation::kGrowing ? "unbounded growth"
+                                                                : "decay to rest",
+                             r.fit.sigma, r.fit.sigma_error);
+  } else {
+    r.message += fmt::format("; {}{} by trend", who,
+                             r.outcome == Oscillation::kGrowing ? "growing" : "decaying");
+  }
   return r;
 }
 

@@ -20,23 +20,51 @@ H5File create_with_scene(const Scene& scene, const std::string& kind, const std:
 
 }  // namespace
 
+namespace {
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ",") + n;
+  return s;
+}
+
+// Samples x states, row-major, from one vector per state.
+std::vector<double> by_rows(const std::vector<std::vector<double>>& columns, std::size_t rows) {
+  std::vector<double> out;
+  out.reserve(rows * columns.size());
+  for (std::size_t i = 0; i < rows; ++i)
+    for (const auto& c : columns) out.push_back(i < c.size() ? c[i] : NAN);
+  return out;
+}
+
+}  // namespace
+
 void write_ramp(const Scene& scene, const RampResult& r, const RampOptions& o,
-                const std::string& signal_name, const std::string& path) {
+                const std::vector<std::string>& names, const std::string& path) {
   H5File f = create_with_scene(scene, "ramp", path);
+  const std::size_t n = r.time.size();
   f.write_vector("/ramp/time", r.time, "s", "time");
   f.write_vector("/ramp/speed", r.speed, "m/s", "forward speed");
-  f.write_vector("/ramp/signal", r.signal, "m", signal_name);
+  f.write_matrix("/ramp/signal", by_rows(r.signals, n), n, r.signals.size(), "m",
+                 "lateral displacement, samples x wheelsets (attribute wheelsets)");
+  f.write_matrix("/ramp/wheelset_envelope", by_rows(r.envelopes, n), n, r.envelopes.size(), "m",
+                 "half peak-to-peak over the trailing envelope window, samples x wheelsets");
   f.write_vector("/ramp/envelope", r.envelope, "m",
-                 "half peak-to-peak over the trailing envelope window");
-  f.set_attribute("/ramp", "signal_name", signal_name);
+                 "the vehicle's envelope: the largest of the wheelsets' at each sample");
+  f.set_attribute("/ramp", "wheelsets", joined(names));
+  f.set_attribute("/ramp", "holder", names.empty() ? std::string() : names[r.holder]);
   f.set_attribute("/ramp", "decay_speed", r.decay_speed.value_or(NAN));
-  f.set_attribute("/ramp", "peak_speed", r.peak_speed);
+  f.set_attribute("/ramp", "envelope_peak_speed", r.peak_speed);
+  f.set_attribute("/ramp", "envelope_peak_note",
+                  std::string("speed at the envelope's maximum: the Hopf speed for a linear "
+                              "model and a slow ramp only; on a cycle limited by the flange, "
+                              "where its plateau is highest"));
   f.set_attribute("/ramp", "envelope_growth", r.envelope_growth);
   f.set_attribute("/ramp", "threshold", o.threshold);
   f.set_attribute("/ramp", "deceleration", o.deceleration);
   f.set_attribute("/ramp", "speed_initial", o.speed_initial);
-  f.set_attribute("/ramp", "k11", scene.contact.creep.k11);
-  f.set_attribute("/ramp", "k22", scene.contact.creep.k22);
+  f.set_attribute("/ramp", "k11", scene.contact.creep.reduction.k11);
+  f.set_attribute("/ramp", "k22", scene.contact.creep.reduction.k22);
   f.set_attribute("/", "status", std::string(r.completed ? "completed" : "solver_failure"));
   f.set_attribute("/", "status_message", r.message);
 }
@@ -45,7 +73,7 @@ void write_branch(const Scene& scene, const BranchResult& b,
                   const std::vector<std::string>& wheelset_names, std::optional<double> hopf_speed,
                   const std::string& path) {
   H5File f = create_with_scene(scene, "bifurcation", path);
-  std::vector<double> v, outcome, bis, period, amp, sigma, sigma_error, beta;
+  std::vector<double> v, outcome, holder, bis, period, amp, sigma, sigma_error, beta;
   const std::size_t m = wheelset_names.size();
   for (const auto& p : b.points) {
     sigma.push_back(p.run.fit.sigma);
@@ -53,6 +81,7 @@ void write_branch(const Scene& scene, const BranchResult& b,
     beta.push_back(p.run.fit.beta);
     v.push_back(p.speed);
     outcome.push_back(static_cast<double>(p.run.outcome));
+    holder.push_back(static_cast<double>(p.run.holder));
     bis.push_back(p.bisection ? 1.0 : 0.0);
     period.push_back(p.run.period);
     for (std::size_t j = 0; j < m; ++j)
@@ -63,27 +92,31 @@ void write_branch(const Scene& scene, const BranchResult& b,
       "/branch/outcome", outcome, "-",
       "0 decayed, 1 steady, 2 diverged, 3 growing, 4 decaying, 5 approaching (cycle from the "
       "amplitude equation)");
+  f.write_vector("/branch/holder", holder, "-",
+                 "index (0-based, attribute wheelsets) of the wheelset holding the outcome");
   f.write_vector("/branch/bisection", bis, "-", "1 for points of the fold bisection");
   f.write_vector("/branch/period", period, "s", "limit-cycle period");
   f.write_matrix("/branch/amplitude", amp, b.points.size(), m, "m",
                  "steady lateral amplitude, points x wheelsets");
   f.write_vector("/branch/sigma", sigma, "1/s",
                  "growth rate of the amplitude equation d ln A/dt = sigma - beta A^2 fitted to "
-                 "the reference envelope of a run ended by the time limit (NaN otherwise)");
+                 "the envelope of the holding wheelset of a run ended by the time limit (NaN otherwise)");
   f.write_vector("/branch/sigma_error", sigma_error, "1/s", "standard error of sigma");
   f.write_vector("/branch/beta", beta, "1/(s m^2)", "Landau coefficient of the same fit");
-  std::string names;
-  for (const auto& n : wheelset_names) names += (names.empty() ? "" : ",") + n;
-  f.set_attribute("/branch", "wheelsets", names);
+  f.set_attribute("/branch", "wheelsets", joined(wheelset_names));
   f.set_attribute("/branch", "lowest_sustained", b.lowest_sustained.value_or(NAN));
+  f.set_attribute("/branch", "holder",
+                  b.lowest_sustained && b.holder < wheelset_names.size()
+                      ? wheelset_names[b.holder]
+                      : std::string());
   f.set_attribute("/branch", "bracket_low", b.bracket_low);
   f.set_attribute("/branch", "bracket_high", b.bracket_high);
   f.set_attribute("/branch", "fold_found", static_cast<long>(b.fold_found));
   f.set_attribute("/branch", "amplitude_squared_zero", b.amplitude_squared_zero);
   f.set_attribute("/branch", "supercritical", static_cast<long>(b.supercritical));
   f.set_attribute("/branch", "hopf_speed", hopf_speed.value_or(NAN));
-  f.set_attribute("/branch", "k11", scene.contact.creep.k11);
-  f.set_attribute("/branch", "k22", scene.contact.creep.k22);
+  f.set_attribute("/branch", "k11", scene.contact.creep.reduction.k11);
+  f.set_attribute("/branch", "k22", scene.contact.creep.reduction.k22);
   f.set_attribute("/", "status", std::string("completed"));
 }
 

@@ -6,13 +6,31 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 namespace ferro::scenarios::analysis {
 namespace {
 
-// Envelope growth from the first full window to the peak above which the peak is shown: any
-// growth at all (1 means the envelope is largest in its first window).
-constexpr double kGrowthShown = 1.0;
+// How the linear critical speed relates to the nonlinear one: the fold below the Hopf speed
+// (by more than the bracket) is a subcritical bifurcation, where the linear speed promises
+// stable running that a disturbance can break: it is non-conservative.
+std::string linear_against_nonlinear(const BranchResult& b, double hopf) {
+  const double width = b.bracket_high - b.bracket_low;
+  if (!b.fold_found) return "";
+  if (b.bracket_high < hopf - width) {
+    return fmt::format(
+        "non-conservative: the vehicle keeps a limit cycle {:.2f} m/s ({:.1f} %) below it "
+        "(subcritical bifurcation: between the fold and the Hopf speed a disturbance can start "
+        "hunting that the eigenvalues call stable)",
+        hopf - *b.lowest_sustained, 100.0 * (hopf - *b.lowest_sustained) / hopf);
+  }
+  if (b.bracket_low > hopf + width) {
+    return "the fold lies above the Hopf speed: the cycles near the fold did not settle within "
+           "t_max (or the disturbance missed the branch); lengthen the runs";
+  }
+  return "the fold bracket holds the Hopf speed: the cycle grows from zero there "
+         "(supercritical bifurcation), the linear critical speed is the nonlinear one";
+}
 
 }  // namespace
 
@@ -48,36 +66,29 @@ std::string ramp_report(const RampStudy& study, const RampRequest& request) {
   const Scene& scene = study.scene;
   const auto& o = study.options;
   const auto& r = study.result;
+  const auto& names = study.observed;
+  const auto name = [&names](std::size_t i) {
+    return i < names.size() ? names[i] : std::string("?");
+  };
   fmt::format_to(out, "ferrodyn critical-speed ramp: {} ({}), K11 = {}, K22 = {}\n", scene.name,
                  scene.path, request.k11, request.k22);
   fmt::format_to(
       out, "  ramp      {:.3f} -> {:.3f} m/s at -{} m/s^2, pieces of {} s, {} + {} m at start\n",
-      o.speed_initial, o.speed_final, o.deceleration, o.hold, study.observed, request.disturbance);
+      o.speed_initial, o.speed_final, o.deceleration, o.hold, name(0), request.disturbance);
   if (!r.completed) fmt::format_to(out, "  stopped   {}\n", r.message);
   if (r.decay_speed) {
     fmt::format_to(out,
-                   "  decay     {} envelope below {} m for good at t = {:.3f} s: V = {:.3f} m/s = "
-                   "{:.2f} km/h\n",
-                   study.observed, o.threshold, r.decay_time, *r.decay_speed, *r.decay_speed * 3.6);
+                   "  decay     every wheelset's envelope below {} m for good at t = {:.3f} s: V = "
+                   "{:.3f} m/s = {:.2f} km/h (the last to die out: {})\n",
+                   o.threshold, r.decay_time, *r.decay_speed, *r.decay_speed * 3.6,
+                   name(r.holder));
   } else {
-    fmt::format_to(out, "  decay     none: the envelope {} below {} m over the whole ramp\n",
+    fmt::format_to(out, "  decay     none: the vehicle's envelope {} below {} m over the whole ramp{}\n",
                    r.envelope.empty() || r.envelope.back() >= o.threshold ? "never stays" : "stays",
-                   o.threshold);
-  }
-  // The envelope's maximum is where its growth turns into decay; that is the Hopf speed only
-  // while the oscillation is small enough to be linear (not on a flange-limited cycle).
-  if (!std::isnan(r.peak_speed) && r.envelope_growth > kGrowthShown) {
-    const auto peak = std::max_element(r.envelope.begin(), r.envelope.end());
-    fmt::format_to(
-        out,
-        "  growth    the envelope grows x{:.4g} to its maximum {:.4g} mm at V = {:.3f} m/s = "
-        "{:.2f} km/h, where growth turns to decay (the Hopf speed if the oscillation is "
-        "still linear there)\n",
-        r.envelope_growth, *peak * 1e3, r.peak_speed, r.peak_speed * 3.6);
-  } else if (!std::isnan(r.peak_speed)) {
-    fmt::format_to(out,
-                   "  growth    none: the envelope is largest in its first window (the disturbance "
-                   "decays or settles)\n");
+                   o.threshold,
+                   r.completed && !r.envelope.empty() && r.envelope.back() >= o.threshold
+                       ? fmt::format(" (largest at the end: {})", name(r.holder))
+                       : std::string());
   }
   return text;
 }
@@ -85,48 +96,63 @@ std::string ramp_report(const RampStudy& study, const RampRequest& request) {
 std::string branch_report(const KijRow& row, const std::vector<std::string>& names) {
   std::string text;
   auto out = std::back_inserter(text);
-  fmt::format_to(out, "  {:>10} {:>10} {:>9} {:>5}", "V [m/s]", "V [km/h]", "outcome", "bis.");
+  const auto name = [&names](std::size_t i) {
+    return i < names.size() ? names[i] : std::string("?");
+  };
+  fmt::format_to(out, "  {:>10} {:>10} {:>9} {:>5} {:>12}", "V [m/s]", "V [km/h]", "outcome",
+                 "bis.", "held by");
   for (const auto& n : names) fmt::format_to(out, " {:>14}", n + " [mm]");
   fmt::format_to(out, "\n");
   for (const auto& p : row.branch.points) {
-    fmt::format_to(out, "  {:>10.4f} {:>10.3f} {:>9} {:>5}", p.speed, p.speed * 3.6,
-                   to_string(p.run.outcome), p.bisection ? "yes" : "");
+    fmt::format_to(out, "  {:>10.4f} {:>10.3f} {:>9} {:>5} {:>12}", p.speed, p.speed * 3.6,
+                   to_string(p.run.outcome), p.bisection ? "yes" : "",
+                   sustained(p.run.outcome) ? name(p.run.holder) : std::string());
     for (double amp : p.run.amplitude) fmt::format_to(out, " {:>14.4f}", amp * 1e3);
     fmt::format_to(out, "\n");
   }
   const auto& b = row.branch;
   if (b.fold_found) {
+    const double a_fold = [&] {
+      for (const auto& p : b.points)
+        if (p.speed == *b.lowest_sustained && sustained(p.run.outcome))
+          return p.run.amplitude[p.run.holder];
+      return std::numeric_limits<double>::quiet_NaN();
+    }();
     fmt::format_to(
         out,
-        "  nonlinear critical speed (lowest sustained oscillation): {:.4f} m/s = {:.2f} km/h, "
-        "fold in [{:.4f}, {:.4f}] m/s\n",
-        *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high);
-    if (!std::isnan(b.amplitude_squared_zero)) {
+        "  nonlinear critical speed (lowest speed where any wheelset keeps a limit cycle): "
+        "{:.4f} m/s = {:.2f} km/h, fold in [{:.4f}, {:.4f}] m/s, cycle held by {} ({:.3f} mm)\n",
+        *b.lowest_sustained, *b.lowest_sustained * 3.6, b.bracket_low, b.bracket_high,
+        name(b.holder), a_fold * 1e3);
+    // The A^2 line to zero is a result only where its assumption holds: a supercritical onset,
+    // the amplitude growing from zero at the fold.
+    if (b.supercritical) {
       fmt::format_to(
           out,
-          "  onset     amplitude^2 of the lowest cycles extrapolates to zero at {:.4f} m/s = "
-          "{:.2f} km/h: {}\n",
-          b.amplitude_squared_zero, b.amplitude_squared_zero * 3.6,
-          b.supercritical ? "supercritical (the amplitude grows from zero at the fold)"
-                          : "subcritical (a finite cycle at the fold)");
+          "  onset     supercritical: amplitude^2 of the lowest cycles falls linearly to zero at "
+          "{:.4f} m/s, inside the fold bracket\n",
+          b.amplitude_squared_zero);
     } else {
-      fmt::format_to(
-          out,
-          "  onset     no amplitude^2 line to zero: fewer than two cycles, or their amplitude "
-          "does not fall towards the fold (subcritical)\n");
+      fmt::format_to(out,
+                     "  onset     subcritical: the amplitude jumps from 0 to {:.3f} mm at the "
+                     "fold\n",
+                     a_fold * 1e3);
     }
   } else if (b.lowest_sustained) {
-    fmt::format_to(
-        out, "  sustained down to the lowest speed followed ({:.4f} m/s): the fold lies below\n",
-        *b.lowest_sustained);
+    fmt::format_to(out,
+                   "  sustained down to the lowest speed followed ({:.4f} m/s, held by {}): the "
+                   "fold lies below\n",
+                   *b.lowest_sustained, name(b.holder));
   } else {
     fmt::format_to(
         out, "  no sustained oscillation at the start speed {:.4f} m/s: the fold lies above\n",
         b.bracket_high);
   }
   if (row.hopf_speed) {
-    fmt::format_to(out, "  linear (Hopf) critical speed: {:.4f} m/s = {:.2f} km/h\n",
-                   *row.hopf_speed, *row.hopf_speed * 3.6);
+    const std::string relation = linear_against_nonlinear(b, *row.hopf_speed);
+    fmt::format_to(out, "  linear (Hopf) critical speed: {:.4f} m/s = {:.2f} km/h{}{}\n",
+                   *row.hopf_speed, *row.hopf_speed * 3.6, relation.empty() ? "" : ": ",
+                   relation);
   }
   return text;
 }
@@ -161,6 +187,13 @@ std::string kij_study_report(const Scene& scene, const KijStudyRequest& request,
   }
   if (std::abs(request.k.front() - 1.0) > 1e-12)
     fmt::format_to(out, "  (ratios are to the first K in the list, {})\n", request.k.front());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].hopf_speed) continue;
+    const std::string relation = linear_against_nonlinear(rows[i].branch, *rows[i].hopf_speed);
+    if (!relation.empty())
+      fmt::format_to(out, "  K = ({:.2f}, {:.2f}): Hopf speed {}\n", rows[i].k.k11,
+                     rows[i].k.k22, relation.substr(0, relation.find(" (")));
+  }
   return text;
 }
 
@@ -168,14 +201,21 @@ std::string sweep_report(const Scene& scene, const SweepRequest& a, const SweepO
                          int ranks) {
   std::string text;
   auto out = std::back_inserter(text);
+  const auto& names = r.wheelset_names;
   fmt::format_to(out, "ferrodyn sweep: {} ({}), {} points, {} rank(s) x {} thread(s)\n", scene.name,
                  scene.path, r.total, ranks, a.jobs);
-  fmt::format_to(out, "  {:>10} {:>6} {:>6} {:>9} {:>14} {:>9}\n", "V [m/s]", "K11", "K22",
-                 "outcome", r.wheelset_names.front() + " [mm]", "cpu [s]");
+  fmt::format_to(out, "  {:>10} {:>6} {:>6} {:>9} {:>12}", "V [m/s]", "K11", "K22", "outcome",
+                 "held by");
+  for (const auto& n : names) fmt::format_to(out, " {:>14}", n + " [mm]");
+  fmt::format_to(out, " {:>9}\n", "cpu [s]");
   for (const auto& p : r.results) {
-    fmt::format_to(out, "  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>14.5f} {:>9.3f}\n", p.point.speed,
+    fmt::format_to(out, "  {:>10.4f} {:>6.3f} {:>6.3f} {:>9} {:>12}", p.point.speed,
                    p.point.k.k11, p.point.k.k22, to_string(p.outcome),
-                   p.amplitude.empty() ? NAN : p.amplitude.front() * 1e3, p.cpu_seconds);
+                   sustained(p.outcome) && p.holder < names.size() ? names[p.holder]
+                                                                    : std::string());
+    for (std::size_t j = 0; j < names.size(); ++j)
+      fmt::format_to(out, " {:>14.5f}", j < p.amplitude.size() ? p.amplitude[j] * 1e3 : NAN);
+    fmt::format_to(out, " {:>9.3f}\n", p.cpu_seconds);
   }
   fmt::format_to(out, "  wall      {:.2f} s this invocation; CPU {:.2f} s over all points\n",
                  r.wall_seconds, r.cpu_seconds);

@@ -49,7 +49,7 @@ SettleOptions settle_options(const Scene& scene, const SettleRequest& s, Spellin
 
 RampStudy run_ramp(const Scene& base, const RampRequest& a, Spelling sp) {
   RampStudy study;
-  study.scene = with_reduction(base, {a.k11, a.k22});
+  study.scene = with_reduction(base, contact::ReductionFactors::following_k22(a.k11, a.k22));
   RampOptions& o = study.options;
   o.speed_initial = a.speed_initial;
   o.deceleration = a.deceleration;
@@ -72,8 +72,8 @@ RampStudy run_ramp(const Scene& base, const RampRequest& a, Spelling sp) {
   const auto family = speed_family(study.scene);
   const auto probe = family(o.speed_initial);
   const auto lateral = lateral_states(*probe);
-  o.observed = lateral.index.front();
-  study.observed = lateral.name.front();
+  o.observed = lateral.index;
+  study.observed = lateral.name;
   const auto x0 = disturbed_state(study.scene, *probe, a.disturbance);
   study.result = ramp_down(family, x0, o);
   return study;
@@ -96,7 +96,8 @@ BranchOptions branch_options(const Scene& scene, const BranchRequest& a, Spellin
   return o;
 }
 
-KijRow run_bifurcation(const Scene& base, const BranchRequest& a, const Reduction& k,
+KijRow run_bifurcation(const Scene& base, const BranchRequest& a,
+                       const contact::ReductionFactors& k,
                        std::vector<std::string>* names,
                        const std::function<void(const BranchPoint&)>& on_point, Spelling sp) {
   const Scene scene = with_reduction(base, k);
@@ -115,18 +116,19 @@ KijRow run_bifurcation(const Scene& base, const BranchRequest& a, const Reductio
   return row;
 }
 
-std::vector<Reduction> study_reductions(const std::vector<double>& k,
-                                        const std::string& coefficient, const Reduction& base,
-                                        Spelling sp) {
+std::vector<contact::ReductionFactors> study_reductions(const std::vector<double>& k,
+                                                        const std::string& coefficient,
+                                                        const contact::ReductionFactors& base,
+                                                        Spelling sp) {
   if (coefficient != "both" && coefficient != "k11" && coefficient != "k22")
     throw std::invalid_argument(fmt::format("{}: unknown '{}'; allowed: both, k11, k22",
                                             spelled("coefficient", sp), coefficient));
-  std::vector<Reduction> out;
+  std::vector<contact::ReductionFactors> out;
   for (double v : k) {
-    Reduction r = base;
-    if (coefficient == "both") r = Reduction::uniform(v);
+    contact::ReductionFactors r = base;
+    if (coefficient == "both") r = contact::ReductionFactors::uniform(v);
     if (coefficient == "k11") r.k11 = v;
-    if (coefficient == "k22") r.k22 = v;
+    if (coefficient == "k22") r = contact::ReductionFactors::following_k22(r.k11, v);
     out.push_back(r);
   }
   return out;
@@ -140,7 +142,10 @@ KijStudy run_kij_study(const Scene& scene, const KijStudyRequest& a,
     throw std::invalid_argument(
         fmt::format("{}: give at least one reduction factor", spelled("k", sp)));
   const auto ks =
-      study_reductions(a.k, a.coefficient, {a.branch.settle.k11, a.branch.settle.k22}, sp);
+      study_reductions(a.k, a.coefficient,
+                       contact::ReductionFactors::following_k22(a.branch.settle.k11,
+                                                                a.branch.settle.k22),
+                       sp);
   (void)branch_options(scene, a.branch, sp);  // validate before starting
   if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
   KijStudy study;

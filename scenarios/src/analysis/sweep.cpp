@@ -5,15 +5,17 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <ctime>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/run.hpp"
@@ -56,31 +58,45 @@ void write_durably(const fs::path& path, const std::string& text) {
 }  // namespace
 
 std::string serialize(const SweepPointResult& r) {
-  std::string s = fmt::format("{} {:.17g} {:.17g} {:.17g} {} {:.17g} {:.17g} {} {:.17g} {}",
+  std::string s = fmt::format("{} {:.17g} {:.17g} {:.17g} {} {} {:.17g} {:.17g} {} {:.17g} {}",
                               r.index, r.point.speed, r.point.k.k11, r.point.k.k22,
-                              to_string(r.outcome), r.period, r.time, r.rhs_evaluations,
+                              to_string(r.outcome), r.holder, r.period, r.time, r.rhs_evaluations,
                               r.cpu_seconds, r.amplitude.size());
   for (double a : r.amplitude) s += fmt::format(" {:.17g}", a);
   return s;
 }
 
 SweepPointResult deserialize(const std::string& line, const std::string& where) {
-  std::istringstream in(line);
+  const std::vector<std::string> cells = io::split_cells(line, io::CsvFormat::blanks());
+  const auto malformed = [&](const char* what) {
+    return std::invalid_argument(fmt::format("{}: {} sweep record", where, what));
+  };
+  const auto number = [&](std::size_t i) {
+    const std::optional<double> v = io::parse_number(cells[i]);
+    if (!v) throw malformed("malformed");
+    return *v;
+  };
+  const auto count = [&](std::size_t i) {
+    const double v = number(i);
+    if (!(v >= 0.0 && v <= 1e15 && v == std::floor(v))) throw malformed("malformed");
+    return static_cast<std::size_t>(v);
+  };
+  if (cells.size() < 11) throw malformed("malformed");
   SweepPointResult r;
-  std::string outcome, period;
-  std::size_t n = 0;
-  in >> r.index >> r.point.speed >> r.point.k.k11 >> r.point.k.k22 >> outcome >> period >>
-      r.time >> r.rhs_evaluations >> r.cpu_seconds >> n;
-  if (!in || n > 1000) throw std::invalid_argument(fmt::format("{}: malformed sweep record", where));
-  r.period = period == "nan" ? NAN : std::stod(period);
-  r.outcome = outcome_from(outcome, where);
+  r.index = count(0);
+  r.point.speed = number(1);
+  r.point.k = contact::ReductionFactors::following_k22(number(2), number(3));
+  r.outcome = outcome_from(cells[4], where);
+  r.holder = count(5);
+  r.period = number(6);
+  r.time = number(7);
+  r.rhs_evaluations = static_cast<long>(count(8));
+  r.cpu_seconds = number(9);
+  const std::size_t n = count(10);
+  if (n > 1000 || (n > 0 && r.holder >= n)) throw malformed("malformed");
+  if (cells.size() != 11 + n) throw malformed("truncated");
   r.amplitude.resize(n);
-  for (auto& a : r.amplitude) {
-    std::string tok;
-    in >> tok;
-    if (!in) throw std::invalid_argument(fmt::format("{}: truncated sweep record", where));
-    a = tok == "nan" ? NAN : std::stod(tok);
-  }
+  for (std::size_t i = 0; i < n; ++i) r.amplitude[i] = number(11 + i);
   return r;
 }
 
@@ -93,13 +109,13 @@ SweepPointResult run_sweep_point(const Scene& scene, const ModelResources& resou
   const auto system = build_system(s, point.speed, resources);
   const auto lateral = lateral_states(*system);
   options.observed = lateral.index;
-  options.reference = 0;
   const auto x0 = disturbed_state(s, *system, lateral_offset);
   const auto run = run_until_settled(*system, x0, options);
   SweepPointResult r;
   r.index = index;
   r.point = point;
   r.outcome = run.outcome;
+  r.holder = run.holder;
   r.amplitude = run.amplitude;
   r.period = run.period;
   r.time = run.time;
@@ -131,9 +147,10 @@ std::map<std::size_t, SweepPointResult> SweepJournal::load() const {
   for (const auto& e : fs::directory_iterator(folder_)) {
     const auto name = e.path().filename().string();
     if (name.rfind("point_", 0) != 0 || e.path().extension() != ".txt") continue;
-    std::ifstream in(e.path());
+    io::CsvReader record =
+        io::CsvReader::open(e.path().string(), io::CsvFormat::blanks(), "sweep record");
     std::string line;
-    std::getline(in, line);
+    if (!record.next_line(line)) throw std::invalid_argument(record.located("empty sweep record"));
     auto r = deserialize(line, e.path().string());
     out[r.index] = std::move(r);
   }
@@ -205,13 +222,14 @@ void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_na
   file.set_attribute("/", "scene_file", scene.path);
   file.set_attribute("/", "scene_name", scene.name);
   file.write_text("/scene/text", scene.text);
-  std::vector<double> v, k11, k22, outcome, period, time, cpu, amp;
+  std::vector<double> v, k11, k22, outcome, holder, period, time, cpu, amp;
   const std::size_t m = wheelset_names.size();
   for (const auto& r : results) {
     v.push_back(r.point.speed);
     k11.push_back(r.point.k.k11);
     k22.push_back(r.point.k.k22);
     outcome.push_back(static_cast<double>(r.outcome));
+    holder.push_back(static_cast<double>(r.holder));
     period.push_back(r.period);
     time.push_back(r.time);
     cpu.push_back(r.cpu_seconds);
@@ -221,7 +239,9 @@ void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_na
   file.write_vector("/sweep/k11", k11, "-", "reduction factor on C11");
   file.write_vector("/sweep/k22", k22, "-", "reduction factor on C22");
   file.write_vector("/sweep/outcome", outcome, "-", "see attribute outcome_codes");
-  file.write_vector("/sweep/period", period, "s", "limit-cycle period of the leading wheelset");
+  file.write_vector("/sweep/holder", holder, "-",
+                    "index (0-based, attribute wheelsets) of the wheelset holding the outcome");
+  file.write_vector("/sweep/period", period, "s", "limit-cycle period of the holding wheelset");
   file.write_vector("/sweep/time", time, "s", "simulated time");
   file.write_vector("/sweep/cpu_time", cpu, "s", "CPU time of the point");
   file.write_matrix("/sweep/amplitude", amp, results.size(), m, "m",

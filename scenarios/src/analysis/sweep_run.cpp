@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 // Everything that changes the numbers identifies the sweep.
 std::string sweep_signature(const Scene& scene, const std::vector<SweepPoint>& points,
                             const SweepRequest& a, const SettleOptions& settle) {
-  std::string signature = scene.text;
+  std::string signature = scene.text + " records-with-holder";
   for (const auto& p : points)
     signature += fmt::format(" {:.17g}/{:.17g}/{:.17g}", p.speed, p.k.k11, p.k.k22);
   signature +=
@@ -105,9 +105,11 @@ std::vector<SweepPoint> sweep_points(const Scene& scene, const SweepRequest& a, 
     throw std::invalid_argument(
         fmt::format("{}: >= 1 (1 only when min = max)", spelled("points", sp)));
   if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
-  const auto factors = study_reductions(a.k, a.coefficient, {a.settle.k11, a.settle.k22}, sp);
+  const auto factors = study_reductions(
+      a.k, a.coefficient,
+      contact::ReductionFactors::following_k22(a.settle.k11, a.settle.k22), sp);
   std::vector<SweepPoint> points;
-  for (const Reduction& r : factors) {
+  for (const contact::ReductionFactors& r : factors) {
     (void)with_reduction(scene, r);  // validates the factors
     for (int i = 0; i < a.points; ++i) {
       const double v = a.points == 1 ? a.speed_min

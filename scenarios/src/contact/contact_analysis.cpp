@@ -1,9 +1,6 @@
 // Creep curves and patch pictures for `ferrodyn contact curve|patch`.
 #include "ferro/scenarios/contact_analysis.hpp"
 
-#include "ferro/contact/io/hdf5.hpp"
-#include "ferro/contact/io/text_writer.hpp"
-
 #include <fmt/format.h>
 
 #include <cmath>
@@ -13,6 +10,9 @@
 #include <numbers>
 #include <stdexcept>
 #include <utility>
+
+#include "ferro/io/hdf5.hpp"
+#include "ferro/io/text_writer.hpp"
 
 namespace ferro::scenarios {
 namespace {

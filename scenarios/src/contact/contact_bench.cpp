@@ -3,12 +3,14 @@
 #include "ferro/scenarios/contact_bench.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <iterator>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <exception>
 #include <filesystem>
@@ -16,16 +18,15 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 
-#include <unistd.h>
-
-#include "ferro/contact/kalker_coefficients.hpp"
 #include "ferro/contact/mim/mim.hpp"
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
+#include "ferro/io/csv.hpp"
+#include "ferro/io/text_writer.hpp"
 
 namespace ferro::scenarios {
 
@@ -180,38 +181,26 @@ bool read_contact_bench_reference(const std::string& path,
                                   std::vector<ContactBenchReference>& out, int& elements) {
   std::ifstream in(path);
   if (!in) return false;
-  std::vector<ContactBenchReference> ref;
-  std::string line;
-  int line_no = 0;
+  io::CsvReader csv(in, path);
+  if (csv.header().size() != 11) {
+    throw std::invalid_argument(
+        csv.located(fmt::format("expected 11 columns, got {}", csv.header().size())));
+  }
+  // The grid of the reference solves is named in the first comment ("... elements=40").
   elements = 0;
+  for (const std::string& comment : csv.comments()) {
+    const auto pos = comment.find("elements=");
+    if (pos != std::string::npos) elements = std::atoi(comment.c_str() + pos + 9);
+  }
+  std::vector<ContactBenchReference> ref;
   std::size_t k = 0;
   const auto same = [](double a, double b) {
     return std::abs(a - b) <= kInputMatch * std::max(1.0, std::abs(b));
   };
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      const auto pos = line.find("elements=");
-      if (pos != std::string::npos) elements = std::stoi(line.substr(pos + 9));
-      continue;
-    }
-    if (line.rfind("ratio", 0) == 0) continue;  // header
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<double> v;
-    while (std::getline(ss, cell, ',')) {
-      try {
-        v.push_back(std::stod(cell));
-      } catch (const std::exception&) {
-        throw std::invalid_argument(
-            fmt::format("{}:{}: '{}' is not a number", path, line_no, cell));
-      }
-    }
-    if (v.size() != 11) {
-      throw std::invalid_argument(
-          fmt::format("{}:{}: expected 11 columns, got {}", path, line_no, v.size()));
-    }
+  std::vector<std::string> cells;
+  while (csv.next(cells)) {
+    double v[11];
+    for (std::size_t i = 0; i < 11; ++i) v[i] = csv.number(cells, i);
     if (k >= cases.size() || !same(v[0], cases[k].ratio) || !same(v[1], cases[k].xi_x) ||
         !same(v[2], cases[k].xi_y) || !same(v[3], cases[k].spin)) {
       return false;  // another case set
@@ -227,23 +216,20 @@ bool read_contact_bench_reference(const std::string& path,
 void write_contact_bench_reference(const std::string& path,
                                    const std::vector<ContactBenchCase>& cases,
                                    const std::vector<ContactBenchReference>& ref, int elements) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path));
-  out << fmt::format(
+  io::TextWriter out(path);
+  out.print(
       "# ferrodyn bench contact reference: MIM grids N x N and 2N x 2N over the patch, "
       "elements={}\n# forces F = F_2N + (F_2N - F_N)/3 in mu F_n, moment in mu F_n sqrt(ab); "
       "inputs: a/b, normalised xi_x*, xi_y*, phi* (contact/mim_table.hpp units)\n",
       elements);
-  out << "ratio,xi_x,xi_y,spin,fx,fy,mz,fx_n,fy_n,fx_2n,fy_2n\n";
+  out.write("ratio,xi_x,xi_y,spin,fx,fy,mz,fx_n,fy_n,fx_2n,fy_2n\n");
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const ContactBenchCase& c = cases[k];
     const ContactBenchReference& r = ref[k];
-    out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
-                       "{:.9g}\n",
-                       c.ratio, c.xi_x, c.xi_y, c.spin, r.fx, r.fy, r.mz, r.fx_n, r.fy_n, r.fx_2n,
-                       r.fy_2n);
+    out.print("{:.17g},{:.17g},{:.17g},{:.17g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n",
+              c.ratio, c.xi_x, c.xi_y, c.spin, r.fx, r.fy, r.mz, r.fx_n, r.fy_n, r.fx_2n, r.fy_2n);
   }
-  if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
+  out.close();
 }
 
 namespace {
@@ -408,16 +394,16 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
 }
 
 void write_contact_bench_csv(const ContactBenchResult& result, const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path));
-  out << "model,us_per_eval,mean_error_mu_fn,p95_error_mu_fn,max_error_mu_fn,mean_no_spin,"
-         "mean_spin,mz_mean_error,max_force_mu_fn\n";
+  io::TextWriter out(path);
+  out.write(
+      "model,us_per_eval,mean_error_mu_fn,p95_error_mu_fn,max_error_mu_fn,mean_no_spin,"
+      "mean_spin,mz_mean_error,max_force_mu_fn\n");
   for (const auto& r : result.rows) {
-    out << fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.label,
-                       r.us_per_eval, r.mean_error, r.p95_error, r.max_error, r.mean_no_spin,
-                       r.mean_spin, r.mz_mean_error, r.max_force);
+    out.print("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.label,
+              r.us_per_eval, r.mean_error, r.p95_error, r.max_error, r.mean_no_spin, r.mean_spin,
+              r.mz_mean_error, r.max_force);
   }
-  if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
+  out.close();
 }
 
 Parameters parameters(ContactBenchOptions& o) {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "ferro/contact/hertz.hpp"
+#include "ferro/contact/normal/hertz.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 
 namespace ferro::scenarios {

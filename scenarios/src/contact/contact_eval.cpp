@@ -9,10 +9,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ferro/contact/hertz.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
+#include "ferro/contact/normal/hertz.hpp"
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
-#include "ferro/scenarios/csv_batch.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -65,36 +65,38 @@ Parameters parameters(EvalInput& in) {
        "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, chopaya, "
        "polach, fastsim, fastrip, mim, mim_table",
        &in.model},
-      {"k11", "-", "reduction factor K11", &in.k11},
-      {"k22", "-", "reduction factor K22", &in.k22},
-      {"k23", "-", "reduction factor K23 (default: K22, as in the thesis 4.2.4)", &in.k23, false},
-      {"k33", "-", "reduction factor K33", &in.k33},
+      {"k11", "-", "reduction factor K11", &in.reduction.k11},
+      {"k22", "-", "reduction factor K22", &in.reduction.k22},
+      {"k23", "-", "reduction factor K23 (default: K22, as in the thesis 4.2.4)", &in.reduction.k23, false},
+      {"k33", "-", "reduction factor K33", &in.reduction.k33},
   };
 }
 
 namespace {
 
-// The numeric fields of a case by name ("phi" and "spin" both name the spin creepage).
-const std::map<std::string, double EvalInput::*>& numeric_fields() {
-  static const std::map<std::string, double EvalInput::*> fields = {
-      {"a", &EvalInput::a},
-      {"b", &EvalInput::b},
-      {"curvature_x", &EvalInput::curvature_x},
-      {"curvature_y", &EvalInput::curvature_y},
-      {"fn", &EvalInput::fn},
-      {"g1", &EvalInput::g1},
-      {"nu1", &EvalInput::nu1},
-      {"g2", &EvalInput::g2},
-      {"nu2", &EvalInput::nu2},
-      {"mu", &EvalInput::mu},
-      {"xi_x", &EvalInput::xi_x},
-      {"xi_y", &EvalInput::xi_y},
-      {"phi", &EvalInput::phi},
-      {"spin", &EvalInput::phi},
-      {"k11", &EvalInput::k11},
-      {"k22", &EvalInput::k22},
-      {"k23", &EvalInput::k23},
-      {"k33", &EvalInput::k33}};
+// The numeric fields of a case by name ("phi" and "spin" both name the spin creepage; k11..k33
+// the reduction factors).
+using Field = double& (*)(EvalInput&);
+const std::map<std::string, Field>& numeric_fields() {
+  static const std::map<std::string, Field> fields = {
+      {"a", [](EvalInput& e) -> double& { return e.a; }},
+      {"b", [](EvalInput& e) -> double& { return e.b; }},
+      {"curvature_x", [](EvalInput& e) -> double& { return e.curvature_x; }},
+      {"curvature_y", [](EvalInput& e) -> double& { return e.curvature_y; }},
+      {"fn", [](EvalInput& e) -> double& { return e.fn; }},
+      {"g1", [](EvalInput& e) -> double& { return e.g1; }},
+      {"nu1", [](EvalInput& e) -> double& { return e.nu1; }},
+      {"g2", [](EvalInput& e) -> double& { return e.g2; }},
+      {"nu2", [](EvalInput& e) -> double& { return e.nu2; }},
+      {"mu", [](EvalInput& e) -> double& { return e.mu; }},
+      {"xi_x", [](EvalInput& e) -> double& { return e.xi_x; }},
+      {"xi_y", [](EvalInput& e) -> double& { return e.xi_y; }},
+      {"phi", [](EvalInput& e) -> double& { return e.phi; }},
+      {"spin", [](EvalInput& e) -> double& { return e.phi; }},
+      {"k11", [](EvalInput& e) -> double& { return e.reduction.k11; }},
+      {"k22", [](EvalInput& e) -> double& { return e.reduction.k22; }},
+      {"k23", [](EvalInput& e) -> double& { return e.reduction.k23; }},
+      {"k33", [](EvalInput& e) -> double& { return e.reduction.k33; }}};
   return fields;
 }
 
@@ -123,7 +125,8 @@ EvalOutput evaluate_contact(const EvalInput& in, const fc::TangentialModel& mode
   p.friction = in.mu;
   p.body1 = body1;
   p.body2 = body2;
-  p.reduction = {in.k11, in.k22, std::isnan(in.k23) ? in.k22 : in.k23, in.k33};
+  p.reduction = in.reduction;
+  if (std::isnan(p.reduction.k23)) p.reduction.k23 = p.reduction.k22;
   if (in.table) p.reduction = in.table->at_patch(out.patch, in.table_point);
   if (!(in.mu >= 0.0))
     throw std::invalid_argument(fmt::format("--mu: must be >= 0, got {}", in.mu));
@@ -138,7 +141,7 @@ void evaluate_contact_columns(const EvalInput& defaults,
                               std::size_t n, const fc::TangentialModel& model,
                               fc::CoefficientSource source, const EvalOutputColumns& out) {
   struct Column {
-    double EvalInput::*field;
+    Field field;
     std::span<const double> values;
   };
   std::vector<Column> columns;
@@ -165,7 +168,7 @@ void evaluate_contact_columns(const EvalInput& defaults,
   }
   EvalInput in = defaults;
   for (std::size_t i = 0; i < n; ++i) {
-    for (const Column& c : columns) in.*(c.field) = c.values[c.values.size() == 1 ? 0 : i];
+    for (const Column& c : columns) c.field(in) = c.values[c.values.size() == 1 ? 0 : i];
     EvalOutput r;
     try {
       r = evaluate_contact(in, model, source);
@@ -223,7 +226,7 @@ NormalCases solve_normal_cases(const fc::NormalContactModel& model, const fc::No
 void evaluate_contact_batch(std::istream& in, const std::string& input_name,
                             const EvalInput& defaults, const fc::ModelOptions& options,
                             fc::CoefficientSource source, std::ostream& out) {
-  CsvBatchReader reader(in, input_name);
+  io::CsvReader reader(in, input_name);
   const auto& numeric = numeric_fields();
   std::set<std::string> allowed = {"model"};
   for (const auto& kv : numeric) allowed.insert(kv.first);
@@ -242,7 +245,7 @@ void evaluate_contact_batch(std::istream& in, const std::string& input_name,
         row_in.model = cells[i];
         continue;
       }
-      row_in.*(numeric.at(header[i])) = reader.number(cells, i);
+      numeric.at(header[i])(row_in) = reader.number(cells, i);
     }
     try {
       auto it = models.find(row_in.model);

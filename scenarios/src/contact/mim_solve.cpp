@@ -1,7 +1,7 @@
 // One MIM solve as a user asks for it (see the header).
 #include "ferro/scenarios/mim_solve.hpp"
 
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/io/text_writer.hpp"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "ferro/contact/geometry/contact_table.hpp"
-#include "ferro/contact/io/text_writer.hpp"
+#include "ferro/io/text_writer.hpp"
 
 namespace ferro::scenarios {
 

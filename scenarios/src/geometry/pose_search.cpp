@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "ferro/scenarios/csv_batch.hpp"
+#include "ferro/io/csv.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 
 namespace ferro::scenarios {
@@ -40,7 +40,7 @@ struct Column {
   double to_si = 1.0;
 };
 
-std::vector<Column> pose_columns(const CsvBatchReader& reader) {
+std::vector<Column> pose_columns(const io::CsvReader& reader) {
   const std::map<std::string, Column> known{{"y", {&PoseInput::y}},
                                             {"roll", {&PoseInput::roll}},
                                             {"yaw", {&PoseInput::yaw}},
@@ -143,15 +143,15 @@ PoseResult solve_pose(const fc::WheelRailPair& pair, const PoseInput& in, double
 
 double contact_lead(const fc::WheelRailPair& pair, const fc::WheelsetPose& pose,
                     const fc::ContactPoint& p) {
-  const double sgn = p.side == fc::Side::right ? 1.0 : -1.0;
-  const double Y = sgn * (pair.wheel_offset() + p.wheel_y);
-  return p.x + std::sin(pose.yaw) * std::cos(pose.roll) * Y;
+  // The point's distance ahead of its wheel section's centre, which sits Y along the axle.
+  const double Y = fc::side_sign(p.side) * (pair.wheel_offset() + p.wheel_y);
+  return p.x - fc::WheelsetFrame(pose, pair.params().nominal_radius).axle().x() * Y;
 }
 
 void search_pose_batch(const fc::WheelRailPair& pair, std::istream& in, const std::string& source,
                        const PoseInput& defaults, double estar,
                        const std::function<void(const std::string&)>& emit) {
-  CsvBatchReader reader(in, source);
+  io::CsvReader reader(in, source);
   const std::vector<Column> cols = pose_columns(reader);
   std::string echo_header;
   for (const auto& h : reader.header()) echo_header += h + ",";

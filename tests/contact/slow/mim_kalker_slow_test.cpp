@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "mim_kalker.hpp"
 #include "ferro/contact/mim/hertz_gap.hpp"
 #include "ferro/contact/mim/normal_solver.hpp"
 #include "ferro/contact/mim/tangential_solver.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "mim_kalker.hpp"
 
 using namespace ferro::contact;
 using namespace ferro::contact::mim;
@@ -72,10 +72,10 @@ TEST(MimRollingSlow, thesis_sphere_cases_grid_convergence) {
     InfluenceOperator op(grid, m);
     const Field gap =
         sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
-    const NormalSolution s = solve_normal_approach(op, gap, 0.4e-3);
+    const NormalGridSolution s = solve_normal_approach(op, gap, 0.4e-3);
     mufn[k] = 0.2 * s.normal_force;
     for (int c = 0; c < 3; ++c) {
-      const TangentialSolution t = solve_steady_rolling(op, s.pressure, cases[c]);
+      const TangentialGridSolution t = solve_steady_rolling(op, s.pressure, cases[c]);
       ASSERT_TRUE(t.converged);
       f[c][k] = (c == 0 ? t.force_x : t.force_y) / mufn[k];
     }
@@ -109,7 +109,7 @@ TEST(MimNormalSlow, hertz_spheres_finer_grids) {
     InfluenceOperator op(grid, m);
     const Field gap =
         sample(grid, [&](double x, double y) { return (x * x + y * y) / (2.0 * r_rel); });
-    const NormalSolution s = solve_normal_approach(op, gap, delta);
+    const NormalGridSolution s = solve_normal_approach(op, gap, delta);
     ASSERT_TRUE(s.converged);
     double bulk = 0.0, edge = 0.0;
     const int iy = grid.ny / 2;

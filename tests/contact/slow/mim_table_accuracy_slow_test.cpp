@@ -7,9 +7,9 @@
 #include <cmath>
 #include <vector>
 
-#include "ferro/contact/mim_table.hpp"
-#include "ferro/contact/mim_tangential_model.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/mim_model.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "reference_tangential_case.hpp"
 
 namespace fc = ferro::contact;

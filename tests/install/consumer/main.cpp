@@ -2,7 +2,7 @@
 // (ferro::vehicle). Prints C11 for a circular contact at nu = 1/4 (table value 4.12).
 #include <cstdio>
 
-#include "ferro/contact/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 
 int main() {

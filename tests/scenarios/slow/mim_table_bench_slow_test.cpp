@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "bench_errors.hpp"
-#include "ferro/contact/mim_table.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
 
 namespace fc = ferro::contact;
 

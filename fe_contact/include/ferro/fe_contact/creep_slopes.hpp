@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/kij/reduction_factors.hpp"
 #include "ferro/contact/mim/compliance_operator.hpp"
 #include "ferro/contact/mim/mim.hpp"
-#include "ferro/contact/reduction_factors.hpp"
 
 namespace ferro::fe_contact {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/reduction_factors.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/fe_contact/creep_slopes.hpp"
 #include "ferro/fe_contact/elastoplastic_kij.hpp"
 #include "ferro/fe_contact/hertz_case.hpp"

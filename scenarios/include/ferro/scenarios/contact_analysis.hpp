@@ -1,6 +1,6 @@
 #pragma once
 // Creep curves and patch pictures of a contact case (`ferrodyn contact curve|patch`).
-// Forces are on the wheel from the rail (see ferro/contact/tangential_model.hpp); SI units.
+// Forces are on the wheel from the rail (see ferro/contact/tangential/tangential_model.hpp); SI units.
 
 #include <string>
 #include <vector>

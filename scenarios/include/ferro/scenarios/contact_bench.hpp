@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {

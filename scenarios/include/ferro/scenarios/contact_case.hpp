@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/normal_model.hpp"
-#include "ferro/contact/reduction_factors.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/kij/reduction_factors.hpp"
+#include "ferro/contact/normal/normal_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 
 namespace ferro::scenarios {
 

@@ -11,9 +11,9 @@
 #include <span>
 #include <string>
 
-#include "ferro/contact/kalker_coefficients.hpp"
-#include "ferro/contact/reduction_factors.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/kij/kij_table.hpp"
+#include "ferro/contact/tangential/kalker_coefficients.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {
@@ -29,7 +29,8 @@ struct EvalInput {
   double mu = kUnset;                                   ///< friction coefficient [-]
   double xi_x = 0.0, xi_y = 0.0, phi = 0.0;  ///< creepages [-], [-], spin [1/m]
   std::string model = "fastsim";             ///< tangential model name (make_tangential_model)
-  double k11 = 1.0, k22 = 1.0, k23 = kUnset, k33 = 1.0;  ///< K23 unset: K23 = K22 (Toumi 4.2.4)
+  /// K_ij; K23 NaN (unset): K23 = K22 (Toumi 4.2.4).
+  contact::ReductionFactors reduction{1.0, 1.0, kUnset, 1.0};
   /// K_ij table (overrides k11..k33): looked up at table_point, the normal_force and
   /// peak_pressure axes filled from the patch when not given.
   std::shared_ptr<const contact::KijTable> table;

@@ -1,5 +1,5 @@
 #pragma once
-// Run output over the HDF5 layer (ferro/contact/io/hdf5.hpp). Layout: docs/OUTPUT.md.
+// Run output over the HDF5 layer (ferro/io/hdf5.hpp). Layout: docs/OUTPUT.md.
 //  - H5File: the io layer's RAII file handle.
 //  - TimeSeriesWriter: chunked, extendible 1-D datasets /time and /signals/<name>, written in
 //    blocks and flushed to disk as the run goes, so a run stopped at any moment leaves every
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "ferro/contact/io/hdf5.hpp"
+#include "ferro/io/hdf5.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 
 namespace ferro::scenarios {

@@ -2,7 +2,7 @@
 // Reading any ferrodyn HDF5 file back (run outputs, analyses, contact tables, K_ij tables, MIM
 // fields; layouts in docs/OUTPUT.md): every dataset with its dimensions and values (numbers as
 // float64, text as text) and every attribute of the root, the groups and the datasets, through
-// the one HDF5 layer (ferro/contact/io/hdf5.hpp).
+// the one HDF5 layer (ferro/io/hdf5.hpp).
 
 #include <cstddef>
 #include <string>

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "ferro/contact/mim/mim.hpp"
-#include "ferro/contact/mim_table.hpp"
+#include "ferro/contact/tangential/mim_table.hpp"
 #include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {

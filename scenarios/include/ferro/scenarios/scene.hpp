@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/model_options.hpp"
 #include "ferro/scenarios/track_config.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 #include "ferro/vehicle/integrator.hpp"
@@ -111,10 +112,12 @@ struct KeyOverride {
 /// checked at load; callers that change the speed or duration check again.
 [[nodiscard]] std::string track_extent_problem(const Scene& scene, double t_end);
 
-/// Replaces the tangential contact model of a vehicle scene (its options are dropped unless
-/// the model stays the same). Throws std::invalid_argument starting with `flag` for another
-/// model type or an unknown name.
-void override_tangential(Scene& scene, const std::string& name, const std::string& flag);
+/// Replaces the tangential contact model of a vehicle scene: a new model starts from `options`,
+/// a kept one keeps its own and takes from `options` those it does not set. Throws
+/// std::invalid_argument starting with `flag` for another model type, an unknown name or bad
+/// options.
+void override_tangential(Scene& scene, const std::string& name, const std::string& flag,
+                         const contact::ModelOptions& options = {});
 
 /// Replaces the normal contact model of a vehicle scene (hertz | semi_hertz). Throws
 /// std::invalid_argument starting with `flag` for another model type, an unknown name, or

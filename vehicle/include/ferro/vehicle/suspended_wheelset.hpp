@@ -14,6 +14,7 @@
 #include <limits>
 #include <string>
 
+#include "ferro/contact/kij/reduction_factors.hpp"
 #include "ferro/contact/material.hpp"
 #include "ferro/vehicle/ode_system.hpp"
 
@@ -45,8 +46,8 @@ struct LinearCreepParams {
   double semi_axis_b = kNaN;  ///< b, lateral [m]
   contact::Material wheel = contact::Material::steel();
   contact::Material rail = contact::Material::steel();
-  double k11 = 1.0;  ///< reduction factor on C11 [-]
-  double k22 = 1.0;  ///< reduction factor on C22 [-]
+  /// K_ij; linear theory without spin uses K11 on C11 and K22 on C22 [-].
+  contact::ReductionFactors reduction;
   /// Coefficient source: "kalker_table" (annex A.2) or "equal" (C11 = C22 = the table's C11,
   /// the assumption of the closed-form critical speed).
   std::string coefficients = "kalker_table";

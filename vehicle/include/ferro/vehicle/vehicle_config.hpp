@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/kij/reduction_factors.hpp"
+
 namespace ferro::vehicle {
 
 /// A specification value outside its allowed range. field() names it relative to the struct
@@ -138,7 +140,7 @@ struct WheelRailSpec {
   std::string tangential_model = "chopaya";
   std::map<std::string, std::string> tangential_options;
   /// K_ij: constants, or a table (HDF5, docs/KIJ_TABLE.md) looked up per contact.
-  std::array<double, 4> reduction{1.0, 1.0, 1.0, 1.0};  ///< K11, K22, K23, K33
+  contact::ReductionFactors reduction;                  ///< K11, K22, K23, K33
   std::string reduction_table;                          ///< path, empty: constants
   /// Values of the table's axes other than the patch's own (normal_force, peak_pressure, taken
   /// from each contact patch): e.g. layer_thickness, layer_shear_modulus [SI].

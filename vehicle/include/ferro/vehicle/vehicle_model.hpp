@@ -95,7 +95,7 @@
 
 #include "ferro/contact/geometry/contact_geometry_source.hpp"
 #include "ferro/contact/material.hpp"
-#include "ferro/contact/tangential_model.hpp"
+#include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/track/track.hpp"
 #include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/ode_system.hpp"

@@ -65,14 +65,32 @@ struct WheelRailContact {
   }
 };
 
+/// Caller-owned scratch of ContactGeometrySource::contacts(): buffers a source reuses from call
+/// to call, so that it keeps no state of its own and allocates nothing once they have grown.
+/// Nothing in it carries from one call to the next; one scratch serves one thread of calls (a
+/// right-hand side keeps one in its workspace).
+struct ContactScratch {
+  std::vector<WheelRailContact> candidates;  ///< interpolated candidates (multi-point table)
+  std::vector<RunMember> members;            ///< the candidates as the joined-run rule sees them
+  std::vector<double> gaps;                  ///< effective vertical gaps of the members [m]
+};
+
 class ContactGeometrySource {
  public:
   virtual ~ContactGeometrySource() = default;
   [[nodiscard]] virtual std::string_view name() const = 0;
   /// Every penetrating contact point of both wheels at `pose` (relative to the rails), left
-  /// wheel first, appended to `out` after clearing it. Must be thread-safe (const, no shared
-  /// mutable state) and must not allocate once `out` has grown to its working size.
-  virtual void contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out) const = 0;
+  /// wheel first, appended to `out` after clearing it. Must be thread-safe (const, no state of
+  /// its own; `scratch` is the caller's) and must not allocate once `out` and `scratch` have
+  /// grown to their working size.
+  virtual void contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out,
+                        ContactScratch& scratch) const = 0;
+  /// Same with a scratch of its own, allocated for this call (tools and tests; a right-hand side
+  /// passes its own scratch).
+  void contacts(const WheelsetPose& pose, std::vector<WheelRailContact>& out) const {
+    ContactScratch scratch;
+    contacts(pose, out, scratch);
+  }
   /// The wheel and rail profiles the points come from, for normal models that need the gap
   /// around a point (semi-Hertz); nullptr when the source has none (imported one-point tables,
   /// the analytic cone).

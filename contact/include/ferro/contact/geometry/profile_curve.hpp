@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "ferro/contact/geometry/profile.hpp"
+#include "ferro/numerics/interpolation.hpp"
 
 namespace ferro::contact {
 
@@ -35,12 +36,9 @@ class ProfileCurve {
   void eval(double y, double& z, double& dz) const {
     const auto [i, t] = cell(y);
     const double z0 = z_[i], z1 = z_[i + 1], d0 = dz_[i] * h_, d1 = dz_[i + 1] * h_;
-    const double t2 = t * t, t3 = t2 * t;
-    z = (2 * t3 - 3 * t2 + 1) * z0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * z1 +
-        (t3 - t2) * d1;
-    dz = ((6 * t2 - 6 * t) * z0 + (3 * t2 - 4 * t + 1) * d0 + (-6 * t2 + 6 * t) * z1 +
-          (3 * t2 - 2 * t) * d1) *
-         inv_h_;
+    const numerics::HermiteBasis b(t);
+    z = b.h00 * z0 + b.h10 * d0 + b.h01 * z1 + b.h11 * d1;
+    dz = (b.g00 * z0 + b.g10 * d0 + b.g01 * z1 + b.g11 * d1) * inv_h_;
   }
   /// z, dz/dy and d2z/dy2 at y.
   void eval2(double y, double& z, double& dz, double& ddz) const {

@@ -6,9 +6,8 @@
 //
 // Frames. Track frame: x forward, y lateral to the RIGHT, z DOWN (SIMPACK / Manchester benchmark
 // convention). The right rail and right wheel use their profiles as read; the left ones are
-// mirrored (y -> -y). Wheelset frame: same axes at the axle centre, rotated by roll about x then
-// yaw about z: R = Rz(yaw) Rx(roll). The axle centre sits at y = lateral, z = -r0 + vertical
-// (r0 the nominal radius), so at zero pose the taping-line circles touch the rail-top level.
+// mirrored (y -> -y). Wheelset frame and pose: wheelset_pose.hpp (R = Rz(yaw) Rx(roll), axle
+// centre at y = lateral, z = -r0 + vertical).
 //
 // Search method: each wheel is cut into lateral sections (circles of radius r(y_w)); on each
 // circle the point of smallest vertical distance to the (prismatic) rail is found by Newton's
@@ -37,6 +36,7 @@
 
 #include "ferro/contact/geometry/profile.hpp"
 #include "ferro/contact/geometry/profile_curve.hpp"
+#include "ferro/contact/geometry/wheelset_pose.hpp"
 
 namespace ferro::contact {
 
@@ -85,16 +85,6 @@ class WheelRailPair {
   RailReference rail_ref_;
   double wheel_offset_ = 0.0, rail_offset_ = 0.0, wheel_z0_ = 0.0;
 };
-
-/// Wheelset position relative to the track (see the frame description above).
-struct WheelsetPose {
-  double lateral = 0.0;   ///< axle-centre lateral shift, + to the right [m]
-  double vertical = 0.0;  ///< axle-centre drop below the nominal height, + down [m]
-  double roll = 0.0;      ///< about track x [rad]; + lowers the right wheel
-  double yaw = 0.0;       ///< about track z (down) [rad]; + turns the front to the right
-};
-
-enum class Side { left = 0, right = 1 };
 
 /// One contact point (or candidate point when its vertical_gap is positive).
 struct ContactPoint {
@@ -256,10 +246,9 @@ class ContactPlaneGap {
   [[nodiscard]] double at(double x, double s) const;
 
  private:
-  void to_local(double x, double y, double z, double& lx, double& ly, double& lz) const;
   const WheelRailPair* pair_;
   double sgn_, px_, py_, pz_;
-  double cp_, sp_, cr_, sr_, yc_, zc_;
+  WheelsetFrame frame_;
   double ny_ = 0.0, nz_ = 0.0, ty_ = 0.0, tz_ = 0.0;  // plane normal and lateral tangent
   double mx_ = 0.0, my_ = 0.0, mz_ = 0.0;             // the normal in the wheelset frame
 };

@@ -60,7 +60,13 @@ struct MimResult {
   bool converged = false;
 };
 
-/// Normal then steady-rolling solve on an arbitrary undeformed gap z [m] sampled on op.grid().
+/// Normal then steady-rolling solve on an arbitrary undeformed gap z [m] sampled on op.grid();
+/// `workspace` is the caller's scratch of the tangential solve.
+[[nodiscard]] MimResult solve_rolling_contact(ComplianceOperator& op, const Field& gap,
+                                              const NormalLoad& load, const RollingInput& rolling,
+                                              const MimOptions& options,
+                                              TangentialWorkspace& workspace);
+/// Same with a workspace of its own (allocated for this solve).
 [[nodiscard]] MimResult solve_rolling_contact(ComplianceOperator& op, const Field& gap,
                                               const NormalLoad& load, const RollingInput& rolling,
                                               const MimOptions& options = {});
@@ -130,6 +136,7 @@ class HertzMimSolver {
   MimOptions options_;
   std::size_t max_cached_;
   std::vector<std::unique_ptr<Entry>> cache_;
+  TangentialWorkspace workspace_;  ///< scratch of the tangential solves, reused
   int operators_built_ = 0;
 };
 

@@ -25,7 +25,7 @@ struct NormalSolverOptions {
   void validate(const std::string& where = "NormalSolverOptions") const;
 };
 
-struct NormalSolution {
+struct NormalGridSolution {
   Field pressure;             ///< p_n per element [Pa]
   Field deformed_gap;         ///< e_z = u_z + z - delta per element [m]
   double normal_force = 0.0;  ///< F_n = dx dy sum p [N] (eq. 85)
@@ -43,13 +43,13 @@ struct NormalSolution {
 };
 
 /// Prescribed approach delta [m]; `gap` is the undeformed separation z(x, y) [m] per element.
-[[nodiscard]] NormalSolution solve_normal_approach(ComplianceOperator& op, const Field& gap,
-                                                   double approach,
-                                                   const NormalSolverOptions& options = {});
+[[nodiscard]] NormalGridSolution solve_normal_approach(ComplianceOperator& op, const Field& gap,
+                                                       double approach,
+                                                       const NormalSolverOptions& options = {});
 
 /// Prescribed total normal force F_n > 0 [N]; the approach is an output.
-[[nodiscard]] NormalSolution solve_normal_force(ComplianceOperator& op, const Field& gap,
-                                                double normal_force,
-                                                const NormalSolverOptions& options = {});
+[[nodiscard]] NormalGridSolution solve_normal_force(ComplianceOperator& op, const Field& gap,
+                                                    double normal_force,
+                                                    const NormalSolverOptions& options = {});
 
 }  // namespace ferro::contact::mim

@@ -29,19 +29,31 @@ struct RampOptions {
   double speed_final = 0.0;       ///< the run stops at this speed [m/s]
   double hold = 0.1;              ///< duration of each constant-speed piece [s]
   double output_interval = 2e-3;  ///< [s]
-  double envelope_window = 2.0;   ///< envelope = max |x - x_mean| over this trailing time [s]
+  double envelope_window = 2.0;   ///< envelope = half the peak-to-peak over this trailing time [s]
   double threshold = 1e-4;        ///< oscillation died out when the envelope stays below [unit]
-  double max_amplitude = 0.05;    ///< the run stops as diverged when |x| exceeds this [unit]
+  double max_amplitude = 0.05;    ///< the run stops as diverged when any |x| exceeds this [unit]
   vehicle::IntegratorSettings solver;
-  std::size_t observed = 0;       ///< state index (wheelset 1 lateral displacement)
+  /// State indices watched (each wheelset's lateral displacement): the system's envelope is the
+  /// largest of theirs.
+  std::vector<std::size_t> observed;
 };
 
 struct RampResult {
-  std::vector<double> time, speed, signal, envelope;
-  std::optional<double> decay_speed;  ///< speed where the envelope goes below for good [m/s]
+  std::vector<double> time, speed;
+  std::vector<std::vector<double>> signals;    ///< per observed state, at `time`
+  std::vector<std::vector<double>> envelopes;  ///< per observed state, at `time`
+  std::vector<double> envelope;  ///< the system's: the largest of `envelopes` at each time
+  /// Speed where the system's envelope goes below the threshold for good [m/s]: every observed
+  /// state's oscillation has died out.
+  std::optional<double> decay_speed;
   double decay_time = NAN;            ///< [s]
-  /// Speed at the envelope's maximum [m/s]: where the oscillation stops growing. For a linear
-  /// model slow enough a ramp, the speed where the least damped mode's damping crosses zero.
+  /// Which observed state held the envelope last above the threshold (the last to die out),
+  /// or the largest at the end when none went below.
+  std::size_t holder = 0;
+  /// Speed at the system envelope's maximum [m/s]: where the oscillation stops growing. For a
+  /// linear model and a ramp slow enough, the speed where the least damped mode's damping
+  /// crosses zero; on a nonlinear vehicle (a cycle limited by the flange) only where the
+  /// plateau is highest, which is no critical speed.
   double peak_speed = NAN;
   /// Envelope at its maximum over the envelope once the first full window has passed [-]
   /// (1 when the maximum is in the first window: no growth).
@@ -73,12 +85,16 @@ struct BranchPoint {
 
 struct BranchResult {
   std::vector<BranchPoint> points;  ///< in the order computed
-  /// Lowest speed with a sustained oscillation found (upper end of the fold bracket).
+  /// Lowest speed with a sustained oscillation of any observed state found (upper end of the
+  /// fold bracket): the system's nonlinear critical speed.
   std::optional<double> lowest_sustained;
+  /// Which observed state holds the cycle at lowest_sustained (SettleResult::holder).
+  std::size_t holder = 0;
   double bracket_low = NAN, bracket_high = NAN;  ///< the fold lies in [low, high] [m/s]
   bool fold_found = false;  ///< false: sustained at speed_stop, or not at speed_start
-  /// Speed where the squared reference amplitude of the kOnsetPoints lowest cycles (steady or
-  /// approaching), extrapolated linearly in speed, reaches zero [m/s]; NaN with fewer than two
+  /// Speed where the squared amplitude of the kOnsetPoints lowest cycles (steady or approaching;
+  /// each cycle's largest observed amplitude, that of the state holding it), extrapolated
+  /// linearly in speed, reaches zero [m/s]; NaN with fewer than two
   /// such points or no positive slope. A supercritical Hopf branch has A^2 proportional to
   /// V - V_Hopf near its onset; the two cycles nearest the fold are the ones in that range (a
   /// third may already be limited by another nonlinearity, e.g. the flange).

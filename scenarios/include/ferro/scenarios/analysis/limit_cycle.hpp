@@ -105,25 +105,40 @@ struct SettleOptions {
   double zero_amplitude = 1e-5;   ///< below: decayed [observed unit]
   double max_amplitude = 0.05;    ///< above: diverged [observed unit]
   AmplitudeOptions amplitude;
-  std::vector<std::size_t> observed;  ///< state indices measured (e.g. each wheelset's y)
-  std::size_t reference = 0;          ///< which of `observed` decides the outcome
+  /// State indices measured (each wheelset's y): every one of them takes part in the decision.
+  std::vector<std::size_t> observed;
 };
 
 struct SettleResult {
+  /// Outcome of the system: the most sustained of its observed states (diverged or growing,
+  /// then steady or approaching, then decaying; decayed when every one has decayed).
   Oscillation outcome = Oscillation::kDecayed;
+  /// Which of `observed` holds the outcome: the state that left max_amplitude (diverged), the
+  /// largest oscillation (steady, decayed), or the state whose trend or fitted amplitude
+  /// equation gave the outcome (runs ended by the time limit).
+  std::size_t holder = 0;
   std::vector<double> amplitude;  ///< per observed state (0 when decayed; when approaching, the
-                                  ///< predicted cycle, each state scaled as the reference)
-  AmplitudeEquation fit;          ///< of the reference state, for runs ended by the time limit
-  double period = 0.0;            ///< of the reference state [s] (NaN when not found)
+                                  ///< holder's predicted cycle, every state scaled alike)
+  std::vector<AmplitudeEquation> fits;  ///< per observed state, for runs ended by the time limit
+  AmplitudeEquation fit;          ///< the holder's (fits[holder]); invalid when none was fitted
+  double period = 0.0;            ///< of the holder [s] (NaN when not found)
   double time = 0.0;              ///< simulated [s]
   long rhs_evaluations = 0;
   std::vector<double> final_state;
   std::string message;            ///< solver failure cause, if any
 };
 
-/// Integrates `system` from x0 in segments until the reference amplitude settles, decays or
-/// diverges (or max_time). Throws std::invalid_argument for bad options, and
-/// std::runtime_error when the solver fails before the reference state has swung across zero
+/// Integrates `system` from x0 in segments until its oscillation settles, decays or diverges
+/// (or max_time), deciding on every observed state: diverged as soon as any observed state
+/// leaves max_amplitude; decayed when every observed amplitude is below zero_amplitude; steady
+/// when the largest oscillation (the holder) has converged within the segment and agrees with
+/// its own amplitude of the segment before, and every other observed state has converged too
+/// or is below 1 % of the holder's amplitude (a dying transient); at the time limit, each
+/// observed state not negligible beside the largest (1 %: a motion the others force on it) is
+/// classified by its fitted amplitude equation (or trend) and the system takes the most
+/// sustained of them. So a vehicle whose rear bogie keeps hunting while the front one decays
+/// is sustained, held by a rear wheelset. Throws std::invalid_argument for bad options, and
+/// std::runtime_error when the solver fails before any observed state has swung across zero
 /// and back once: a start that cannot be integrated (e.g. a wheel put into the rail by the
 /// disturbance) is no oscillation.
 [[nodiscard]] SettleResult run_until_settled(const vehicle::OdeSystem& system,

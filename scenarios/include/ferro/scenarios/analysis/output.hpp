@@ -11,20 +11,21 @@
 
 namespace ferro::scenarios::analysis {
 
-/// kind "ramp": /ramp/{time, speed, signal, envelope}; attributes decay_speed, threshold.
+/// kind "ramp": /ramp/{time, speed, signal (samples x wheelsets), wheelset_envelope (samples x
+/// wheelsets), envelope (the vehicle's)}; attributes wheelsets, holder, decay_speed, threshold.
 void write_ramp(const Scene& scene, const RampResult& r, const RampOptions& o,
-                const std::string& signal_name, const std::string& path);
+                const std::vector<std::string>& names, const std::string& path);
 
-/// kind "bifurcation": /branch/{speed, outcome, bisection, period, amplitude (points x
-/// wheelsets)}; attributes lowest_sustained, bracket_low, bracket_high, hopf_speed (NaN when
-/// not computed), k11, k22.
+/// kind "bifurcation": /branch/{speed, outcome, holder, bisection, period, amplitude (points x
+/// wheelsets)}; attributes lowest_sustained, holder, bracket_low, bracket_high, hopf_speed (NaN
+/// when not computed), k11, k22.
 void write_branch(const Scene& scene, const BranchResult& b,
                   const std::vector<std::string>& wheelset_names, std::optional<double> hopf_speed,
                   const std::string& path);
 
 /// One row of a reduction-factor study.
 struct KijRow {
-  Reduction k;
+  contact::ReductionFactors k;
   BranchResult branch;
   std::optional<double> hopf_speed;  ///< [m/s]
 };

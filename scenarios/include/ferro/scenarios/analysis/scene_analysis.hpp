@@ -7,26 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "ferro/contact/kij/reduction_factors.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/vehicle/stability.hpp"
 
 namespace ferro::scenarios::analysis {
 
-/// Kalker reduction factors on the creep coefficients C11 (longitudinal), C22 (lateral), C23
-/// (lateral-spin) and C33 (spin) [-]; K23 and K33 follow K22 when not given (NaN).
-struct Reduction {
-  double k11 = 1.0;
-  double k22 = 1.0;
-  double k23 = NAN;
-  double k33 = NAN;
-  /// The same factor on every coefficient.
-  static Reduction uniform(double k) { return {k, k, k, k}; }
-};
-
-/// The scene with its reduction factors replaced: the linear wheelset's contact.k11/k22 and the
-/// vehicle's wheel_rail.reduction (K11, K22, K23, K33). Throws std::invalid_argument when a
-/// factor is not in (0, 1].
-[[nodiscard]] Scene with_reduction(Scene scene, const Reduction& k);
+/// The scene with its reduction factors replaced: the linear wheelset's contact.k11/k22 (its
+/// linear theory has no spin) and the vehicle's wheel_rail.reduction (K11, K22, K23, K33; the
+/// studies set K11 and K22 with ReductionFactors::following_k22()). Throws
+/// std::invalid_argument when a factor is not in (0, 1].
+[[nodiscard]] Scene with_reduction(Scene scene, const contact::ReductionFactors& k);
 
 /// build_system(scene, V) at constant speed (the scene's acceleration set to 0) as a factory
 /// over speed; the track and contact geometry are built once, here.
@@ -39,6 +30,20 @@ struct LateralStates {
   std::vector<std::string> name;   ///< state names
 };
 [[nodiscard]] LateralStates lateral_states(const vehicle::OdeSystem& system);
+
+/// Shape input of the modes of a scene's system (vehicle::ModeShapeInput): each velocity state's
+/// generalised mass from the scene's model description (a vehicle's bodies: mass for x, y, z,
+/// the inertia about the axis for roll, pitch, yaw, the wheelset's spin inertia for its spin
+/// perturbation; the suspended wheelset's mass and yaw inertia; on a flexible track the
+/// co-running track's rail and sleeper masses and roll inertias, track::co_running_equivalent);
+/// states the description does not weigh take vehicle::mode_shape_input()'s fallback.
+[[nodiscard]] vehicle::ModeShapeInput mode_shapes(const Scene& scene,
+                                                  const vehicle::OdeSystem& system);
+
+/// The family with the shape input of each speed's system attached: its modes come classified
+/// and vehicle::critical_speed looks at the hunting modes.
+[[nodiscard]] vehicle::LinearisationAtSpeed with_mode_shapes(const Scene& scene,
+                                                             vehicle::LinearisationAtSpeed family);
 
 /// The scene's initial state, plus `lateral_offset` [m] added to the leading wheelset's lateral
 /// displacement.

@@ -53,7 +53,9 @@ struct RampStudy {
   Scene scene;  ///< with the reduction factors applied
   RampOptions options;
   RampResult result;
-  std::string observed;  ///< name of the state whose envelope is followed
+  /// Names of the observed states (each wheelset's lateral displacement), in the order of
+  /// result.signals.
+  std::vector<std::string> observed;
 };
 [[nodiscard]] RampStudy run_ramp(const Scene& scene, const RampRequest& request,
                                  Spelling spelling = Spelling::key);
@@ -72,16 +74,15 @@ struct BranchRequest {
 /// The branch of `base` with reduction factors `k`; `names` receives the wheelset lateral
 /// states (the amplitude columns); `on_point` is called after each run.
 [[nodiscard]] KijRow run_bifurcation(const Scene& base, const BranchRequest& request,
-                                     const Reduction& k, std::vector<std::string>* names,
+                                     const contact::ReductionFactors& k, std::vector<std::string>* names,
                                      const std::function<void(const BranchPoint&)>& on_point = {},
                                      Spelling spelling = Spelling::key);
 
 /// The reduction factors of a study: one per value of `k`, set on both (K11 = K22 = K23 = K33),
-/// on k11 only or on k22 only (`coefficient`), the other from `base`.
-[[nodiscard]] std::vector<Reduction> study_reductions(const std::vector<double>& k,
-                                                      const std::string& coefficient,
-                                                      const Reduction& base,
-                                                      Spelling spelling = Spelling::key);
+/// on k11 only or on k22 only (K23 and K33 following K22) (`coefficient`), the other from `base`.
+[[nodiscard]] std::vector<contact::ReductionFactors> study_reductions(
+    const std::vector<double>& k, const std::string& coefficient,
+    const contact::ReductionFactors& base, Spelling spelling = Spelling::key);
 
 /// The fold against reduction factors, one branch per factor, over `jobs` threads.
 struct KijStudyRequest {

@@ -23,15 +23,16 @@ namespace ferro::scenarios::analysis {
 
 struct SweepPoint {
   double speed = 0.0;  ///< [m/s]
-  Reduction k;
+  contact::ReductionFactors k;
 };
 
 struct SweepPointResult {
   std::size_t index = 0;
   SweepPoint point;
-  Oscillation outcome = Oscillation::kDecayed;
+  Oscillation outcome = Oscillation::kDecayed;  ///< of the vehicle (every wheelset decides)
+  std::size_t holder = 0;         ///< wheelset holding the outcome (index into amplitude)
   std::vector<double> amplitude;  ///< per wheelset lateral state [m]
-  double period = NAN;            ///< [s]
+  double period = NAN;            ///< of the holding wheelset [s]
   double time = 0.0;              ///< simulated [s]
   long rhs_evaluations = 0;
   double cpu_seconds = 0.0;       ///< thread CPU time of the point [s]
@@ -84,7 +85,8 @@ void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, i
     const std::function<SweepPointResult(std::size_t)>& run, const PoolOptions& options);
 
 /// Writes a sweep to a new HDF5 file (kind "sweep"): /sweep/speed, k11, k22, outcome (codes:
-/// attribute `outcome_codes`), period, amplitude (points x wheelsets), with the scene text.
+/// attribute `outcome_codes`), holder, period, amplitude (points x wheelsets), with the scene
+/// text.
 void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_names,
                  const std::vector<SweepPointResult>& results, const std::string& path);
 
