@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Plots of the analysis files of ferrodyn (docs/ANALYSES.md), by their 'kind' attribute:
-derailment_assessment, ramp, bifurcation, kij_study, sweep. Called through ferroplot.py
+assessment, ramp, bifurcation, kij_study, sweep. Called through ferroplot.py
 (`ferroplot.py auto FILE.h5 --out DIR`), which `ferrodyn` runs after each analysis verb.
 """
 import sys
@@ -11,7 +11,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-KINDS = ("derailment_assessment", "ramp", "bifurcation", "kij_study", "sweep")
+KINDS = ("assessment", "ramp", "bifurcation", "kij_study", "sweep")
 OUTCOMES = ["decayed", "steady", "diverged", "growing", "decaying", "approaching"]
 
 
@@ -27,43 +27,43 @@ def _num(obj, name):
         return float("nan")
 
 
-def derailment(f, save):
-    g = f["derailment"]
-    fig, ax = plt.subplots(figsize=(9, 4))
+def assessment(f, save):
+    """One figure per assessed quantity along the track: every wheel / axle / body, its limit
+    (dashed, +- when the quantity is signed), the track sections (dotted)."""
+    g = f["assessment"]
+    sec = g["sections"]
+    bounds = sorted(set(list(sec["start"][:]) + list(sec["end"][:])))
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    wheels = [n for n in g if "y_over_q_mean" in g[n]]
-    for i, n in enumerate(wheels):
-        w = g[n]
-        c = colors[i % len(colors)]
-        ax.plot(w["position"][:], w["y_over_q_mean"][:], color=c, lw=1.0, label=f"{n} (max {_num(w, 'max_y_over_q'):.3f})")
-        nadal = _num(w, "nadal_limit")
-        if nadal == nadal:
-            ax.axhline(nadal, color=c, ls="--", lw=0.8)
-            ax.annotate(f"Nadal {nadal:.2f} ({np.degrees(_num(w, 'flange_angle')):.1f} deg)", (0.01, nadal),
-                        xycoords=("axes fraction", "data"), fontsize=7, color=c, va="bottom")
-    ax.axhline(0.8, color="grey", ls=":", lw=0.8, label="0.8 dynamic limit")
-    ax.set_xlabel("position along the track [m]")
-    ax.set_ylabel("Y/Q, 2 m sliding mean [-]")
-    ax.set_title(f"derailment: {_attr(f, 'source')} (mu = {_num(f, 'mu'):g})", fontsize=9)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7, ncol=2)
-    save(fig, "derailment_y_over_q")
-    axles = [n for n in g if "sum_y_mean" in g[n]]
-    if axles:
-        fig, ax = plt.subplots(figsize=(9, 3.5))
-        for i, n in enumerate(axles):
-            a = g[n]
+    by_quantity = {}
+    for k in sorted(g["signals"]):
+        s = g["signals"][k]
+        by_quantity.setdefault(_attr(s, "quantity"), []).append(s)
+    signed = {"sum Y 2 m", "Y/Q 2 m", "car body lateral acc.", "car body vertical acc."}
+    for quantity, items in by_quantity.items():
+        fig, ax = plt.subplots(figsize=(9, 4))
+        unit = _attr(items[0], "unit")
+        scale, shown_unit = (1e-3, "kN") if unit == "N" else (1.0, unit)
+        for i, s in enumerate(items):
             c = colors[i % len(colors)]
-            ax.plot(a["sum_y_position"][:], a["sum_y_mean"][:] / 1e3, color=c, lw=1.0, label=n)
-            lim = _num(a, "prudhomme_limit") / 1e3
-            ax.axhline(lim, color=c, ls="--", lw=0.8)
-            ax.axhline(-lim, color=c, ls="--", lw=0.8)
-        ax.set_xlabel("position along the track [m]")
-        ax.set_ylabel("sum Y per axle, 2 m mean [kN]")
-        ax.set_title("Prud'homme limit 0.85 (10 kN + P/3) dashed", fontsize=9)
+            ax.plot(s["position"][:], s["value"][:] * scale, color=c, lw=0.8, label=_attr(s, "item"))
+            lim = _num(s, "limit")
+            if lim == lim:
+                ax.axhline(lim * scale, color=c, ls="--", lw=0.8)
+                if quantity in signed:
+                    ax.axhline(-lim * scale, color=c, ls="--", lw=0.8)
+        lo, hi = ax.get_xlim()
+        for b in bounds:
+            if lo < b < hi:
+                ax.axvline(b, color="grey", ls=":", lw=0.7)
+        ax.set_xlim(lo, hi)
+        ax.set_xlabel("position of the wheel / axle / body along the track [m]")
+        ax.set_ylabel(f"{quantity} [{shown_unit}]")
+        ax.set_title(f"{quantity}: {_attr(f, 'source')} ({_attr(f, 'vehicle')}, {_attr(f, 'category')}); "
+                     "limits dashed, sections dotted", fontsize=8)
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7)
-        save(fig, "derailment_sum_y")
+        ax.legend(fontsize=6, ncol=3)
+        stem = "assess_" + "".join(ch if ch.isalnum() else "_" for ch in quantity).strip("_").lower()
+        save(fig, stem)
 
 
 def ramp(f, save):
@@ -169,7 +169,7 @@ def sweep(f, save):
 
 
 def plot(f, kind, save):
-    {"derailment_assessment": derailment, "ramp": ramp, "bifurcation": bifurcation,
+    {"assessment": assessment, "ramp": ramp, "bifurcation": bifurcation,
      "kij_study": kij_study, "sweep": sweep}[kind](f, save)
     return 0
 

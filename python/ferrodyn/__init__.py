@@ -6,7 +6,7 @@ The C++ library from Python, results as NumPy arrays; SI units throughout (m, s,
                         bad input raises SceneError with file, line and key
     run(scene, ...)     time simulation -> RunResult: every signal as an array, units, metadata, status
     analysis            eigenvalues against speed, critical speed (ramp, bifurcation, eigen),
-                        K_ij study, sweep (threads), derailment assessment
+                        K_ij study, sweep (threads), assessment (EN 14363 / UIC 518 / EN 12299)
     contact             tangential and normal models on arrays of cases, profiles, contact geometry
     read(path)          any ferrodyn HDF5 file as arrays (and a pandas DataFrame when pandas is there)
 

@@ -1,5 +1,5 @@
 // Analyses from Python: eigenvalues against speed, the critical-speed studies, the sweep and
-// the derailment assessment, each returning arrays and dicts (units in the keys' docs).
+// the assessment of a run, each returning arrays and dicts (units in the keys' docs).
 #include <fmt/format.h>
 
 #include <complex>
@@ -235,48 +235,76 @@ py::dict sweep(const SceneSource& source, const py::object& output, const py::kw
   return d;
 }
 
-py::dict derailment(const std::filesystem::path& run_path, const py::kwargs& kw) {
+py::dict assess(const std::filesystem::path& run_path, const py::kwargs& kw) {
   const std::string run_file = run_path.string();
-  an::DerailmentRequest request;
+  an::AssessmentRequest request;
   set_parameters(an::parameters(request), kw);
-  const an::DerailmentOptions o = an::derailment_options(request, scenarios::Spelling::key);
-  const auto r = released(run_file, [&] { return an::assess_derailment_file(run_file, o); });
+  const an::AssessmentOptions o = an::assessment_options(request, scenarios::Spelling::key);
+  const auto r = released(run_file, [&] { return an::assess_run(run_file, o); });
   py::dict d;
-  py::list wheels, axles;
-  for (const auto& w : r.wheels) {
-    py::dict x;
-    x["name"] = w.name;
-    x["max_y_over_q"] = w.max_y_over_q;
-    x["max_y_over_q_position"] = w.max_y_over_q_position;
-    x["max_y_over_q_raw"] = w.max_y_over_q_raw;
-    x["flange_angle"] = w.flange_angle;
-    x["nadal"] = w.nadal;
-    x["q0"] = w.q0;
-    x["max_unloading"] = w.max_unloading;
-    x["max_unloading_position"] = w.max_unloading_position;
-    x["pass_nadal"] = w.pass_nadal;
-    x["pass_unloading"] = w.pass_unloading;
-    x["position"] = arr(w.y_over_q_mean.position);
-    x["y_over_q_mean"] = arr(w.y_over_q_mean.mean);
-    wheels.append(x);
-  }
-  for (const auto& a : r.axles) {
-    py::dict x;
-    x["name"] = a.name;
-    x["axle_load"] = a.axle_load;
-    x["limit"] = a.limit;
-    x["max_sum_y"] = a.max_sum_y;
-    x["max_sum_y_position"] = a.max_sum_y_position;
-    x["pass"] = a.pass;
-    x["position"] = arr(a.sum_y_mean.position);
-    x["sum_y_mean"] = arr(a.sum_y_mean.mean);
-    axles.append(x);
-  }
-  d["wheels"] = wheels;
-  d["axles"] = axles;
+  d["vehicle"] = r.vehicle;
+  d["category"] = r.category;
+  d["alpha"] = r.alpha;
   d["mu"] = r.mu;
+  d["sample_rate"] = r.sample_rate;
+  d["f0"] = r.f0;
+  d["f0_from_spectrum"] = r.f0_from_spectrum;
+  d["twist_test"] = r.twist_test;
+  d["accelerations_derived"] = r.accelerations_derived;
+  d["forces_filtered_in_run"] = r.forces_filtered_in_run;
+  py::dict sections;
+  sections["name"] = [&] {
+    std::vector<std::string> v;
+    for (const auto& x : r.sections) v.push_back(x.name);
+    return v;
+  }();
+  sections["start"] = column(r.sections, [](const auto& x) { return x.start; });
+  sections["end"] = column(r.sections, [](const auto& x) { return x.end; });
+  sections["radius"] = column(r.sections, [](const auto& x) { return x.radius; });
+  d["sections"] = sections;
+  // The rows as columns, in the order of the HDF5 file's table.
+  py::dict rows;
+  const auto text = [&](std::string an::AssessmentRow::*field) {
+    std::vector<std::string> v;
+    for (const auto& x : r.rows) v.push_back(x.*field);
+    return v;
+  };
+  rows["group"] = text(&an::AssessmentRow::group);
+  rows["quantity"] = text(&an::AssessmentRow::quantity);
+  rows["item"] = text(&an::AssessmentRow::item);
+  rows["section"] = text(&an::AssessmentRow::section);
+  rows["unit"] = text(&an::AssessmentRow::unit);
+  rows["value"] = column(r.rows, [](const auto& x) { return x.value; });
+  rows["limit"] = column(r.rows, [](const auto& x) { return x.limit; });
+  rows["verdict"] = [&] {
+    std::vector<std::string> v;
+    for (const auto& x : r.rows) v.emplace_back(an::to_string(x.verdict));
+    return v;
+  }();
+  rows["max_abs"] = column(r.rows, [](const auto& x) { return x.max_abs; });
+  rows["position"] = column(r.rows, [](const auto& x) { return x.position; });
+  rows["p_low"] = column(r.rows, [](const auto& x) { return x.stats.p_low; });
+  rows["p_median"] = column(r.rows, [](const auto& x) { return x.stats.p_median; });
+  rows["p_high"] = column(r.rows, [](const auto& x) { return x.stats.p_high; });
+  rows["rms"] = column(r.rows, [](const auto& x) { return x.stats.rms; });
+  rows["samples"] = column(r.rows, [](const auto& x) { return static_cast<double>(x.stats.samples); });
+  d["rows"] = rows;
+  py::list signals;
+  for (const auto& x : r.signals) {
+    py::dict sd;
+    sd["quantity"] = x.quantity;
+    sd["item"] = x.item;
+    sd["unit"] = x.unit;
+    sd["description"] = x.description;
+    sd["position"] = arr(x.position);
+    sd["value"] = arr(x.value);
+    sd["limit"] = x.limit;
+    signals.append(sd);
+  }
+  d["signals"] = signals;
+  d["notes"] = r.notes;
   d["pass"] = r.pass;
-  d["summary"] = an::derailment_report(run_file, o, r);
+  d["summary"] = an::assessment_report(run_file, r);
   return d;
 }
 
@@ -358,14 +386,20 @@ void bind_analysis(py::module_& m) {
       parameter_doc(an::parameters(sweep_request));
   m.def("sweep", &sweep, py::arg("scene"), py::arg("output") = py::none(), sweep_doc.c_str());
 
-  an::DerailmentRequest derail_request;
-  static const std::string derail_doc =
-      "derailment(run_file, **request) -> dict\n\nDerailment assessment of a run's HDF5 file "
-      "(`ferrodyn derailment`): per wheel the peak of the 2 m sliding mean of Y/Q [-]\n"
-      "against Nadal's limit and the peak unloading dQ/Q0 [-]; per axle the peak sum Y [N]\n"
-      "against Prud'homme's limit [N]; pass. Request:\n" +
-      parameter_doc(an::parameters(derail_request));
-  m.def("derailment", &derailment, py::arg("run_file"), derail_doc.c_str());
+  an::AssessmentRequest assess_request;
+  static const std::string assess_doc =
+      "assess(run_file, **request) -> dict\n\nAssessment of a run's HDF5 file as EN 14363 / "
+      "UIC 518 / EN 12299 define it (`ferrodyn assess`, the same numbers):\n"
+      "running safety, track loading, stability, ride (and the twist test). Keys: vehicle,\n"
+      "category, alpha [-], mu [-], sample_rate [Hz], f0 [Hz] (NaN: stability not assessed),\n"
+      "f0_from_spectrum, twist_test, accelerations_derived, forces_filtered_in_run, sections\n"
+      "(name, start [m], end [m], radius [m]), rows (columns of the result table: group,\n"
+      "quantity, item, section, unit, value, limit, verdict, max_abs, position [m], p_low,\n"
+      "p_median, p_high, rms, samples; values in the row's SI unit), signals (the processed\n"
+      "signals along the track: quantity, item, unit, description, position [m], value, limit),\n"
+      "notes, pass, summary. Request:\n" +
+      parameter_doc(an::parameters(assess_request));
+  m.def("assess", &assess, py::arg("run_file"), assess_doc.c_str());
 }
 
 }  // namespace ferro::python

@@ -1,4 +1,4 @@
-// Verbs of the analyses: derailment assessment of a run, critical speed (ramp, bifurcation,
+// Verbs of the analyses: assessment of a run (EN 14363 / UIC 518 / EN 12299), critical speed (ramp, bifurcation,
 // eigen), reduction-factor studies and parallel sweeps (threads and, when built with it, MPI).
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/analysis/critical_speed.hpp"
-#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
 #include "ferro/scenarios/analysis/report.hpp"
 #include "ferro/scenarios/analysis/studies.hpp"
@@ -53,16 +53,19 @@ template <class Request>
 struct Analysis : VerbArgs {
   Request request;
 };
-using DerailArgs = Analysis<an::DerailmentRequest>;
+// ---------------------------------------------------------------- assess
+struct AssessArgs : Analysis<an::AssessmentRequest> {
+  bool all_rows = false;
+};
 
-int do_derailment(const DerailArgs& a) {
+int do_assess(const AssessArgs& a) {
   if (!fs::exists(a.input))
-    throw std::invalid_argument(fmt::format("derailment: no such file '{}'", a.input));
-  const an::DerailmentOptions o = an::derailment_options(a.request, kOption);
-  const auto r = an::assess_derailment_file(a.input, o);
-  fmt::print("{}", an::derailment_report(a.input, o, r));
-  const std::string out = a.output_or(a.input, "_derailment.h5");
-  an::write_derailment_report(r, a.input, out);
+    throw std::invalid_argument(fmt::format("assess: no such file '{}'", a.input));
+  const an::AssessmentOptions o = an::assessment_options(a.request, kOption);
+  const auto r = an::assess_run(a.input, o);
+  fmt::print("{}", an::assessment_report(a.input, r, a.all_rows));
+  const std::string out = a.output_or(a.input, "_assessment.h5");
+  an::write_assessment(r, a.input, out);
   a.finish(out);
   return kExitOk;  // the verdict is a result, not a failure of the assessment
 }
@@ -246,12 +249,16 @@ void print_eigen_report(const Scene& scene, const scenarios::EigenReport& r,
 
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   const char* scene = "Scene YAML file";
-  auto d = std::make_shared<DerailArgs>();
-  auto* der = app.add_subcommand(
-      "derailment", "Derailment assessment of a run: Y/Q (2 m mean), Nadal, sum Y, dQ/Q0, plot");
-  add_common(der, *d, "run", "HDF5 output of `ferrodyn run`", "<run>_derailment.h5");
-  add_parameters(der, an::parameters(d->request));
-  on_parsed(der, handler, d, do_derailment);
+  auto d = std::make_shared<AssessArgs>();
+  auto* as = app.add_subcommand(
+      "assess",
+      "Assessment of a run as EN 14363 / UIC 518 / EN 12299 define it: running safety, track "
+      "loading, stability, ride; table, HDF5 and plots along the track");
+  add_common(as, *d, "run", "HDF5 output of `ferrodyn run` (vehicle scene)",
+             "<run>_assessment.h5");
+  add_parameters(as, an::parameters(d->request));
+  as->add_flag("--all", d->all_rows, "Print every section's row (default: the worst per item)");
+  on_parsed(as, handler, d, do_assess);
 
   auto* cs = app.add_subcommand("critical-speed", "Critical speed: ramp, bifurcation, eigen");
   cs->require_subcommand(1);

@@ -80,7 +80,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
 void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler);   // fe-kij
-/// derailment, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
+/// assess, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
 void add_analysis_commands(CLI::App& app, VerbHandler& handler);
 
 }  // namespace ferro::cli

@@ -53,8 +53,11 @@ std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double spee
   return build_system(scene, speed, build_resources(scene));
 }
 
-std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed,
-                                                 const ModelResources& resources) {
+namespace {
+
+std::unique_ptr<vehicle::OdeSystem> make_system(const Scene& scene, double speed,
+                                                const ModelResources& resources,
+                                                bool run_outputs) {
   if (scene.model.type == "suspended_wheelset") {
     return std::make_unique<vehicle::SuspendedWheelset>(
         scene.model.wheelset, vehicle::creep_coefficients(scene.contact.creep), speed);
@@ -69,10 +72,28 @@ std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double spee
     in.speed.initial = speed;
     in.speed.acceleration = scene.simulation.acceleration;
     in.start_position = scene.simulation.start_position;
+    if (run_outputs) {
+      in.outputs.sensors = scene.output.sensors;
+      in.outputs.anti_alias_frequency = scene.output.anti_alias_frequency;
+      in.outputs.anti_alias_order = scene.output.anti_alias_order;
+      in.outputs.contact_point_details = scene.output.contact_points;
+    }
     return std::make_unique<vehicle::VehicleModel>(std::move(in));
   }
   throw std::invalid_argument("model.type: unknown '" + scene.model.type +
                               "'; allowed: suspended_wheelset, vehicle");
+}
+
+}  // namespace
+
+std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed,
+                                                 const ModelResources& resources) {
+  return make_system(scene, speed, resources, false);
+}
+
+std::unique_ptr<vehicle::OdeSystem> build_run_system(const Scene& scene, double speed,
+                                                     const ModelResources& resources) {
+  return make_system(scene, speed, resources, true);
 }
 
 std::vector<double> equilibrium_state(const Scene& scene, const vehicle::OdeSystem& system) {

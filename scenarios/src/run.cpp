@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "ferro/io/text_writer.hpp"
+#include "ferro/scenarios/analysis/run_context.hpp"
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/h5_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
@@ -49,6 +50,7 @@ void write_metadata(H5File& file, const Scene& scene, const std::string& kind) {
     file.set_attribute("/", "contact_geometry", w.geometry);
     file.set_attribute("/", "tangential_model", w.tangential_model);
     file.set_attribute("/", "acceleration", scene.simulation.acceleration);
+    analysis::write_run_context(file, analysis::run_context(scene));
   }
   file.set_attribute("/", "units",
                      std::string("SI: m, s, kg, N, rad; each dataset has a 'unit' attribute"));
@@ -137,7 +139,7 @@ std::string csv_path_for(const std::string& output) {
 }  // namespace
 
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
-  const auto system = build_system(scene, scene.simulation.speed, build_resources(scene));
+  const auto system = build_run_system(scene, scene.simulation.speed, build_resources(scene));
   const auto x0 = initial_state(scene, *system);
   const auto states = system->state_info();
   const auto derived = system->signal_info();

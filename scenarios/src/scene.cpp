@@ -12,6 +12,7 @@
 #include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/run.hpp"
+#include "ferro/scenarios/sensors.hpp"
 #include "ferro/scenarios/vehicle_file.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 #include "located.hpp"
@@ -130,12 +131,12 @@ void read_vehicle_model(MapReader& m, Scene& scene, Parts& parts) {
     model.vehicle_file = file.string();
     parts.files.push_back(load_yaml_file(model.vehicle_file));
     apply_overrides(parts.files.back().root, parts, m.key_path("vehicle"), model.vehicle_file);
-    model.vehicle = read_vehicle_file(parts.files.back());
+    model.vehicle = read_vehicle_file(parts.files.back(), &model.category);
     scene.text += fmt::format("\n# ---- included: {} ----\n{}", model.vehicle_file,
                               parts.files.back().text);
   } else {
     MapReader v = m.map("vehicle");
-    model.vehicle = read_vehicle(v);
+    model.vehicle = read_vehicle(v, &model.category);
   }
   auto& sel = model.selection;
   sel.scope = m.string_or("scope", sel.scope, {"vehicle", "bogie", "wheelset"});
@@ -166,6 +167,69 @@ void read_vehicle_model(MapReader& m, Scene& scene, Parts& parts) {
     }
   }
   m.finish();
+}
+
+// The output block's sensors and anti-alias filter of a vehicle scene.
+void read_sensors(MapReader& o, Scene& scene) {
+  auto& v = scene.output;
+  v.anti_alias_frequency = o.number_or("anti_alias_frequency", v.anti_alias_frequency);
+  if (!(v.anti_alias_frequency >= 0.0))
+    o.fail("anti_alias_frequency", "must be >= 0 Hz (0: no anti-alias filters)");
+  v.anti_alias_order = static_cast<int>(o.integer_or("anti_alias_order", v.anti_alias_order));
+  v.contact_points = o.boolean_or("contact_points", v.contact_points);
+  if (v.anti_alias_order < 2 || v.anti_alias_order > 8 || v.anti_alias_order % 2 != 0)
+    o.fail("anti_alias_order", fmt::format("allowed 2, 4, 6, 8, got {}", v.anti_alias_order));
+
+  v.floor_height = o.number_or("floor_height", v.floor_height, true);
+  if (!std::isnan(v.floor_height) && !(v.floor_height > 0.0))
+    o.fail("floor_height", "must be > 0 m above the top of rail");
+  const auto& vehicle = scene.model.vehicle;
+  const YAML::Node n = o.node("sensors");
+  if (!n.IsDefined() || n.IsNull()) {
+    v.sensors = default_sensors(vehicle, scene.model.selection, v.floor_height);
+    return;
+  }
+  if (!n.IsSequence())
+    detail::fail_at(o, n, "sensors",
+                    "expected a list of standard positions (e.g. floor_front) or {name, body, "
+                    "point: [x, y, z]} mappings");
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::string key = fmt::format("sensors[{}]", i);
+    if (n[i].IsScalar()) {
+      try {
+        const auto s = preset_sensors(vehicle, n[i].Scalar(), v.floor_height);
+        v.sensors.insert(v.sensors.end(), s.begin(), s.end());
+      } catch (const std::invalid_argument& e) {
+        detail::fail_at(o, n[i], key, e.what());
+      }
+      continue;
+    }
+    if (!n[i].IsMap())
+      detail::fail_at(o, n[i], key, "expected a standard position name or {name, body, point}");
+    MapReader s(n[i], o.file(), o.key_path(key));
+    vehicle::SensorSpec spec;
+    spec.name = s.string("name");
+    spec.body = s.string("body");
+    if (body_index(vehicle, spec.body) < 0) {
+      std::vector<std::string> names;
+      for (const auto& b : vehicle.bodies) names.push_back(b.name);
+      s.fail("body", fmt::format("no body '{}'; bodies: {}", spec.body, fmt::join(names, ", ")));
+    }
+    spec.point = detail::vector3(s, "point");
+    const auto axes = s.string_list_or("filtered_axes", {"x", "y", "z"});
+    spec.filtered_axes.clear();
+    for (const auto& a : axes) {
+      if (a != "x" && a != "y" && a != "z")
+        s.fail("filtered_axes", fmt::format("'{}': allowed x, y, z", a));
+      spec.filtered_axes += a;
+    }
+    s.finish();
+    v.sensors.push_back(spec);
+  }
+  for (std::size_t i = 0; i < v.sensors.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (v.sensors[i].name == v.sensors[j].name)
+        detail::fail_at(o, n, "sensors", fmt::format("sensor '{}' appears twice", v.sensors[i].name));
 }
 
 // The vehicle must stay on the designed track for the whole run.
@@ -379,6 +443,13 @@ void read_output_part(MapReader& top, Scene& scene, Parts& included) {
     o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));
   v.csv = o.string_list_or("csv", {});
   v.plots = o.string_list_or("plots", {});
+  if (vehicle_model) {
+    read_sensors(o, scene);
+  } else {
+    for (const char* k : {"sensors", "anti_alias_frequency", "anti_alias_order", "floor_height",
+                          "contact_points"})
+      if (o.has(k)) o.fail(k, "applies to vehicle scenes (model.type vehicle) only");
+  }
   o.finish();
   const auto names = vehicle_model ? std::vector<std::string>{} : signal_names(scene.model);
   auto check_names = [&](const std::vector<std::string>& list, const char* key) {
@@ -411,6 +482,9 @@ void read_analysis(MapReader& top, Scene& scene) {
   if (scene.eigen.points < 2 || scene.eigen.points > 100000)
     e.fail("points", "must lie in 2..100000");
   e.finish();
+  MapReader as = a.map_or_empty("assessment");
+  scene.assessment.twist_test = as.boolean_or("twist_test", scene.assessment.twist_test);
+  as.finish();
   a.finish();
 }
 

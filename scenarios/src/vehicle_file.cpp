@@ -530,9 +530,16 @@ void read_secondary(MapReader& r, MapReader& g, VehicleConfig& v, const BodyBloc
 
 }  // namespace
 
-VehicleConfig read_vehicle(MapReader& r) {
+const std::vector<std::string>& vehicle_categories() {
+  static const std::vector<std::string> k{"coach", "locomotive", "power_car", "wagon"};
+  return k;
+}
+
+VehicleConfig read_vehicle(MapReader& r, std::string* category) {
   VehicleConfig v;
   v.name = r.string_or("name", fs::path(r.file()).stem().string());
+  const std::string cat = r.string_or("category", "", vehicle_categories());
+  if (category != nullptr) *category = cat;
   r.allow("schema_version");
   r.allow("description");
   v.gravity = r.number_or("gravity", kStandardGravity);
@@ -586,18 +593,18 @@ VehicleConfig read_vehicle(MapReader& r) {
   return v;
 }
 
-VehicleConfig load_vehicle_file(const std::string& path) {
-  return read_vehicle_file(load_yaml_file(path));
+VehicleConfig load_vehicle_file(const std::string& path, std::string* category) {
+  return read_vehicle_file(load_yaml_file(path), category);
 }
 
-VehicleConfig read_vehicle_file(const YamlFile& file) {
+VehicleConfig read_vehicle_file(const YamlFile& file, std::string* category) {
   MapReader r(file.root, file.path, "");
   const long version = r.integer_or("schema_version", -1);
   if (version != kVehicleSchemaVersion) {
     r.fail("schema_version", fmt::format("required in a vehicle file; supported: {}, got {}",
                                          kVehicleSchemaVersion, version));
   }
-  return read_vehicle(r);
+  return read_vehicle(r, category);
 }
 
 }  // namespace ferro::scenarios

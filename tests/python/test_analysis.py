@@ -1,6 +1,6 @@
 """Analyses from Python against the program's output files for the same input: eigenvalues
-against speed, the critical-speed studies, the K_ij study, the sweep and the derailment
-assessment give the same numbers to the last bit."""
+against speed, the critical-speed studies, the K_ij study, the sweep and the assessment of a
+run give the same numbers to the last bit."""
 import numpy as np
 import pytest
 
@@ -86,19 +86,34 @@ def test_sweep_on_threads_matches_the_program(scenes, tmp_path):
     assert r["outcome"][-1] == "diverged"
 
 
-def test_derailment_matches_the_program(scenes, tmp_path):
+def test_assessment_matches_the_program(scenes, tmp_path):
     run = tmp_path / "curve.h5"
     cli("run", scenes / "manchester_curve_1200.yaml", "--t-end", "1", "-o", run, "--no-plots",
         "-q", cwd=SOURCE)
-    out = tmp_path / "derail.h5"
-    cli("derailment", run, "-o", out, "--no-plots")
-    r = ferrodyn.analysis.derailment(str(run))
+    out = tmp_path / "assessment.h5"
+    printed = cli("assess", run, "--section-length", "20", "--mu", "0.3", "-o", out,
+                  "--no-plots").stdout
+    r = ferrodyn.analysis.assess(str(run), section_length=20.0, mu=0.3)
     f = ferrodyn.read(out)
-    for w in r["wheels"]:
-        g = "/derailment/" + w["name"]
-        assert same_bits(w["y_over_q_mean"], f[g + "/y_over_q_mean"])
-        assert w["max_y_over_q"] == f.attributes[g]["max_y_over_q"]
+    assert len(r["rows"]["value"]) > 0
+    for column in ("value", "limit", "max_abs", "position", "p_low", "p_median", "p_high", "rms"):
+        assert same_bits(r["rows"][column], f["/assessment/rows/" + column]), column
+    verdict = np.array([{"pass": 1.0, "fail": 0.0}.get(v, np.nan) for v in r["rows"]["verdict"]])
+    assert same_bits(verdict, f["/assessment/rows/verdict"])
+    assert same_bits(r["sections"]["start"], f["/assessment/sections/start"])
+    for k, sig in enumerate(r["signals"]):
+        g = f"/assessment/signals/{k:03d}"
+        assert f.attributes[g]["quantity"] == sig["quantity"]
+        assert f.attributes[g]["item"] == sig["item"]
+        assert same_bits(sig["value"], f[g + "/value"])
+        assert same_bits(sig["position"], f[g + "/position"])
+    assert r["mu"] == f.attrs["mu"] == 0.3
     assert (f.attrs["pass"] == "yes") == r["pass"]
+    assert printed.startswith(r["summary"])
+    with pytest.raises(ValueError, match="category"):
+        ferrodyn.analysis.assess(str(run), category="tram")
+    with pytest.raises(ValueError, match="twist_test and no_twist_test"):
+        ferrodyn.analysis.assess(str(run), twist_test=True, no_twist_test=True)
 
 
 def test_bad_request_names_the_keyword(scenes):

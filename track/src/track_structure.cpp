@@ -33,9 +33,16 @@ void non_negative(double v, const std::string& where, const char* field, const c
 
 double series(double k1, double k2) { return k1 * k2 / (k1 + k2); }
 
-/// beta = (k_f / (4 E I))^(1/4) of a beam on a foundation of seat stiffness k_seat every a.
-double foundation_wavenumber(double k_seat, double spacing, double bending_stiffness) {
-  return std::pow(k_seat / spacing / (4.0 * bending_stiffness), 0.25);
+/// One direction's lumping over the rail's static deflection shape (derivation in the header):
+/// the seats' stiffness counts n = 2 / (a beta) times, masses and dampers n_c = 3 / (2 a beta)
+/// times, the rail 3 m' / (2 beta), with beta = (k_f / (4 E I))^(1/4) of a beam on a foundation
+/// of seat stiffness k_seat every a.
+struct Lumping {
+  double n, nc, rail_mass;
+};
+Lumping lump(double k_seat, double spacing, double bending_stiffness, double rail_mass_per_length) {
+  const double beta = std::pow(k_seat / spacing / (4.0 * bending_stiffness), 0.25);
+  return {2.0 / (spacing * beta), 1.5 / (spacing * beta), 1.5 * rail_mass_per_length / beta};
 }
 
 }  // namespace
@@ -106,11 +113,10 @@ CoRunningTrackParams co_running_equivalent(const BallastedTrackSpec& s, double r
   p.rail_base_depth = s.rail_centroid_height;
 
   // Vertical: pad and ballast of a seat in series on the rail's vertical bending.
-  const double beta_z = foundation_wavenumber(
-      series(s.pad_stiffness_vertical, s.ballast_stiffness_vertical), a,
-      s.rail_young_modulus * s.rail_inertia_vertical);
-  const double n_z = 2.0 / (a * beta_z), nc_z = 1.5 / (a * beta_z);
-  p.rail_mass_vertical = 1.5 * m_rail / beta_z;
+  const Lumping z = lump(series(s.pad_stiffness_vertical, s.ballast_stiffness_vertical), a,
+                         s.rail_young_modulus * s.rail_inertia_vertical, m_rail);
+  const double n_z = z.n, nc_z = z.nc;
+  p.rail_mass_vertical = z.rail_mass;
   p.pad_stiffness_vertical = n_z * s.pad_stiffness_vertical;
   p.pad_damping_vertical = nc_z * s.pad_damping_vertical;
   p.ballast_stiffness_vertical = n_z * s.ballast_stiffness_vertical;
@@ -122,11 +128,10 @@ CoRunningTrackParams co_running_equivalent(const BallastedTrackSpec& s, double r
 
   // Lateral: the pad in series with half the sleeper's lateral ballast stiffness, on the rail's
   // lateral bending.
-  const double beta_y = foundation_wavenumber(
-      series(s.pad_stiffness_lateral, 0.5 * s.ballast_stiffness_lateral), a,
-      s.rail_young_modulus * s.rail_inertia_lateral);
-  const double n_y = 2.0 / (a * beta_y), nc_y = 1.5 / (a * beta_y);
-  p.rail_mass_lateral = 1.5 * m_rail / beta_y;
+  const Lumping y = lump(series(s.pad_stiffness_lateral, 0.5 * s.ballast_stiffness_lateral), a,
+                         s.rail_young_modulus * s.rail_inertia_lateral, m_rail);
+  const double n_y = y.n, nc_y = y.nc;
+  p.rail_mass_lateral = y.rail_mass;
   p.pad_stiffness_lateral = n_y * s.pad_stiffness_lateral;
   p.pad_damping_lateral = nc_y * s.pad_damping_lateral;
   p.ballast_stiffness_lateral = n_y * s.ballast_stiffness_lateral;

@@ -6,6 +6,8 @@
 
 #include "dynamics.hpp"
 
+#include "output_signals.hpp"
+
 #include <cmath>
 
 namespace ferro::vehicle::detail {
@@ -122,6 +124,12 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
   const double s_ref = m.in.start_position + m.in.speed.distance(t);
 
   body_kinematics(m, ws, s_ref, speed, rate, x);
+  // The output filters read the wheel forces of every right-hand side.
+  WheelResult* wheels = outputs.wheels;
+  if (wheels == nullptr && m.output_filter.order > 0 && !xdot.empty()) {
+    ws.wheels.assign(2 * m.contact_bodies.size(), WheelResult{});
+    wheels = ws.wheels.data();
+  }
   for (const ElementData& e : m.elements) {
     if (e.a < 0) frame_at(m, s_ref + e.spec.point_a.x(), speed, rate, ws.track_frame, false);
     apply_element(m, e, ws.kin, ws.track_frame, x, xdot);
@@ -131,7 +139,7 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
     const auto i = static_cast<std::size_t>(m.contact_bodies[w]);
     apply_wheel_rail(m, m.bodies[i], ws.kin[i], x, ws.wheel_rail,
                      m.track ? ws.rail_loads[w].data() : nullptr,
-                     outputs.wheels != nullptr ? outputs.wheels + 2 * w : nullptr);
+                     wheels != nullptr ? wheels + 2 * w : nullptr);
   }
   if (outputs.car_body_ay != nullptr && m.car_body >= 0) {
     const BodyData& b = m.bodies[static_cast<std::size_t>(m.car_body)];
@@ -141,6 +149,7 @@ void evaluate(const ModelData& m, Workspace& ws, double t, std::span<const doubl
   }
   if (!xdot.empty()) equations_of_motion(m, ws, rate, xdot);
   if (m.track && (!xdot.empty() || outputs.pad_forces)) track_motion(m, ws, x, xdot);
+  if (!xdot.empty()) output_filter_rates(m, ws, wheels, x, xdot);
 }
 
 }  // namespace ferro::vehicle::detail

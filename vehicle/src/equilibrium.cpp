@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "dynamics.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle {
 namespace {
@@ -252,10 +253,9 @@ std::vector<double> continue_in_speed(Problem& problem, std::vector<double> x, d
   return x;
 }
 
-}  // namespace
-
-std::vector<double> static_equilibrium(const VehicleModel& model, double t,
-                                       std::span<const double> start) {
+// The equilibrium of the bodies (the output filters left at their guess).
+std::vector<double> mechanical_equilibrium(const VehicleModel& model, double t,
+                                           std::span<const double> start) {
   const ModelData& m = model.data();
   if (!start.empty() && start.size() != m.n_states) {
     throw std::invalid_argument(fmt::format(
@@ -284,6 +284,15 @@ std::vector<double> static_equilibrium(const VehicleModel& model, double t,
   }
   return continue_in_speed(problem, std::move(x), m.in.speed.speed(t),
                            m.in.config.wheel_rail.regularisation_speed, direct.residual);
+}
+
+}  // namespace
+
+std::vector<double> static_equilibrium(const VehicleModel& model, double t,
+                                       std::span<const double> start) {
+  std::vector<double> x = mechanical_equilibrium(model, t, start);
+  detail::set_output_filters_steady(model.data(), model.workspace(), t, x);
+  return x;
 }
 
 }  // namespace ferro::vehicle

@@ -20,7 +20,8 @@
 // points; converged when the weighted RMS norm of the correction (weights 1 / (rtol |y_i| +
 // atol_i), atol_i = atol times the system's tolerance scale of state i) falls below 0.1 (1 - rho)
 // / rho given the observed contraction rho, or below 0.01 when the corrected iterate's residual
-// is already within the tolerance. A Newton that diverges (a correction more than twice the
+// is already within the tolerance. The system's output states stay out of both tests: linear with
+// a constant Jacobian, Newton solves them exactly for the iterate of the other states. A Newton that diverges (a correction more than twice the
 // previous one) or takes more than 8 iterations is restarted with a fresh Jacobian, then the
 // step is taken as two implicit-Euler halves (recursively, down to h / 2^20). Outputs between two
 // steps come from the quadratic
@@ -37,6 +38,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -114,7 +116,7 @@ class Bdf2 final : public Integrator {
       const double w = d[i] / (s_.rtol * std::abs(y[i]) + atol_[i]);
       sum += w * w;
     }
-    return std::sqrt(sum / static_cast<double>(d.size()));
+    return std::sqrt(sum / static_cast<double>(tested_));
   }
 
   /// Solves y - psi - gamma h f(t, y) = 0 from the predictor y; false when Newton fails.
@@ -163,6 +165,7 @@ class Bdf2 final : public Integrator {
   const OdeSystem* system_ = nullptr;
   std::size_t n_ = 0;
   Vector atol_;  ///< atol per state (the system's tolerance scales)
+  std::size_t tested_ = 0;  ///< states in the convergence test (all but the output states)
   std::vector<std::vector<int>> pattern_, groups_;  ///< Jacobian sparsity and column groups
   Eigen::MatrixXd jacobian_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
@@ -210,6 +213,12 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   if (const auto scales = system.tolerance_scales(); !scales.empty()) {
     for (Eigen::Index i = 0; i < n; ++i) atol_[i] *= scales[static_cast<std::size_t>(i)];
   }
+  // Output states (filters of the model's own quantities, linear with a constant Jacobian) out
+  // of the convergence test: Newton solves them exactly for the iterate of the other states.
+  const auto outputs = system.output_states();
+  for (const std::size_t i : outputs)
+    atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
+  tested_ = std::max<std::size_t>(1, n_ - outputs.size());
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
   IntegrationResult result;
   const double h = s_.fixed_step;

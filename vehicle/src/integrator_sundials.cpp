@@ -26,11 +26,33 @@
 namespace ferro::vehicle::detail {
 namespace {
 
+// A non-zero of the output-state blocks of the Jacobian (OutputBlockMatrix below).
+struct BlockEntry {
+  Eigen::Index row, col;  // C: output slot, dynamic slot; D: output slots
+  double value;
+};
+
 struct UserData {
   const OdeSystem* system = nullptr;
   long rhs_evaluations = 0;
   std::string last_error;  // from the SUNDIALS error handler or a caught exception
+  std::vector<char> is_output;  // per state: an output state (OdeSystem::output_states)
+  // The output states' block D of the Jacobian (constant by their contract), once computed.
+  std::vector<BlockEntry> output_entries;
 };
+
+// The system's output states as a mask (empty when it has none).
+std::vector<char> output_mask(const OdeSystem& system) {
+  const auto outputs = system.output_states();
+  if (outputs.empty()) return {};
+  std::vector<char> mask(system.size(), 0);
+  for (std::size_t i : outputs) mask.at(i) = 1;
+  return mask;
+}
+
+// The absolute tolerance of an output state that takes it out of the error test (weight
+// 1/(rtol |y| + atol) ~ 1e-30).
+constexpr double kOutputAtol = 1e30;
 
 int sundials_rhs(realtype t, N_Vector y, N_Vector ydot, void* user_data) {
   auto* ud = static_cast<UserData*>(user_data);
@@ -98,7 +120,135 @@ void check(int flag, const char* what) {
 // dense and band LU), behind SUNDIALS' generic direct linear-solver interface.
 struct EigenDenseLu {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  // With output states (OutputBlockMatrix): one LU per group of output states.
+  struct Group {
+    std::vector<Eigen::Index> slots;  // output slots
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  };
+  std::vector<Group> groups;
 };
+
+// The Jacobian and Newton matrix of a system with output states (OdeSystem::output_states):
+// block lower triangular, [A 0; C D] with the other ("dynamic") states first, since no dynamic
+// derivative depends on an output state. A is dense; C and D are kept by their non-zeros (D
+// always with its diagonal), so copying and scaling the matrix, which SUNDIALS does at every
+// Newton-matrix update, costs the dynamic block and the few couplings, not the square of the
+// whole state count. The solver factors A and each group of output states D connects (one
+// filter cascade), and solves A x_d = b_d, then D x_o = b_o - C x_d group by group.
+struct BlockStructure {
+  std::vector<Eigen::Index> dynamic, output;  // state indices
+  std::vector<Eigen::Index> slot;             // per state: its index in dynamic or output
+  std::vector<char> is_output;
+};
+struct OutputBlockMatrix {
+  std::shared_ptr<const BlockStructure> s;
+  Eigen::MatrixXd a;
+  std::vector<BlockEntry> c, d;
+};
+
+OutputBlockMatrix& block_of(SUNMatrix m) { return *static_cast<OutputBlockMatrix*>(m->content); }
+
+SUNMatrix new_block_matrix(SUNContext ctx, std::shared_ptr<const BlockStructure> s);
+
+void set_block_ops(SUNMatrix m) {
+  m->ops->getid = [](SUNMatrix) { return SUNMATRIX_CUSTOM; };
+  m->ops->clone = [](SUNMatrix a) { return new_block_matrix(a->sunctx, block_of(a).s); };
+  m->ops->destroy = [](SUNMatrix a) {
+    if (a == nullptr) return;
+    delete static_cast<OutputBlockMatrix*>(a->content);
+    a->content = nullptr;
+    SUNMatFreeEmpty(a);
+  };
+  m->ops->zero = [](SUNMatrix a) {
+    auto& b = block_of(a);
+    b.a.setZero();
+    b.c.clear();
+    b.d.clear();
+    return 0;
+  };
+  m->ops->copy = [](SUNMatrix from, SUNMatrix to) {
+    const auto& f = block_of(from);
+    auto& t = block_of(to);
+    t.a = f.a;
+    t.c = f.c;
+    t.d = f.d;
+    return 0;
+  };
+  m->ops->scaleaddi = [](realtype g, SUNMatrix a) {  // A = g A + I
+    auto& b = block_of(a);
+    b.a *= g;
+    b.a.diagonal().array() += 1.0;
+    for (auto& e : b.c) e.value *= g;
+    for (auto& e : b.d) e.value = g * e.value + (e.row == e.col ? 1.0 : 0.0);
+    return 0;
+  };
+}
+
+SUNMatrix new_block_matrix(SUNContext ctx, std::shared_ptr<const BlockStructure> s) {
+  SUNMatrix m = SUNMatNewEmpty(ctx);
+  if (m == nullptr) throw std::runtime_error("SUNMatNewEmpty failed");
+  const auto nd = static_cast<Eigen::Index>(s->dynamic.size());
+  m->content = new OutputBlockMatrix{std::move(s), Eigen::MatrixXd::Zero(nd, nd), {}, {}};
+  set_block_ops(m);
+  return m;
+}
+
+std::shared_ptr<const BlockStructure> block_structure(const std::vector<char>& is_output) {
+  auto s = std::make_shared<BlockStructure>();
+  s->is_output = is_output;
+  s->slot.resize(is_output.size());
+  for (std::size_t i = 0; i < is_output.size(); ++i) {
+    auto& list = is_output[i] != 0 ? s->output : s->dynamic;
+    s->slot[i] = static_cast<Eigen::Index>(list.size());
+    list.push_back(static_cast<Eigen::Index>(i));
+  }
+  return s;
+}
+
+bool pivots_ok(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
+  const double min_pivot = lu.matrixLU().diagonal().cwiseAbs().minCoeff();
+  return min_pivot > 0.0 && std::isfinite(min_pivot);
+}
+
+// LU of the block matrix: A, and each group of output states D's entries connect.
+int setup_block(EigenDenseLu& c, const OutputBlockMatrix& m) {
+  c.lu.compute(m.a);
+  if (!pivots_ok(c.lu)) return 1;
+  const auto no = static_cast<Eigen::Index>(m.s->output.size());
+  std::vector<Eigen::Index> parent(static_cast<std::size_t>(no));
+  for (Eigen::Index i = 0; i < no; ++i) parent[static_cast<std::size_t>(i)] = i;
+  const auto root = [&](Eigen::Index i) {
+    while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)];
+    return i;
+  };
+  for (const auto& e : m.d) parent[static_cast<std::size_t>(root(e.row))] = root(e.col);
+  std::vector<Eigen::Index> group_of(static_cast<std::size_t>(no), -1), index_in(static_cast<std::size_t>(no), 0);
+  c.groups.clear();
+  for (Eigen::Index i = 0; i < no; ++i) {
+    const Eigen::Index r = root(i);
+    if (group_of[static_cast<std::size_t>(r)] < 0) {
+      group_of[static_cast<std::size_t>(r)] = static_cast<Eigen::Index>(c.groups.size());
+      c.groups.emplace_back();
+    }
+    auto& g = c.groups[static_cast<std::size_t>(group_of[static_cast<std::size_t>(r)])];
+    index_in[static_cast<std::size_t>(i)] = static_cast<Eigen::Index>(g.slots.size());
+    g.slots.push_back(i);
+  }
+  std::vector<Eigen::MatrixXd> blocks;
+  for (const auto& g : c.groups) {
+    const auto k = static_cast<Eigen::Index>(g.slots.size());
+    blocks.emplace_back(Eigen::MatrixXd::Zero(k, k));
+  }
+  for (const auto& e : m.d) {
+    const auto gi = static_cast<std::size_t>(group_of[static_cast<std::size_t>(root(e.row))]);
+    blocks[gi](index_in[static_cast<std::size_t>(e.row)], index_in[static_cast<std::size_t>(e.col)]) += e.value;
+  }
+  for (std::size_t gi = 0; gi < c.groups.size(); ++gi) {
+    c.groups[gi].lu.compute(blocks[gi]);
+    if (!pivots_ok(c.groups[gi].lu)) return 1;
+  }
+  return 0;
+}
 
 SUNLinearSolver eigen_dense_lu(SUNContext ctx) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
@@ -108,19 +258,39 @@ SUNLinearSolver eigen_dense_lu(SUNContext ctx) {
   s->ops->getid = [](SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; };
   s->ops->initialize = [](SUNLinearSolver) { return 0; };
   s->ops->setup = [](SUNLinearSolver ls, SUNMatrix a) {
+    auto& c = *static_cast<EigenDenseLu*>(ls->content);
+    if (SUNMatGetID(a) == SUNMATRIX_CUSTOM) return setup_block(c, block_of(a));
     const auto n = static_cast<Eigen::Index>(SUNDenseMatrix_Rows(a));
     const Eigen::Map<const Eigen::MatrixXd> m(SUNDenseMatrix_Data(a), n, n);  // column-major
-    auto& c = *static_cast<EigenDenseLu*>(ls->content);
     c.lu.compute(m);
     // A zero pivot: tell the integrator to retry with a smaller step.
-    const double min_pivot = c.lu.matrixLU().diagonal().cwiseAbs().minCoeff();
-    return min_pivot > 0.0 && std::isfinite(min_pivot) ? 0 : 1;
+    return pivots_ok(c.lu) ? 0 : 1;
   };
-  s->ops->solve = [](SUNLinearSolver ls, SUNMatrix, N_Vector x, N_Vector b, realtype) {
+  s->ops->solve = [](SUNLinearSolver ls, SUNMatrix a, N_Vector x, N_Vector b, realtype) {
     const auto n = static_cast<Eigen::Index>(N_VGetLength(b));
     const Eigen::Map<const Eigen::VectorXd> rhs(N_VGetArrayPointer(b), n);
     Eigen::Map<Eigen::VectorXd> out(N_VGetArrayPointer(x), n);
-    out = static_cast<EigenDenseLu*>(ls->content)->lu.solve(rhs);
+    const auto& c = *static_cast<EigenDenseLu*>(ls->content);
+    if (SUNMatGetID(a) != SUNMATRIX_CUSTOM) {
+      out = c.lu.solve(rhs);
+      return out.allFinite() ? 0 : 1;
+    }
+    const auto& m = block_of(a);
+    const auto& st = *m.s;
+    Eigen::VectorXd bd(static_cast<Eigen::Index>(st.dynamic.size()));
+    for (std::size_t i = 0; i < st.dynamic.size(); ++i) bd[static_cast<Eigen::Index>(i)] = rhs[st.dynamic[i]];
+    const Eigen::VectorXd xd = c.lu.solve(bd);
+    Eigen::VectorXd bo(static_cast<Eigen::Index>(st.output.size()));
+    for (std::size_t i = 0; i < st.output.size(); ++i) bo[static_cast<Eigen::Index>(i)] = rhs[st.output[i]];
+    for (const auto& e : m.c) bo[e.row] -= e.value * xd[e.col];
+    for (std::size_t i = 0; i < st.dynamic.size(); ++i) out[st.dynamic[i]] = xd[static_cast<Eigen::Index>(i)];
+    for (const auto& g : c.groups) {
+      Eigen::VectorXd bg(static_cast<Eigen::Index>(g.slots.size()));
+      for (std::size_t i = 0; i < g.slots.size(); ++i) bg[static_cast<Eigen::Index>(i)] = bo[g.slots[i]];
+      const Eigen::VectorXd xg = g.lu.solve(bg);
+      for (std::size_t i = 0; i < g.slots.size(); ++i)
+        out[st.output[static_cast<std::size_t>(g.slots[i])]] = xg[static_cast<Eigen::Index>(i)];
+    }
     return out.allFinite() ? 0 : 1;
   };
   s->ops->free = [](SUNLinearSolver ls) {
@@ -141,14 +311,57 @@ SUNLinearSolver eigen_dense_lu(SUNContext ctx) {
 // norm falls towards zero, so does the increment, the columns become round-off, and the
 // Newton iteration fails at every step even with a fresh Jacobian (ARKODE's ESDIRK on the
 // Cooperrider wagon: the step fell from 0.23 s to ~2 ms once the 0.1 mm kick had decayed).
-int dense_dq_jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix jac, void* user_data,
-                      N_Vector tmp1, N_Vector, N_Vector) {
-  constexpr double kUnitRoundoff = 2.220446049250313e-16;
-  constexpr double kUnitScale = 1e-5;  // RADAU5's floor on |y_j| for the increment
+// The same difference quotients into an OutputBlockMatrix: the dynamic columns every time; the
+// output states' columns (constant by their contract) once, kept in the user data.
+constexpr double kUnitRoundoff = 2.220446049250313e-16;
+constexpr double kUnitScale = 1e-5;  // RADAU5's floor on |y_j| for the increment
+
+int block_dq_jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix jac, void* user_data,
+                      N_Vector tmp1) {
+  auto& ud = *static_cast<UserData*>(user_data);
+  auto& m = block_of(jac);
+  const BlockStructure& st = *m.s;
   const auto n = static_cast<std::size_t>(N_VGetLength(y));
   double* yd = N_VGetArrayPointer(y);
   const double* f0 = N_VGetArrayPointer(fy);
   const double* f1 = N_VGetArrayPointer(tmp1);
+  m.a.setZero();
+  m.c.clear();
+  const bool outputs_known = !ud.output_entries.empty();
+  for (std::size_t j = 0; j < n; ++j) {
+    const bool output_column = st.is_output[j] != 0;
+    if (output_column && outputs_known) continue;
+    const double yj = yd[j];
+    const double step = std::sqrt(kUnitRoundoff * std::max(kUnitScale, std::abs(yj)));
+    yd[j] = yj + step;
+    const double inc = yd[j] - yj;
+    const int flag = sundials_rhs(t, y, tmp1, user_data);
+    yd[j] = yj;
+    if (flag != 0) return flag;
+    const Eigen::Index col = st.slot[j];
+    for (std::size_t i = 0; i < n; ++i) {
+      const double v = (f1[i] - f0[i]) / inc;
+      const Eigen::Index row = st.slot[i];
+      if (output_column) {
+        if (st.is_output[i] != 0 && (v != 0.0 || i == j)) ud.output_entries.push_back({row, col, v});
+      } else if (st.is_output[i] == 0) {
+        m.a(row, col) = v;
+      } else if (v != 0.0) {
+        m.c.push_back({row, col, v});
+      }
+    }
+  }
+  m.d = ud.output_entries;
+  return 0;
+}
+
+int dense_dq_jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix jac, void* user_data,
+                      N_Vector tmp1, N_Vector, N_Vector) {
+  const auto n = static_cast<std::size_t>(N_VGetLength(y));
+  double* yd = N_VGetArrayPointer(y);
+  const double* f0 = N_VGetArrayPointer(fy);
+  const double* f1 = N_VGetArrayPointer(tmp1);
+  if (SUNMatGetID(jac) == SUNMATRIX_CUSTOM) return block_dq_jacobian(t, y, fy, jac, user_data, tmp1);
   for (std::size_t j = 0; j < n; ++j) {
     const double yj = yd[j];
     const double step = std::sqrt(kUnitRoundoff * std::max(kUnitScale, std::abs(yj)));
@@ -165,7 +378,8 @@ int dense_dq_jacobian(realtype t, N_Vector y, N_Vector fy, SUNMatrix jac, void* 
 
 // The Newton iteration's direct linear solver: banded with the system's declared half-bandwidths
 // (the whole matrix when it declares none), or dense (Eigen's LU).
-void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& kind) {
+void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& kind,
+                        const UserData& ud) {
   const auto n = static_cast<sunindextype>(system.size());
   auto [upper, lower] = system.jacobian_bandwidth();
   if (kind == "band") {
@@ -173,23 +387,30 @@ void make_direct_solver(Handles& h, const OdeSystem& system, const std::string& 
     h.A = SUNBandMatrix(n, upper, lower, h.ctx);
     h.LS = SUNLinSol_Band(h.y, h.A, h.ctx);
   } else {
-    h.A = SUNDenseMatrix(n, n, h.ctx);
+    h.A = ud.is_output.empty() ? SUNDenseMatrix(n, n, h.ctx)
+                               : new_block_matrix(h.ctx, block_structure(ud.is_output));
     h.LS = eigen_dense_lu(h.ctx);
   }
 }
 
-// Tolerances: rtol and atol, or atol per state scaled by the system's tolerance_scales();
-// `scalar` and `vector` are the package's SStolerances and SVtolerances functions.
+// Tolerances: rtol and atol, or atol per state scaled by the system's tolerance_scales() (when
+// `scaled`), the output states out of the error test (kOutputAtol); `scalar` and `vector` are
+// the package's SStolerances and SVtolerances functions.
 template <class Scalar, class Vector>
-void set_tolerances(Handles& h, const OdeSystem& system, const IntegratorSettings& s,
-                    Scalar scalar, Vector vector) {
-  const std::vector<double> scales = system.tolerance_scales();
-  if (scales.empty()) {
+void set_tolerances(Handles& h, const OdeSystem& system, const UserData& ud,
+                    const IntegratorSettings& s, Scalar scalar, Vector vector, bool scaled = true) {
+  const std::vector<double> scales = scaled ? system.tolerance_scales() : std::vector<double>{};
+  if (scales.empty() && ud.is_output.empty()) {
     check(scalar(h.mem, s.rtol, s.atol), "SStolerances");
     return;
   }
   N_Vector atol = N_VClone(h.y);
-  for (std::size_t i = 0; i < scales.size(); ++i) N_VGetArrayPointer(atol)[i] = s.atol * scales[i];
+  const auto n = static_cast<std::size_t>(N_VGetLength(h.y));
+  for (std::size_t i = 0; i < n; ++i) {
+    N_VGetArrayPointer(atol)[i] = !ud.is_output.empty() && ud.is_output[i] != 0
+                                      ? kOutputAtol
+                                      : s.atol * (scales.empty() ? 1.0 : scales[i]);
+  }
   const int flag = vector(h.mem, s.rtol, atol);  // the solver keeps its own copy
   N_VDestroy(atol);
   check(flag, "SVtolerances");
@@ -270,7 +491,7 @@ class CvodeIntegrator final : public Integrator {
   IntegrationResult integrate(const OdeSystem& system, std::span<const double> x0,
                               const std::vector<double>& times, const Observer& observer) override {
     Handles h;
-    UserData ud{&system, 0, {}};
+    UserData ud{&system, 0, {}, output_mask(system), {}};
     const auto n = static_cast<sunindextype>(system.size());
     check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
     h.y = N_VNew_Serial(n, h.ctx);
@@ -281,7 +502,7 @@ class CvodeIntegrator final : public Integrator {
     check(CVodeSetErrHandlerFn(h.mem, error_handler, &ud), "CVodeSetErrHandlerFn");
     check(CVodeInit(h.mem, sundials_rhs, times.front(), h.y), "CVodeInit");
     check(CVodeSetUserData(h.mem, &ud), "CVodeSetUserData");
-    set_tolerances(h, system, s_, CVodeSStolerances, CVodeSVtolerances);
+    set_tolerances(h, system, ud, s_, CVodeSStolerances, CVodeSVtolerances);
     if (std::isfinite(s_.max_step)) check(CVodeSetMaxStep(h.mem, s_.max_step), "CVodeSetMaxStep");
     if (s_.initial_step > 0.0) check(CVodeSetInitStep(h.mem, s_.initial_step), "CVodeSetInitStep");
     check(CVodeSetMaxNumSteps(h.mem, s_.max_steps), "CVodeSetMaxNumSteps");
@@ -290,7 +511,7 @@ class CvodeIntegrator final : public Integrator {
       check(CVodeSetStabLimDet(h.mem, SUNTRUE), "CVodeSetStabLimDet");
     }
     if (bdf) {
-      make_direct_solver(h, system, s_.linear_solver);
+      make_direct_solver(h, system, s_.linear_solver, ud);
       check(CVodeSetLinearSolver(h.mem, h.LS, h.A), "CVodeSetLinearSolver");
       if (s_.linear_solver != "band") {
         check(CVodeSetJacFn(h.mem, dense_dq_jacobian), "CVodeSetJacFn");
@@ -322,7 +543,7 @@ class ArkodeErkIntegrator final : public Integrator {
                               const std::vector<double>& times, const Observer& observer) override {
     Handles h;
     h.arkode = true;
-    UserData ud{&system, 0, {}};
+    UserData ud{&system, 0, {}, output_mask(system), {}};
     const auto n = static_cast<sunindextype>(system.size());
     check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
     h.y = N_VNew_Serial(n, h.ctx);
@@ -331,7 +552,8 @@ class ArkodeErkIntegrator final : public Integrator {
     if (h.mem == nullptr) throw std::runtime_error("ERKStepCreate failed");
     check(ERKStepSetErrHandlerFn(h.mem, error_handler, &ud), "ERKStepSetErrHandlerFn");
     check(ERKStepSetUserData(h.mem, &ud), "ERKStepSetUserData");
-    check(ERKStepSStolerances(h.mem, s_.rtol, s_.atol), "ERKStepSStolerances");
+    set_tolerances(h, system, ud, s_, ERKStepSStolerances, ERKStepSVtolerances,
+                   /*scaled=*/false);
     check(ERKStepSetOrder(h.mem, s_.erk_order), "ERKStepSetOrder");
     if (std::isfinite(s_.max_step))
       check(ERKStepSetMaxStep(h.mem, s_.max_step), "ERKStepSetMaxStep");
@@ -368,7 +590,7 @@ class ArkodeDirkIntegrator final : public Integrator {
     Handles h;
     h.arkode = true;
     h.arkstep = true;
-    UserData ud{&system, 0, {}};
+    UserData ud{&system, 0, {}, output_mask(system), {}};
     const auto n = static_cast<sunindextype>(system.size());
     check(SUNContext_Create(nullptr, &h.ctx), "SUNContext_Create");
     h.y = N_VNew_Serial(n, h.ctx);
@@ -377,7 +599,7 @@ class ArkodeDirkIntegrator final : public Integrator {
     if (h.mem == nullptr) throw std::runtime_error("ARKStepCreate failed");
     check(ARKStepSetErrHandlerFn(h.mem, error_handler, &ud), "ARKStepSetErrHandlerFn");
     check(ARKStepSetUserData(h.mem, &ud), "ARKStepSetUserData");
-    set_tolerances(h, system, s_, ARKStepSStolerances, ARKStepSVtolerances);
+    set_tolerances(h, system, ud, s_, ARKStepSStolerances, ARKStepSVtolerances);
     check(ARKStepSetTableNum(h.mem, ARKODE_ESDIRK436L2SA_6_3_4, ARKODE_ERK_NONE),
           "ARKStepSetTableNum");
     if (std::isfinite(s_.max_step))
@@ -386,7 +608,7 @@ class ArkodeDirkIntegrator final : public Integrator {
       check(ARKStepSetInitStep(h.mem, s_.initial_step), "ARKStepSetInitStep");
     check(ARKStepSetMaxNumSteps(h.mem, s_.max_steps), "ARKStepSetMaxNumSteps");
     if (s_.fixed_step > 0.0) check(ARKStepSetFixedStep(h.mem, s_.fixed_step), "ARKStepSetFixedStep");
-    make_direct_solver(h, system, s_.linear_solver);
+    make_direct_solver(h, system, s_.linear_solver, ud);
     check(ARKStepSetLinearSolver(h.mem, h.LS, h.A), "ARKStepSetLinearSolver");
     if (s_.linear_solver != "band") {
       check(ARKStepSetJacFn(h.mem, dense_dq_jacobian), "ARKStepSetJacFn");

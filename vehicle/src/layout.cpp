@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "model_data.hpp"
+#include "output_signals.hpp"
 #include "workspace.hpp"
 
 namespace ferro::vehicle::detail {
@@ -79,8 +80,9 @@ void name_signals(ModelData& m) {
       add("creepage_x", "-", "longitudinal creepage of the most loaded point");
       add("creepage_y", "-", "lateral creepage of the most loaded point");
       add("spin", "1/m", "spin creepage of the most loaded point");
-      add("contact_y", "m", "lateral contact position from the rail reference point, + outwards");
-      add("contact_angle", "rad", "contact angle of the most loaded point");
+      add("contact_y", "m",
+          "lateral contact position from the rail reference point, + outwards (0 when lifted)");
+      add("contact_angle", "rad", "contact angle of the most loaded point (0 when lifted)");
       add("points", "-", "number of loaded contact points");
       for (int k = 1; k <= WheelResult::kPointSignals; ++k) {
         m.signal_list.push_back(
@@ -90,7 +92,42 @@ void name_signals(ModelData& m) {
                          "wheel-profile coordinate), 0 when the wheel has fewer points",
                          k)});
       }
+      add("in_contact", "-", "1 when the wheel has a loaded contact point, 0 when lifted");
+      add("creep_force_x", "N", "longitudinal creep force on the wheel, sum over its points");
+      add("creep_force_y", "N", "lateral creep force (contact frame y = n x x), sum over its points");
+      add("spin_moment", "N m", "creep moment about the contact normal, sum over its points");
+      add("wear_number", "N",
+          "T gamma = Tx creepage_x + Ty creepage_y (force on the rail times creepage: the "
+          "frictional energy per metre rolled without the spin term), sum over its points");
+      add("rolling_radius", "m", "rolling radius at the most loaded point");
+      add("contact_wheel_y", "m", "most loaded point on the wheel profile (profile coordinate)");
+      add("contact_rail_y", "m", "most loaded point on the rail profile (profile coordinate)");
+      add("semi_axis_a", "m", "longitudinal semi-axis of the most loaded point's patch");
+      add("semi_axis_b", "m", "lateral semi-axis of the most loaded point's patch");
+      add("peak_pressure", "Pa", "peak contact pressure of the most loaded point");
+      for (int k = 1; m.in.outputs.contact_point_details && k <= WheelResult::kPointSignals; ++k) {
+        const auto point = [&](const char* what, const char* unit, const char* desc) {
+          m.signal_list.push_back({fmt::format("{}.{}.point_{}.{}", name, side, k, what), unit,
+                                   fmt::format("{} of loaded point {} (0 without it)", desc, k)});
+        };
+        point("creep_force_x", "N", "longitudinal creep force");
+        point("creep_force_y", "N", "lateral creep force");
+        point("spin_moment", "N m", "creep moment about the normal");
+        point("wear_number", "N", "T gamma");
+        point("contact_angle", "rad", "contact angle");
+        point("rolling_radius", "m", "rolling radius");
+        point("wheel_y", "m", "wheel-profile coordinate");
+        point("rail_y", "m", "rail-profile coordinate");
+        point("peak_pressure", "Pa", "peak pressure");
+      }
     }
+    m.signal_list.push_back({fmt::format("{}.rolling_radius_difference", name), "m",
+                             "rolling radius of the left wheel's most loaded point minus the "
+                             "right's (0 when a wheel is lifted)"});
+    m.signal_list.push_back({fmt::format("{}.angle_of_attack", name), "rad",
+                             "yaw of the wheelset relative to its rails' actual direction "
+                             "(irregularities and rail deflection included; the mean over the "
+                             "two rails), + nose left"});
   }
   for (int bi : m.contact_bodies) {
     const BodyData& b = m.bodies[static_cast<std::size_t>(bi)];
@@ -122,7 +159,9 @@ void name_signals(ModelData& m) {
 
 void name_states_and_signals(ModelData& m) {
   name_states(m);
+  name_output_states(m);
   name_signals(m);
+  name_output_signals(m);
 }
 
 std::pair<int, int> jacobian_bandwidth(const ModelData& m) {
@@ -175,6 +214,21 @@ std::vector<std::vector<int>> jacobian_pattern(const ModelData& m) {
       const bool track_state = b.track >= 0 && j >= b.track && j < track_end;
       pattern[static_cast<std::size_t>(j)] = track_state ? own_rows : body_rows;
     }
+  }
+  // An output filter's state acts on its own channel's states alone (a cascade of sections).
+  const int per = m.output_filter.states_per_channel();
+  const auto channel = [&](int first) {
+    std::vector<int> rows;
+    for (int i = first; i < first + per; ++i) rows.push_back(i);
+    for (int i = first; i < first + per; ++i) pattern[static_cast<std::size_t>(i)] = rows;
+  };
+  if (per > 0) {
+    for (const BodyData& b : m.bodies)
+      if (b.has_contact && b.output_filters >= 0)
+        for (int c = 0; c < 4; ++c) channel(b.output_filters + c * per);
+    for (const SensorData& s : m.sensors)
+      for (const int first : s.filter)
+        if (first >= 0) channel(first);
   }
   return pattern;
 }

@@ -12,6 +12,7 @@
 #include "ferro/contact/geometry/contact_geometry_source.hpp"
 #include "ferro/contact/kij/kij_table.hpp"
 #include "model_data.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle::detail {
 
@@ -162,6 +163,7 @@ void lay_out_states(ModelData& m, const std::vector<int>& position_of,
       b.track = next;
       next += 2 * track::kTrackPositions;
     }
+    next = lay_out_output_filters(m, i, next);
     b.block_end = next;
   }
   m.n_states = static_cast<std::size_t>(next);
@@ -230,6 +232,7 @@ std::shared_ptr<const ModelData> build_model_data(VehicleModelInputs inputs) {
   ModelData& m = *data;
   m.in = std::move(inputs);
   const std::vector<int> position_of = order_bodies(m);
+  resolve_output_signals(m);
   // Elements (validated against the config's indices, stored with model indices).
   for (const SuspensionElementSpec& s : m.in.config.elements) {
     ElementData e;

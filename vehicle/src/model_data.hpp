@@ -38,6 +38,8 @@ struct BodyData {
   /// (track::kTrackPositions positions, then their rates); -1 on a rigid track.
   int track = -1;
   int block_begin = 0, block_end = 0;            ///< state range incl. series-damper states
+  /// First state of the output filters this body hosts (output_signals.cpp), -1: none.
+  int output_filters = -1;
 };
 
 struct ElementData {
@@ -63,6 +65,23 @@ struct ContactMechanics {
   contact::SemiHertzOptions semi_hertz_options;
 };
 
+/// A sensor with its body's model index; `filter[a]` is the first state of the anti-alias
+/// filter of its acceleration along axis a (-1: not filtered).
+struct SensorData {
+  SensorSpec spec;
+  int body = -1;
+  std::array<int, 3> filter{-1, -1, -1};
+};
+
+/// The anti-alias low-pass: a cascade of order/2 sections y'' + (w/Q_k) y' + w^2 y = w^2 u, each
+/// with two states (y_k, y_k'); a channel's states are contiguous.
+struct OutputFilterData {
+  int order = 0;  ///< 0: no filters
+  double omega = 0.0;          ///< corner [rad/s]
+  std::vector<double> inv_q;   ///< 1/Q_k of the sections
+  [[nodiscard]] int states_per_channel() const { return order; }
+};
+
 struct ModelData {
   VehicleModelInputs in;
   std::vector<BodyData> bodies;  ///< in state order (decreasing rest x)
@@ -76,6 +95,8 @@ struct ModelData {
   /// The co-running track under every contact wheelset (track structure `discrete`); empty on a
   /// rigid track.
   std::optional<track::CoRunningTrackParams> track;
+  std::vector<SensorData> sensors;
+  OutputFilterData output_filter;
 };
 
 /// Builds and validates the model data (std::invalid_argument naming the field).

@@ -2,6 +2,7 @@
 // body's lateral acceleration, position and speed (names and units: layout.cpp).
 
 #include "dynamics.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle::detail {
 
@@ -11,17 +12,48 @@ void signals(const ModelData& m, Workspace& ws, double t, std::span<const double
   double ay = std::numeric_limits<double>::quiet_NaN();
   evaluate(m, ws, t, x, {}, EvaluationOutputs{ws.wheels.data(), &ay, true});
   std::size_t o = 0;
-  for (const WheelResult& w : ws.wheels) {
-    out[o++] = w.lateral_towards_centre;
-    out[o++] = w.vertical;
-    out[o++] = w.normal_force;
-    out[o++] = w.creepage_x;
-    out[o++] = w.creepage_y;
-    out[o++] = w.spin;
-    out[o++] = w.points > 0 ? w.contact_y : std::numeric_limits<double>::quiet_NaN();
-    out[o++] = w.points > 0 ? w.contact_angle : std::numeric_limits<double>::quiet_NaN();
-    out[o++] = w.points;
-    for (double f : w.point_normal_force) out[o++] = f;
+  for (std::size_t body = 0; body < m.contact_bodies.size(); ++body) {
+    for (std::size_t side = 0; side < 2; ++side) {
+      const WheelResult& w = ws.wheels[2 * body + side];
+      out[o++] = w.lateral_towards_centre;
+      out[o++] = w.vertical;
+      out[o++] = w.normal_force;
+      out[o++] = w.creepage_x;
+      out[o++] = w.creepage_y;
+      out[o++] = w.spin;
+      out[o++] = w.contact_y;  // 0 when lifted, like every place and angle below
+      out[o++] = w.contact_angle;
+      out[o++] = w.points;
+      for (double f : w.point_normal_force) out[o++] = f;
+      out[o++] = w.points > 0 ? 1.0 : 0.0;
+      out[o++] = w.creep_force_x;
+      out[o++] = w.creep_force_y;
+      out[o++] = w.spin_moment;
+      out[o++] = w.wear_number;
+      out[o++] = w.largest.rolling_radius;
+      out[o++] = w.largest.wheel_y;
+      out[o++] = w.largest.rail_y;
+      out[o++] = w.largest.semi_axis_a;
+      out[o++] = w.largest.semi_axis_b;
+      out[o++] = w.largest.peak_pressure;
+      for (const PointResult& p : w.point) {
+        if (!m.in.outputs.contact_point_details) break;
+        out[o++] = p.creep_force_x;
+        out[o++] = p.creep_force_y;
+        out[o++] = p.spin_moment;
+        out[o++] = p.wear_number;
+        out[o++] = p.contact_angle;
+        out[o++] = p.rolling_radius;
+        out[o++] = p.wheel_y;
+        out[o++] = p.rail_y;
+        out[o++] = p.peak_pressure;
+      }
+    }
+    const WheelResult& l = ws.wheels[2 * body];
+    const WheelResult& r = ws.wheels[2 * body + 1];
+    out[o++] = l.points > 0 && r.points > 0 ? l.largest.rolling_radius - r.largest.rolling_radius : 0.0;
+    // Relative to the pair of rails: the mean of the two rails' directions.
+    out[o++] = 0.5 * (l.angle_of_attack + r.angle_of_attack);
   }
   for (std::size_t w = 0; w < m.contact_bodies.size(); ++w) {
     const auto i = static_cast<std::size_t>(m.contact_bodies[w]);
@@ -50,6 +82,7 @@ void signals(const ModelData& m, Workspace& ws, double t, std::span<const double
   if (m.car_body >= 0) out[o++] = ay;
   out[o++] = m.in.start_position + m.in.speed.distance(t);
   out[o++] = m.in.speed.speed(t);
+  o += output_signal_values(m, ws, x, out.subspan(o));
 }
 
 }  // namespace ferro::vehicle::detail

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "dynamics.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle {
 
@@ -69,6 +70,10 @@ std::vector<std::vector<int>> VehicleModel::jacobian_pattern() const {
 
 std::pair<int, int> VehicleModel::jacobian_bandwidth() const {
   return detail::jacobian_bandwidth(*data_);
+}
+
+std::vector<std::size_t> VehicleModel::output_states() const {
+  return detail::output_state_indices(*data_);
 }
 
 std::vector<double> VehicleModel::tolerance_scales() const {

@@ -45,6 +45,7 @@
 #include "ferro/contact/normal/contact_patch.hpp"
 #include "ferro/contact/tangential/creepage.hpp"
 #include "ferro/vehicle/frames.hpp"
+#include "output_signals.hpp"
 
 namespace ferro::vehicle::detail {
 namespace {
@@ -227,6 +228,7 @@ void apply_point(const ModelData& m, const contact::WheelRailContact& c,
 
   const double towards_centre = c.side == contact::Side::left ? -1.0 : 1.0;
   double normal_force = 0.0;
+  PointTotals point_totals;  // signals only
   for (std::size_t i = 0; i < patch_count; ++i) {
     contact::ContactPatch& patch = patches[i];
     if (!(patch.normal_force > 0.0)) continue;
@@ -252,6 +254,7 @@ void apply_point(const ModelData& m, const contact::WheelRailContact& c,
     if (result != nullptr) {
       result->lateral_towards_centre += towards_centre * force.y();
       result->vertical += force.z();
+      add_patch(point_totals, patch, problem, tang);
     }
   }
   if (result == nullptr) return;
@@ -259,6 +262,7 @@ void apply_point(const ModelData& m, const contact::WheelRailContact& c,
   if (result->points < WheelResult::kPointSignals) {
     result->point_normal_force[static_cast<std::size_t>(result->points)] = normal_force;
   }
+  record_point(*result, c, point_totals, normal_force);
   ++result->points;
   if (normal_force > result->largest_normal_force) {
     result->largest_normal_force = normal_force;
@@ -299,6 +303,7 @@ void apply_wheel_rail(const ModelData& m, const BodyData& body, BodyKinematics& 
     const RailPlacement& rail = rails[static_cast<std::size_t>(side)];
     const RailRelativePose rel = pose_relative_to(rail, w.centre, k, body.r0);
     const contact::WheelsetPose pose = to_contact_pose(rel);
+    if (left_right != nullptr) record_pose(left_right, rel, one_query ? -1 : side);
     m.in.geometry->contacts(pose, scratch.points);
     PoseRates rates;
     if (damped) rates = pose_rates(rail, rel, k, body.r0);

@@ -33,7 +33,22 @@ struct BodyKinematics {
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
 };
 
-/// Per-wheel results of the wheel-rail coupling (signals).
+/// What one loaded contact point carries (signals; contact frame: x along the rail, y = n x x).
+struct PointResult {
+  double creep_force_x = 0.0, creep_force_y = 0.0;  ///< tangential force on the wheel [N]
+  double spin_moment = 0.0;                         ///< about the normal [N m]
+  /// T gamma = -(Fx creepage_x + Fy creepage_y) with F the creep force on the wheel: the
+  /// frictional energy per metre rolled, >= 0 [N]
+  double wear_number = 0.0;
+  double contact_angle = 0.0;   ///< [rad]
+  double rolling_radius = 0.0;  ///< [m]
+  double wheel_y = 0.0, rail_y = 0.0;  ///< place on the wheel and rail profiles [m]
+  double semi_axis_a = 0.0, semi_axis_b = 0.0;  ///< of its largest patch [m]
+  double peak_pressure = 0.0;                   ///< [Pa]
+};
+
+/// Per-wheel results of the wheel-rail coupling (signals). Quantities undefined on a lifted
+/// wheel (no loaded point) stay 0; `points` says whether it touches.
 struct WheelResult {
   double lateral_towards_centre = 0.0, vertical = 0.0, normal_force = 0.0;
   double creepage_x = 0.0, creepage_y = 0.0, spin = 0.0;
@@ -44,6 +59,21 @@ struct WheelResult {
   /// where there is no such point [N].
   static constexpr int kPointSignals = 3;
   std::array<double, kPointSignals> point_normal_force{};
+  /// Those points' other results (zero where there is no such point).
+  std::array<PointResult, kPointSignals> point{};
+  /// Sums over every loaded point of the wheel.
+  double creep_force_x = 0.0, creep_force_y = 0.0, spin_moment = 0.0, wear_number = 0.0;
+  /// The most loaded point's.
+  PointResult largest;
+  /// The wheelset's yaw relative to this wheel's rail's actual direction (angle of attack)
+  /// [rad].
+  double angle_of_attack = 0.0;
+};
+
+/// What one contact point's patches carry, summed while the wheel-rail stage goes through them.
+struct PointTotals {
+  PointResult result;
+  double largest_patch_force = 0.0;
 };
 
 /// Scratch of the wheel-rail stage.

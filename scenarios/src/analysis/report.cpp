@@ -34,28 +34,75 @@ std::string linear_against_nonlinear(const BranchResult& b, double hopf) {
 
 }  // namespace
 
-std::string derailment_report(const std::string& run_file, const DerailmentOptions& o,
-                              const DerailmentReport& r) {
+std::string assessment_report(const std::string& run_file, const Assessment& r, bool all_rows) {
   std::string text;
   auto out = std::back_inserter(text);
-  fmt::format_to(out, "ferrodyn derailment: {} (mu = {}, {} m sliding mean every {} m)\n", run_file,
-                 o.mu, o.window, o.step);
-  fmt::format_to(out, "  {:<18} {:>8} {:>9} {:>8} {:>9} {:>7} {:>8} {:>9}  {}\n", "wheel",
-                 "max Y/Q", "at [m]", "flange", "Nadal", "raw", "dQ/Q0", "at [m]", "verdict");
-  for (const auto& w : r.wheels) {
-    fmt::format_to(
-        out, "  {:<18} {:>8.3f} {:>9.2f} {:>6.1f}deg {:>9.3f} {:>7.3f} {:>8.3f} {:>9.2f}  {}\n",
-        w.name, w.max_y_over_q, w.max_y_over_q_position, w.flange_angle * 180.0 / M_PI, w.nadal,
-        w.max_y_over_q_raw, w.max_unloading, w.max_unloading_position,
-        w.pass_nadal && w.pass_unloading ? "pass" : "FAIL");
+  fmt::format_to(out, "ferrodyn assess: {} ({}, category {}, alpha {:g}; output every {:.3g} ms)\n",
+                 run_file, r.vehicle, r.category, r.alpha, 1e3 / r.sample_rate);
+  fmt::format_to(out, "  sections: ");
+  for (std::size_t i = 0; i < r.sections.size(); ++i)
+    fmt::format_to(out, "{}{} [{:.1f}, {:.1f}) m", i ? "; " : "", r.sections[i].name,
+                   r.sections[i].start, r.sections[i].end);
+  if (std::isnan(r.f0)) {
+    fmt::format_to(out, "\n  stability not assessed (see the notes)");
+  } else {
+    fmt::format_to(out, "\n  f0 = {:.2f} Hz ({})", r.f0,
+                   r.f0_from_spectrum ? "peak of the sum-Y spectrum" : "given");
   }
-  fmt::format_to(out, "  {:<18} {:>12} {:>9} {:>14} {:>12}  {}\n", "axle", "max sum Y [kN]",
-                 "at [m]", "Prud'homme [kN]", "P [kN]", "verdict");
-  for (const auto& x : r.axles) {
-    fmt::format_to(out, "  {:<18} {:>12.2f} {:>9.2f} {:>14.2f} {:>12.2f}  {}\n", x.name,
-                   x.max_sum_y / 1e3, x.max_sum_y_position, x.limit / 1e3, x.axle_load / 1e3,
-                   x.pass ? "pass" : "FAIL");
+  fmt::format_to(out, ", Nadal mu = {:g}{}\n", r.mu, r.twist_test ? ", twist test" : "");
+  // One line per quantity and item: its worst section, or every row.
+  std::vector<const AssessmentRow*> shown;
+  const auto score = [](const AssessmentRow& x) {
+    return std::isnan(x.limit) || x.limit <= 0.0 ? x.value : x.value / x.limit;
+  };
+  for (const auto& row : r.rows) {
+    if (all_rows) {
+      shown.push_back(&row);
+      continue;
+    }
+    auto it = std::find_if(shown.begin(), shown.end(), [&](const AssessmentRow* s) {
+      return s->quantity == row.quantity && s->item == row.item;
+    });
+    if (it == shown.end()) {
+      shown.push_back(&row);
+    } else if (score(row) > score(**it)) {
+      *it = &row;
+    }
   }
+  const std::vector<std::string> groups = {"running safety", "track loading", "twist test",
+                                           "stability", "ride"};
+  const auto rank = [&](const AssessmentRow* x) {
+    return std::find(groups.begin(), groups.end(), x->group) - groups.begin();
+  };
+  std::stable_sort(shown.begin(), shown.end(),
+                   [&](const auto* lhs, const auto* rhs) { return rank(lhs) < rank(rhs); });
+  const auto value_text = [](double v, const std::string& unit) {
+    if (std::isnan(v)) return std::string("-");
+    if (unit == "N") return fmt::format("{:.2f} kN", v / 1e3);
+    return fmt::format("{:.3f}", v);
+  };
+  const auto verdict_text = [](const AssessmentRow& x) -> std::string {
+    if (x.verdict != Verdict::info || std::isnan(x.limit)) return to_string(x.verdict);
+    return x.value > x.limit ? "info: above" : "info: below";
+  };
+  std::string group;
+  for (const auto* row : shown) {
+    if (row->group != group) {
+      group = row->group;
+      fmt::format_to(out, "  {}\n  {:<44} {:<34} {:>12} {:>12} {:>10}  {:<22} {}\n", group,
+                     "quantity", "item", "value", "limit", "at [m]", "section", "verdict");
+    }
+    fmt::format_to(out, "  {:<44} {:<34} {:>12} {:>12} {:>10}  {:<22} {}\n", row->quantity,
+                   row->item, value_text(row->value, row->unit), value_text(row->limit, row->unit),
+                   std::isnan(row->position) ? std::string("-")
+                                             : fmt::format("{:.1f}", row->position),
+                   row->section, verdict_text(*row));
+  }
+  for (const auto& n : r.notes) fmt::format_to(out, "  note: {}\n", n);
+  if (r.accelerations_derived)
+    fmt::format_to(out,
+                   "  note: floor and bogie-frame accelerations derived from the bodies' rigid "
+                   "motion (the run has no acceleration sensors)\n");
   fmt::format_to(out, "  verdict   {}\n", r.pass ? "pass" : "FAIL");
   return text;
 }

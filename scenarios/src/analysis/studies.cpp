@@ -2,13 +2,16 @@
 #include "ferro/scenarios/analysis/studies.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
 
 #include "ferro/scenarios/analysis/sweep.hpp"
 #include "ferro/scenarios/run.hpp"
+#include "ferro/scenarios/vehicle_file.hpp"
 
 namespace ferro::scenarios::analysis {
 namespace {
@@ -168,22 +171,43 @@ KijStudy run_kij_study(const Scene& scene, const KijStudyRequest& a,
   return study;
 }
 
-DerailmentOptions derailment_options(const DerailmentRequest& a, Spelling sp) {
-  DerailmentOptions o;
-  if (!(a.mu >= 0.0 && a.mu < 2.0))
-    throw std::invalid_argument(fmt::format("{}: allowed [0, 2)", spelled("mu", sp)));
-  o.mu = a.mu;
+AssessmentOptions assessment_options(const AssessmentRequest& a, Spelling sp) {
+  AssessmentOptions o;
+  if (!std::isnan(a.mu)) {
+    if (!(a.mu >= 0.0 && a.mu < 2.0))
+      throw std::invalid_argument(fmt::format("{}: allowed [0, 2), got {}", spelled("mu", sp), a.mu));
+    o.mu = a.mu;
+  }
   if (a.flange_angle_deg > 0.0) {
     if (!(a.flange_angle_deg < 90.0))
-      throw std::invalid_argument(
-          fmt::format("{}: allowed (0, 90)", spelled("flange_angle_deg", sp)));
+      throw std::invalid_argument(fmt::format("{}: allowed (0, 90), got {}",
+                                              spelled("flange_angle_deg", sp), a.flange_angle_deg));
     o.flange_angle = a.flange_angle_deg * M_PI / 180.0;
   }
-  o.wheel_load_static = a.q0;
-  positive(a.window, "window", sp);
-  positive(a.step, "step", sp);
-  o.window = a.window;
-  o.step = a.step;
+  if (a.section_length != 0.0) positive(a.section_length, "section_length", sp);
+  o.section_length = a.section_length;
+  if (!std::isnan(a.f0)) positive(a.f0, "f0", sp);
+  o.f0 = a.f0;
+  if (!(a.floor_offset >= 0.0) || !std::isfinite(a.floor_offset))
+    throw std::invalid_argument(
+        fmt::format("{}: must be >= 0 m, got {}", spelled("floor_offset", sp), a.floor_offset));
+  o.floor_offset = a.floor_offset;
+  positive(a.y_over_q_limit, "y_over_q_limit", sp);
+  o.y_over_q_limit = a.y_over_q_limit;
+  const auto& categories = vehicle_categories();
+  if (!a.category.empty() &&
+      std::find(categories.begin(), categories.end(), a.category) == categories.end()) {
+    throw std::invalid_argument(fmt::format("{}: '{}' is not a category; allowed: {}",
+                                            spelled("category", sp), a.category,
+                                            fmt::join(categories, ", ")));
+  }
+  o.category = a.category;
+  if (a.twist_test && a.no_twist_test) {
+    throw std::invalid_argument(fmt::format("{} and {}: give one of them",
+                                            spelled("twist_test", sp), spelled("no_twist_test", sp)));
+  }
+  if (a.twist_test) o.twist_test = true;
+  if (a.no_twist_test) o.twist_test = false;
   return o;
 }
 
@@ -243,14 +267,23 @@ Parameters parameters(KijStudyRequest& k) {
   return p;
 }
 
-Parameters parameters(DerailmentRequest& d) {
+Parameters parameters(AssessmentRequest& a) {
   return {
-      {"mu", "-", "friction coefficient in Nadal's formula", &d.mu},
-      {"flange_angle_deg", "deg", "flange angle (default: the largest contact angle of each wheel)",
-       &d.flange_angle_deg, false},
-      {"q0", "N", "static wheel load Q0 (default: the first sample)", &d.q0, false},
-      {"window", "m", "sliding-mean window", &d.window},
-      {"step", "m", "sliding-mean sampling step", &d.step},
+      {"mu", "-", "friction coefficient in Nadal's limit (default: the run's)", &a.mu, false},
+      {"flange_angle_deg", "deg",
+       "flange angle in Nadal's limit (default: the largest contact angle of each wheel)",
+       &a.flange_angle_deg, false},
+      {"section_length", "m", "statistics over windows of this length instead of the scene's "
+       "sections", &a.section_length, false},
+      {"f0", "Hz", "instability frequency (default: from the run's spectrum)", &a.f0, false},
+      {"floor_offset", "m", "lateral offset of the vertical floor points (0: centre line only)",
+       &a.floor_offset},
+      {"y_over_q_limit", "-", "(Y/Q) limit of the 2 m mean", &a.y_over_q_limit},
+      {"category", "", "vehicle category: coach, locomotive, power_car, wagon (default: the "
+       "vehicle file's)", &a.category, false},
+      {"twist_test", "", "assess the wheel unloading dQ/Q0 too", &a.twist_test},
+      {"no_twist_test", "", "do not assess dQ/Q0 even when the scene says it is the twist test",
+       &a.no_twist_test},
   };
 }
 

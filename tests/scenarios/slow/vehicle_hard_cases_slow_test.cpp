@@ -12,7 +12,7 @@
 #include <numeric>
 #include <string>
 
-#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/work_precision.hpp"
 #include "vehicle_scene_run.hpp"
 

@@ -34,6 +34,11 @@ struct ModelResources {
 [[nodiscard]] std::unique_ptr<vehicle::OdeSystem> build_system(const Scene& scene, double speed,
                                                                const ModelResources& resources);
 
+/// The system `ferrodyn run` integrates: build_system() plus, for a vehicle scene, the
+/// output block's sensors and in-run anti-alias filters (extra states and signals).
+[[nodiscard]] std::unique_ptr<vehicle::OdeSystem> build_run_system(const Scene& scene, double speed,
+                                                                   const ModelResources& resources);
+
 /// The state the system is linearised about: the static equilibrium at t = 0 for a vehicle
 /// model, zero for suspended_wheelset.
 [[nodiscard]] std::vector<double> equilibrium_state(const Scene& scene,

@@ -13,6 +13,7 @@
 #include "ferro/scenarios/track_config.hpp"
 #include "ferro/scenarios/yaml_reader.hpp"
 #include "ferro/vehicle/integrator.hpp"
+#include "ferro/vehicle/output_signals.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
 
@@ -30,6 +31,9 @@ struct ModelConfig {
   /// (vehicle file, then the scene's contact and track parts).
   vehicle::VehicleConfig vehicle;
   vehicle::ModelSelection selection;  ///< type vehicle
+  /// type vehicle: the vehicle file's `category` (coach | locomotive | power_car | wagon; ""
+  /// when not given), on which the assessment's limits depend.
+  std::string category;
 };
 
 struct ContactConfig {
@@ -55,12 +59,30 @@ struct OutputConfig {
   double flush_seconds = 0.5;       ///< flush to disk at least this often (wall clock) [s]
   std::vector<std::string> csv;     ///< signals also written to CSV ("all" for every one)
   std::vector<std::string> plots;   ///< signals plotted by `ferrodyn run` (empty: the states)
+  /// Vehicle scenes: sensors of the run (standard positions resolved against the vehicle;
+  /// sensors.hpp); the standard positions of the modelled bodies when the key is absent.
+  std::vector<vehicle::SensorSpec> sensors;
+  /// Vehicle scenes: corner of the in-run anti-alias low-pass of the wheel forces and sensor
+  /// accelerations [Hz]; 0: none.
+  double anti_alias_frequency = 50.0;
+  int anti_alias_order = 4;  ///< of that Butterworth low-pass: 2, 4, 6 or 8
+  /// Vehicle scenes: also each contact point's creep forces, places, ... (signals point_k.*).
+  bool contact_points = false;
+  /// Floor height of the standard floor sensors above the top of rail [m]; NaN: the car
+  /// body's centre of mass.
+  double floor_height = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct EigenConfig {
   double speed_min = 1.0;    ///< [m/s]
   double speed_max = 150.0;  ///< [m/s]
   int points = 150;          ///< speeds in the sweep
+};
+
+/// How `ferrodyn assess` treats a run of the scene.
+struct AssessmentConfig {
+  /// The run is the standard's twist test: the wheel unloading dQ/Q0 is assessed too.
+  bool twist_test = false;
 };
 
 struct Scene {
@@ -76,6 +98,7 @@ struct Scene {
   vehicle::IntegratorSettings solver;
   OutputConfig output;
   EigenConfig eigen;
+  AssessmentConfig assessment;
 };
 
 /// A value given by key in place of the file's: the dotted key path from the scene's root

@@ -20,14 +20,21 @@ namespace ferro::scenarios {
 
 inline constexpr int kVehicleSchemaVersion = 1;
 
+/// Categories of the key `category`, on which the standards' limits depend (EN 14363: the
+/// track-shift factor alpha is 1 for locomotives, power cars and coaches, 0.85 for wagons).
+[[nodiscard]] const std::vector<std::string>& vehicle_categories();
+
 /// Reads a vehicle description (the mapping `r`, e.g. a file's root or an inline `vehicle:`
-/// block). Throws YamlInputError at the offending key.
-[[nodiscard]] vehicle::VehicleConfig read_vehicle(MapReader& r);
+/// block). Throws YamlInputError at the offending key. `category` (when given) receives the
+/// key `category` ("" when absent).
+[[nodiscard]] vehicle::VehicleConfig read_vehicle(MapReader& r, std::string* category = nullptr);
 
 /// Loads a vehicle file (with `schema_version: 1`).
-[[nodiscard]] vehicle::VehicleConfig load_vehicle_file(const std::string& path);
+[[nodiscard]] vehicle::VehicleConfig load_vehicle_file(const std::string& path,
+                                                       std::string* category = nullptr);
 /// The same from a file already parsed (e.g. with values replaced by key).
-[[nodiscard]] vehicle::VehicleConfig read_vehicle_file(const YamlFile& file);
+[[nodiscard]] vehicle::VehicleConfig read_vehicle_file(const YamlFile& file,
+                                                       std::string* category = nullptr);
 
 /// Reads wheel-rail keys into `spec`, changing only the keys present (so a scene's contact
 /// part can override the vehicle file's wheel_rail block). Does not call r.finish(): `extra`

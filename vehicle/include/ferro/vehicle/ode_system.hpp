@@ -40,6 +40,12 @@ class OdeSystem {
   /// Optional half-bandwidths of the Jacobian (upper, lower) for banded linear solvers;
   /// {-1, -1} when unknown (dense).
   [[nodiscard]] virtual std::pair<int, int> jacobian_bandwidth() const { return {-1, -1}; }
+  /// Output states, increasing: filters of the system's own quantities integrated with it (a
+  /// low-pass of a force before the output grid samples it). No derivative of another state
+  /// depends on them, and theirs are affine in them with a constant matrix. The adaptive
+  /// SUNDIALS integrators leave them out of the error test, and the dense Newton solver solves
+  /// them after the other states by substitution. Default: none.
+  [[nodiscard]] virtual std::vector<std::size_t> output_states() const { return {}; }
   /// Optional scale of each state's absolute tolerance (atol_i = atol * scale_i), size() entries;
   /// empty when every state takes atol as it is. A model gives the rate of a stiff, fast
   /// component the natural frequency of that component as its scale: an error dv in the rate

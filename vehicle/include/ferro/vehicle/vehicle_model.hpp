@@ -66,10 +66,40 @@
 //   wheelset_i.<side>.contact_angle [rad]  of that point, + when the normal leans towards the
 //                                     track centre (flange contact ~ +1.2 rad)
 //   wheelset_i.<side>.points [-]      number of contact points carrying load
+//   wheelset_i.<side>.point_k.normal_force [N]  of the first three loaded points (source order)
+//   wheelset_i.<side>.in_contact [-]  1 with a loaded point, 0 lifted
+//   wheelset_i.<side>.creep_force_x, .creep_force_y [N], .spin_moment [N m], .wear_number [N]:
+//                                     tangential forces on the wheel in each point's contact
+//                                     frame, moment about its normal, T gamma = Tx cx + Ty cy
+//                                     (T the creep force on the rail, c the creepages: the
+//                                     frictional energy per metre rolled without the spin
+//                                     term, slightly negative where spin dominates), summed
+//   wheelset_i.<side>.rolling_radius, .contact_wheel_y, .contact_rail_y [m], .semi_axis_a,
+//                                     .semi_axis_b [m], .peak_pressure [Pa]: of the most loaded
+//                                     point (places in profile coordinates)
+//   wheelset_i.<side>.point_k.{creep_force_x, creep_force_y, spin_moment, wear_number,
+//                                     contact_angle, rolling_radius, wheel_y, rail_y,
+//                                     peak_pressure}: the same per loaded point (with
+//                                     OutputSignalsSpec::contact_point_details)
+//   wheelset_i.rolling_radius_difference [m]  left minus right, most loaded points
+//   wheelset_i.angle_of_attack [rad]  the wheelset's yaw relative to its rails' actual direction
+//                                     (irregularities and rail deflection included)
+//   Undefined quantities of a lifted wheel (no loaded point) read 0 (forces, places, angles,
+//   radii; the rolling-radius difference of a wheelset with a lifted wheel): in_contact tells;
+//   sources without profiles (conical, imported) give 0 profile coordinates.
 //   car_body.ay [m/s^2]               lateral acceleration an accelerometer fixed to the car
 //                                     body's centre of mass reads (non-gravitational force / m
 //                                     in the body's axes; absent when there is no car body)
 //   position [m], speed [m/s]         of the reference point (arc length, V)
+// With inputs.outputs (OutputSignalsSpec), for each sensor <name>:
+//   <name>.ax, .ay, .az [m/s^2]       what an accelerometer fixed to the body at the point
+//                                     reads, in body axes: the specific force (acceleration
+//                                     minus gravity; az reads +g at rest on level track)
+//   <name>.dx, .dy, .dz [m]           displacement of the point from its rest position, axes of
+//                                     the body's track frame
+// and, with an anti-alias frequency, each wheel's Y and Q and each sensor's accelerations
+// through the low-pass (states "<signal>.filter_<k>" and "<signal>.filter_<k>_rate"):
+//   wheelset_i.<side>.Y_filtered, .Q_filtered [N], <name>.ax_filtered, ... [m/s^2]
 //
 // References: Toumi (2016) eqs. (24)-(27) (creepages), (38)-(40) and (150)-(156) (creep forces,
 // K_ij, single wheelset); Wickens, "Fundamentals of Rail Vehicle Dynamics" (2003) ch. 2
@@ -99,6 +129,7 @@
 #include "ferro/track/track.hpp"
 #include "ferro/track/track_structure.hpp"
 #include "ferro/vehicle/ode_system.hpp"
+#include "ferro/vehicle/output_signals.hpp"
 #include "ferro/vehicle/vehicle_config.hpp"
 
 namespace ferro::vehicle {
@@ -123,6 +154,7 @@ struct VehicleModelInputs {
   std::shared_ptr<const contact::ContactGeometrySource> geometry;  ///< required
   SpeedProfile speed;
   double start_position = 0.0;  ///< arc length of the vehicle reference point (x = 0) at t = 0 [m]
+  OutputSignalsSpec outputs;    ///< sensors and anti-alias filters (none by default)
 };
 
 namespace detail {
@@ -154,6 +186,8 @@ class VehicleModel final : public OdeSystem {
   /// Half-bandwidths from the coupling structure (suspension elements, contact) and the state
   /// order.
   [[nodiscard]] std::pair<int, int> jacobian_bandwidth() const override;
+  /// The anti-alias filters' states (OutputSignalsSpec).
+  [[nodiscard]] std::vector<std::size_t> output_states() const override;
   /// 1 for every state but the rates of the co-running track's bodies, which take the natural
   /// frequency of the body on its pads or ballast (sqrt(k / m)) [1/s].
   [[nodiscard]] std::vector<double> tolerance_scales() const override;

@@ -6,17 +6,17 @@
 #include <string>
 #include <vector>
 
-#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
 
 namespace ferro::scenarios::analysis {
 
-/// Per wheel: peak Y/Q of the sliding mean, Nadal's limit, peak unloading; per axle: peak sum Y
-/// against Prud'homme's limit; the verdict.
-[[nodiscard]] std::string derailment_report(const std::string& run_file,
-                                            const DerailmentOptions& options,
-                                            const DerailmentReport& report);
+/// The vehicle, category and sections; f0 and Nadal's mu; per group a table of quantity, item,
+/// value, limit, position, section and verdict: every row (`all_rows`) or, per quantity and item,
+/// its worst section (largest value / limit, else value); the notes; the verdict.
+[[nodiscard]] std::string assessment_report(const std::string& run_file, const Assessment& assessment,
+                                            bool all_rows = false);
 /// The ramp, the speed where the envelope decays for good and where its growth turns to decay.
 [[nodiscard]] std::string ramp_report(const RampStudy& study, const RampRequest& request);
 /// The branch's points (amplitudes of each wheelset in mm), the fold and its onset, the Hopf

@@ -2,9 +2,9 @@
 // The critical-speed studies of a scene as the command line and the Python module ask for
 // them: a decelerating ramp, the periodic branch followed down to its fold (bifurcation), and
 // the fold against the Kalker reduction factors (K_ij study, over threads); and the options of
-// the derailment assessment of a run. Each request holds
-// the user's numbers (SI) and checks them; errors name the value as a key or as an option
-// (see Spelling). The sweep of independent points is in sweep.hpp.
+// the assessment of a run (EN 14363 / UIC 518 / EN 12299). Each request holds the user's numbers
+// (SI unless the key names its unit) and checks them; errors name the value as a key or as an
+// option (see Spelling). The sweep of independent points is in sweep.hpp.
 
 #include <cmath>
 #include <functional>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ferro/scenarios/analysis/critical_speed.hpp"
-#include "ferro/scenarios/analysis/derailment.hpp"
+#include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/overrides.hpp"
@@ -103,15 +103,20 @@ struct KijStudy {
     const std::function<void(const KijRow&, std::size_t, std::size_t)>& on_row = {},
     Spelling spelling = Spelling::key);
 
-/// The derailment assessment's options as a user gives them.
-struct DerailmentRequest {
-  double mu = 0.36;                ///< friction coefficient in Nadal's formula [-], [0, 2)
-  double flange_angle_deg = -1.0;  ///< [deg] in (0, 90); <= 0: each wheel's largest angle
-  double q0 = -1.0;                ///< static wheel load Q0 [N]; < 0: the first sample
-  double window = 2.0;             ///< sliding-mean window [m]
-  double step = 0.5;               ///< sliding-mean sampling step [m]
+/// The assessment's options as a user gives them (unset: the run's or the standard's value).
+struct AssessmentRequest {
+  double mu = NAN;                 ///< friction coefficient in Nadal's limit [-], [0, 2); NaN: the run's
+  double flange_angle_deg = -1.0;  ///< [deg] in (0, 90); <= 0: each wheel's largest contact angle
+  double section_length = 0.0;     ///< > 0: statistics over windows of this length [m] instead
+                                   ///< of the scene's sections
+  double f0 = NAN;                 ///< instability frequency [Hz]; NaN: from the run's spectrum
+  double floor_offset = 1.0;       ///< lateral offset of the vertical floor points [m], >= 0
+  double y_over_q_limit = 0.8;     ///< (Y/Q) limit of the 2 m mean [-], > 0
+  std::string category;            ///< coach | locomotive | power_car | wagon; "": the run's
+  bool twist_test = false;         ///< assess the wheel unloading dQ/Q0 too
+  bool no_twist_test = false;      ///< do not, even when the scene says it is the twist test
 };
-[[nodiscard]] DerailmentOptions derailment_options(const DerailmentRequest& request,
+[[nodiscard]] AssessmentOptions assessment_options(const AssessmentRequest& request,
                                                    Spelling spelling = Spelling::key);
 
 /// Each request's values as parameters (see parameters.hpp); a branch's include its settle
@@ -120,6 +125,6 @@ struct DerailmentRequest {
 [[nodiscard]] Parameters parameters(RampRequest& request);
 [[nodiscard]] Parameters parameters(BranchRequest& request);
 [[nodiscard]] Parameters parameters(KijStudyRequest& request);
-[[nodiscard]] Parameters parameters(DerailmentRequest& request);
+[[nodiscard]] Parameters parameters(AssessmentRequest& request);
 
 }  // namespace ferro::scenarios::analysis
