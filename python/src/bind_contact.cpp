@@ -12,6 +12,7 @@
 #include "ferro/contact/normal/normal_model.hpp"
 #include "ferro/contact/tangential/tangential_model.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
+#include "ferro/scenarios/overrides.hpp"
 #include "ferro/scenarios/pair_file.hpp"
 #include "ferro/scenarios/pose_search.hpp"
 
@@ -57,7 +58,7 @@ std::span<const double> span_of(const Column& c) {
 }
 
 py::dict tangential(const std::string& model_name, const py::object& options, const py::kwargs& kw) {
-  const fc::ModelOptions o = model_options(options);
+  const fc::ModelOptions o = scenarios::with_environment_options(model_name, model_options(options));
   std::unique_ptr<fc::TangentialModel> model;
   fc::CoefficientSource source{};
   scenarios::EvalInput defaults;
@@ -258,10 +259,11 @@ void bind_contact(py::module_& m) {
       "the same numbers to the last bit). Each case value is a number or a 1-D array (one\n"
       "value per case); the patch comes from the semi-axes (a, b) or the curvatures\n"
       "(curvature_x, curvature_y) with the load. options: the model's options ({'mx': 20,\n"
-      "'coefficients': 'voco_fit', ...}). Returns arrays, one value per case: semi_axis_x,\n"
-      "semi_axis_y [m], peak_pressure [Pa], force_x, force_y [N], moment_z [N m] (on the wheel\n"
-      "from the rail), adhesion_fraction [-] (NaN when the model has none), c11, c22, c23, c33\n"
-      "[-] (Kalker's coefficients used, K_ij applied). Case:\n" +
+      "'coefficients': 'voco_fit', ...}; mim_table without 'table' reads $FERRO_MIM_TABLE).\n"
+      "Returns arrays, one value per case: semi_axis_x, semi_axis_y [m], peak_pressure [Pa],\n"
+      "force_x, force_y [N], moment_z [N m] (on the wheel from the rail), adhesion_fraction [-]\n"
+      "(NaN when the model has none), c11, c22, c23, c33 [-] (Kalker's coefficients used, K_ij\n"
+      "applied). Case:\n" +
       parameter_doc(scenarios::select_parameters(
           scenarios::parameters(case_keys),
           {"a", "b", "curvature_x", "curvature_y", "fn", "g1", "nu1", "g2", "nu2", "mu", "xi_x",

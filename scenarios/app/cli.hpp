@@ -27,12 +27,6 @@ namespace ferro::cli {
 
 using VerbHandler = std::function<int()>;
 
-/// What the environment gives a tangential model the command line names (the program reads the
-/// environment, the library never does): mim_table without a "table" option gets
-/// table = $FERRO_MIM_TABLE when that is set. Other models: `options` unchanged.
-[[nodiscard]] std::map<std::string, std::string> with_environment_options(
-    const std::string& model, std::map<std::string, std::string> options = {});
-
 /// The eigenvalue sweep as `eig` and `critical-speed eigen` print it: per speed (at most
 /// `max_rows`, evenly strided) the least damped hunting mode (damping ratio, frequency, shape)
 /// and the least damped mode of each other class apart; the Hopf speed (a hunting mode

@@ -1,6 +1,5 @@
-// Flags shared by every verb and what the environment adds to them (see cli.hpp).
+// Flags shared by every verb (see cli.hpp).
 #include <CLI/CLI.hpp>
-#include <cstdlib>
 
 #include "cli.hpp"
 #include "ferro/scenarios/overrides.hpp"
@@ -49,15 +48,6 @@ void add_parameters(CLI::App* cmd, const std::vector<scenarios::Parameter>& para
       o->delimiter(',');
     if (p.has_default) o->capture_default_str();
   }
-}
-
-std::map<std::string, std::string> with_environment_options(
-    const std::string& model, std::map<std::string, std::string> options) {
-  if (model == "mim_table" && options.count("table") == 0) {
-    const char* table = std::getenv("FERRO_MIM_TABLE");
-    if (table != nullptr && *table != '\0') options["table"] = table;
-  }
-  return options;
 }
 
 }  // namespace ferro::cli

@@ -25,6 +25,7 @@
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
+#include "ferro/scenarios/overrides.hpp"
 #include "plotting.hpp"
 
 namespace ferro::cli {
@@ -124,7 +125,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
         return kExitOk;
       }
       const auto model =
-          fc::make_tangential_model(input.model, with_environment_options(input.model, options));
+          fc::make_tangential_model(input.model,
+                                    scenarios::with_environment_options(input.model, options));
       print_json(input, scenarios::evaluate_contact(input, *model, source));
       return kExitOk;
     };

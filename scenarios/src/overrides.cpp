@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "ferro/scenarios/run.hpp"
@@ -24,7 +25,10 @@ void apply_simulation(Scene& scene, const RunOverrides& o, Spelling sp) {
           fmt::format("{}: must be > 0 m/s, got {}", spelled("speed", sp), o.speed));
     scene.simulation.speed = o.speed;
   }
-  if (!o.tangential.empty()) override_tangential(scene, o.tangential, spelled("tangential", sp));
+  if (!o.tangential.empty()) {
+    override_tangential(scene, o.tangential, spelled("tangential", sp),
+                        with_environment_options(o.tangential));
+  }
   if (!std::isnan(o.t_end) || !std::isnan(o.speed)) {
     const std::string problem = track_extent_problem(scene, scene.simulation.t_end);
     if (!problem.empty()) {
@@ -89,6 +93,14 @@ void apply_eigen_range(Scene& scene, const RunOverrides& o, Spelling sp) {
 
 }  // namespace
 
+contact::ModelOptions with_environment_options(const std::string& model,
+                                               contact::ModelOptions options) {
+  if (model == "mim_table" && options.count("table") == 0) {
+    const char* table = std::getenv("FERRO_MIM_TABLE");
+    if (table != nullptr && *table != '\0') options["table"] = table;
+  }
+  return options;
+}
 
 Parameters parameters(RunOverrides& o) {
   return {

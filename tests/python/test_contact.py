@@ -63,6 +63,28 @@ def test_every_tangential_model_matches_the_program_bitwise(model, tmp_path, req
         assert same_bits(r[key], ref[key]), key
 
 
+def test_mim_table_from_the_environment_as_the_program(mim_table, scenes, tmp_path, monkeypatch):
+    """$FERRO_MIM_TABLE gives mim_table its table when none is named, from Python as in the
+    program: the same forces as the table given by option, the same run as `ferrodyn run
+    --tangential mim_table` under the same environment."""
+    monkeypatch.setenv("FERRO_MIM_TABLE", str(mim_table))
+    c = cases()
+    by_env = ferrodyn.contact.tangential("mim_table", **c)
+    by_option = ferrodyn.contact.tangential("mim_table", options={"table": str(mim_table)}, **c)
+    assert same_bits(by_env["force_y"], by_option["force_y"])
+    scene = scenes / "cooperrider_straight.yaml"
+    out = tmp_path / "cli.h5"
+    cli("run", scene, "--tangential", "mim_table", "--t-end", "0.2", "-o", out, "--no-plots", "-q")
+    r = ferrodyn.run(ferrodyn.Scene(scene), tangential="mim_table", t_end=0.2)
+    ref = ferrodyn.read(out)
+    assert r.metadata["tangential_model"] == "mim_table"
+    for name in ("wheelset_1.y", "wheelset_1.left.Y"):
+        assert same_bits(r[name], ref.signals[name]), name
+    monkeypatch.delenv("FERRO_MIM_TABLE")
+    with pytest.raises(ferrodyn.SceneError, match="table"):
+        ferrodyn.run(ferrodyn.Scene(scene), tangential="mim_table", t_end=0.2)
+
+
 def test_arrays_broadcast_and_scalars():
     xi = np.linspace(0.0, 5e-3, 50)
     r = ferrodyn.contact.tangential("fastsim", a=6e-3, b=5e-3, fn=8e4, mu=0.3, xi_y=xi)

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "ferro/contact/model_options.hpp"
 #include "ferro/scenarios/parameters.hpp"
 #include "ferro/scenarios/scene.hpp"
 
@@ -30,9 +31,17 @@ struct RunOverrides {
   int points = 0;             ///< analysis.eigen.points, >= 2
 };
 
+/// What the environment gives a tangential model that the user names at run time (an override's
+/// `tangential`, the contact batch's model): mim_table without a "table" option gets
+/// table = $FERRO_MIM_TABLE when that is set. Other models: `options` unchanged. Scene files are
+/// read without it: a scene names its table itself.
+[[nodiscard]] contact::ModelOptions with_environment_options(const std::string& model,
+                                                            contact::ModelOptions options = {});
+
 /// Applies the overrides to `scene`, checking each value and the scene it makes (the vehicle
-/// stays on the designed track; the output sample count stays bounded). Throws
-/// std::invalid_argument whose message starts with the value's spelled name.
+/// stays on the designed track; the output sample count stays bounded). A tangential model
+/// given here takes its options from with_environment_options. Throws std::invalid_argument
+/// whose message starts with the value's spelled name.
 void apply_overrides(Scene& scene, const RunOverrides& overrides,
                      Spelling spelling = Spelling::key);
 
