@@ -36,10 +36,12 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "integrator_impl.hpp"
@@ -99,15 +101,64 @@ class Bdf2 final : public Integrator {
     }
     ++jacobians_;
     jacobian_age_ = 0;
-    matrix_gamma_h_ = -1.0;  // the Newton matrix must be refactored
+    factors_.clear();  // the Newton matrices must be refactored
   }
 
-  void factor(double gamma_h) {
-    if (gamma_h == matrix_gamma_h_) return;
-    lu_.compute(Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(n_),
-                                          static_cast<Eigen::Index>(n_)) -
-                gamma_h * jacobian_);
-    matrix_gamma_h_ = gamma_h;
+  /// The factored Newton matrix I - gamma_h J of the current Jacobian, solved by blocks when
+  /// the output states feed nothing back (J block lower-triangular): the other states first,
+  /// then the output states from theirs.
+  struct Factor {
+    double gamma_h = 0.0;
+    Eigen::PartialPivLU<Eigen::MatrixXd> states;   ///< I - gamma_h J over the states
+    Eigen::PartialPivLU<Eigen::MatrixXd> outputs;  ///< over the output states (block case)
+    Eigen::SparseMatrix<double> coupling;          ///< -gamma_h J(outputs, states) (block case)
+  };
+
+  /// A step alternates between a few values of gamma_h (BDF2's 2h/3, the implicit-Euler halves
+  /// of a split step): each is factored once per Jacobian and kept.
+  const Factor& factor(double gamma_h) {
+    constexpr std::size_t kKept = 6;
+    for (const Factor& f : factors_) {
+      if (f.gamma_h == gamma_h) return f;
+    }
+    if (factors_.size() >= kKept) factors_.erase(factors_.begin());
+    Factor f;
+    f.gamma_h = gamma_h;
+    if (output_index_.empty()) {
+      const auto n = static_cast<Eigen::Index>(n_);
+      f.states.compute(Eigen::MatrixXd::Identity(n, n) - gamma_h * jacobian_);
+    } else {
+      const auto ns = static_cast<Eigen::Index>(state_index_.size());
+      const auto no = static_cast<Eigen::Index>(output_index_.size());
+      f.states.compute(Eigen::MatrixXd::Identity(ns, ns) -
+                       gamma_h * jacobian_(state_index_, state_index_));
+      f.outputs.compute(Eigen::MatrixXd::Identity(no, no) -
+                        gamma_h * jacobian_(output_index_, output_index_));
+      // The outputs' dependence on the states, by the pattern's entries (a few per row).
+      std::vector<Eigen::Triplet<double>> entries;
+      for (std::size_t k = 0; k < state_index_.size(); ++k) {
+        const auto j = state_index_[k];
+        for (const int i : pattern_[static_cast<std::size_t>(j)]) {
+          const Eigen::Index slot = output_slot_[static_cast<std::size_t>(i)];
+          if (slot >= 0) entries.emplace_back(slot, static_cast<Eigen::Index>(k), -gamma_h * jacobian_(i, j));
+        }
+      }
+      f.coupling.resize(no, ns);
+      f.coupling.setFromTriplets(entries.begin(), entries.end());
+    }
+    factors_.push_back(std::move(f));
+    return factors_.back();
+  }
+
+  /// (I - gamma_h J)^-1 b.
+  [[nodiscard]] Vector solve(const Factor& f, const Vector& b) const {
+    if (output_index_.empty()) return f.states.solve(b);
+    const Vector ds = f.states.solve(Vector(b(state_index_)));
+    const Vector dout = f.outputs.solve(Vector(b(output_index_) - f.coupling * ds));
+    Vector d(n_);
+    d(state_index_) = ds;
+    d(output_index_) = dout;
+    return d;
   }
 
   [[nodiscard]] double wrms(const Vector& d, const Vector& y) const {
@@ -124,7 +175,7 @@ class Bdf2 final : public Integrator {
     // Divergence: a correction more than twice the previous one (a contraction near 1 may still
     // converge within the iterations allowed, and a split step costs a refactorisation).
     constexpr double kRdiv = 2.0;
-    factor(gamma_h);
+    const Factor& matrix = factor(gamma_h);
     Vector f(n_), r(n_), d(n_);
     double previous = 0.0, rho = 0.0;
     for (int it = 0; it < 8; ++it) {
@@ -135,7 +186,7 @@ class Bdf2 final : public Integrator {
       }
       ++iterations_;
       r = y - psi - gamma_h * f;
-      d = lu_.solve(-r);
+      d = solve(matrix, -r);
       if (!d.allFinite()) return false;
       y += d;
       const double norm = wrms(d, y);
@@ -168,8 +219,10 @@ class Bdf2 final : public Integrator {
   std::size_t tested_ = 0;  ///< states in the convergence test (all but the output states)
   std::vector<std::vector<int>> pattern_, groups_;  ///< Jacobian sparsity and column groups
   Eigen::MatrixXd jacobian_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  double matrix_gamma_h_ = -1.0;
+  std::vector<Factor> factors_;
+  /// The output states and the others, when the outputs feed nothing back (else both empty).
+  std::vector<Eigen::Index> state_index_, output_index_;
+  std::vector<Eigen::Index> output_slot_;  ///< per state: its index among the outputs, or -1
   long jacobian_age_ = 0, jacobians_ = 0, rhs_count_ = 0, splits_ = 0, iterations_ = 0;
   bool slow_ = false;
 };
@@ -219,6 +272,25 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   for (const std::size_t i : outputs)
     atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
   tested_ = std::max<std::size_t>(1, n_ - outputs.size());
+  state_index_.clear();
+  output_index_.clear();
+  factors_.clear();
+  if (!outputs.empty() && !pattern_.empty()) {
+    std::vector<char> is_output(n_, 0);
+    for (const std::size_t i : outputs) is_output[i] = 1;
+    // Block-triangular only if no output column reaches a row of the other states.
+    bool feeds_back = false;
+    for (const std::size_t j : outputs) {
+      for (const int i : pattern_[j]) feeds_back = feeds_back || !is_output[static_cast<std::size_t>(i)];
+    }
+    if (!feeds_back) {
+      output_slot_.assign(n_, -1);
+      for (std::size_t i = 0; i < n_; ++i) {
+        if (is_output[i] != 0) output_slot_[i] = static_cast<Eigen::Index>(output_index_.size());
+        (is_output[i] ? output_index_ : state_index_).push_back(static_cast<Eigen::Index>(i));
+      }
+    }
+  }
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
   IntegrationResult result;
   const double h = s_.fixed_step;
