@@ -83,6 +83,18 @@ std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
 
 }  // namespace
 
+void check_output_on_steps(double interval, const vehicle::IntegratorSettings& solver,
+                           const std::string& where) {
+  if (!(solver.fixed_step > 0.0) || !vehicle::takes_fixed_step(solver.method)) return;
+  const double ratio = interval / solver.fixed_step;
+  if (ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio) return;
+  throw std::invalid_argument(fmt::format(
+      "{}: {} s is not a whole multiple of solver.fixed_step {} s ({} at a fixed step samples "
+      "at its steps only: forces between steps would come from interpolated states); choose "
+      "an interval of k x {} s, or a step that divides {} s",
+      where, interval, solver.fixed_step, solver.method, solver.fixed_step, interval));
+}
+
 std::uint64_t output_sample_count(double t_end, double interval, const std::string& where) {
   if (!(interval > 0.0) || !std::isfinite(interval)) {
     throw std::invalid_argument(
@@ -164,6 +176,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
 
   const double t_end = scene.simulation.t_end, interval = scene.output.interval;
   const std::uint64_t n_times = output_sample_count(t_end, interval);
+  check_output_on_steps(interval, scene.solver);
   const std::uint64_t n_regular = static_cast<std::uint64_t>(std::floor(t_end / interval + 1e-9)) + 1;
   auto integrator = vehicle::make_integrator(scene.solver);
   const auto csv_names = resolve_csv(options.csv.value_or(scene.output.csv), summary.channels);

@@ -378,6 +378,7 @@ Scene load_scene(const std::string& path) {
     v.interval = o.number_or("interval", v.interval);
     if (!(v.interval > 0.0)) o.fail("interval", fmt::format("must be > 0 s, got {}", v.interval));
     validated(o, [&] { (void)output_sample_count(scene.simulation.t_end, v.interval, "interval"); });
+    validated(o, [&] { check_output_on_steps(v.interval, scene.solver, "interval"); });
     v.flush_seconds = o.number_or("flush_seconds", v.flush_seconds);
     if (!(v.flush_seconds > 0.0))
       o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));

@@ -76,6 +76,12 @@ void write_eigen_report(const Scene& scene, const EigenReport& report, const std
 /// that would give more than kMaxOutputSamples samples.
 [[nodiscard]] std::uint64_t output_sample_count(double t_end, double interval,
                                                 const std::string& where = "output.interval");
+/// For a fixed-step integrator, the output interval must be a whole multiple of the step: a
+/// sample between two steps would interpolate the states, and the contact forces derived from
+/// interpolated states are not the model's (an error of a micrometre in a Hertz approach of
+/// fifty is a tenth of the wheel load). Throws std::invalid_argument ("<where>: ...") otherwise.
+void check_output_on_steps(double interval, const vehicle::IntegratorSettings& solver,
+                           const std::string& where = "output.interval");
 /// At most this many output samples per run (8 TB per signal): anything beyond is a typo.
 inline constexpr double kMaxOutputSamples = 1e12;
 
