@@ -4,12 +4,13 @@
 // damped normal contact (Hunt-Crossley alpha = 3 s/m) by the order-3 Bogacki-Shampine formula
 // at a fixed 1 ms step, as Odeint's generic stepper (odeint_bs3) and as ARKODE's order-3 method
 // (the same formula; the difference is each package's work per step). The CPU column of
-// "second" is the CPU time per simulated second.
+// "second" is the CPU time per simulated second. The vehicle is the shipped vehicle file
+// (scenarios/vehicles/manchester_vehicle1.yaml) on conical wheel-rail geometry.
 #include <benchmark/benchmark.h>
 
 #include <string>
 
-#include "../tests/vehicle/manchester_config.hpp"
+#include "ferro/scenarios/vehicle_file.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
@@ -19,7 +20,8 @@ using namespace ferro::vehicle;
 
 std::unique_ptr<VehicleModel> manchester(const std::string& tangential, double alpha = 0.0) {
   VehicleModelInputs in;
-  in.config = testing::manchester_vehicle1(9.81);
+  in.config = ferro::scenarios::load_vehicle_file(std::string(FERRO_SOURCE_DIR) +
+                                                  "/scenarios/vehicles/manchester_vehicle1.yaml");
   WheelRailSpec& wr = in.config.wheel_rail;
   wr.geometry = "conical";
   wr.nominal_radius = 0.46;

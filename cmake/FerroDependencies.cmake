@@ -9,6 +9,7 @@ find_package(CLI11 REQUIRED CONFIG)
 find_package(fmt REQUIRED CONFIG)
 find_package(nlohmann_json 3 REQUIRED CONFIG)  # JSON output of the command line
 find_package(Threads REQUIRED)
+find_package(MPI COMPONENTS C QUIET)           # optional: the sweep's MPI executor
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 

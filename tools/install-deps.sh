@@ -7,6 +7,7 @@ PACKAGES=(
   libeigen3-dev libsundials-dev libboost-dev libyaml-cpp-dev libhdf5-dev libfftw3-dev
   libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
+  python3-dev pybind11-dev python3-pytest python3-pandas
   libgetfem-dev libsuitesparse-dev
   libopenmpi-dev openmpi-bin
 )

@@ -4,7 +4,8 @@
 #                              (ctest label "slow"), build dir build/
 #   tools/test.sh --fast       the default tests only (everything not labelled "slow")
 #   tools/test.sh --slow       the slow validations only
-#   tools/test.sh --sanitize   the default tests under ASan+UBSan, build dir build-asan/
+#   tools/test.sh --sanitize   the default tests under ASan+UBSan, build dir build-asan/ (the
+#                              Python module is left out: the interpreter is not instrumented)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
@@ -16,7 +17,8 @@ run_slow=1
 for arg in "$@"; do
   case "$arg" in
     --sanitize) build=build-asan; run_slow=0
-                cmake_args=(-DCMAKE_BUILD_TYPE=Debug -DFERRO_SANITIZE=ON -DFERRO_BUILD_BENCH=OFF) ;;
+                cmake_args=(-DCMAKE_BUILD_TYPE=Debug -DFERRO_SANITIZE=ON -DFERRO_BUILD_BENCH=OFF
+                            -DFERRO_BUILD_PYTHON=OFF) ;;
     --fast) run_slow=0 ;;
     --slow) run_default=0 ;;
     *) echo "test.sh: unknown option '$arg' (allowed: --fast, --slow, --sanitize)" >&2; exit 2 ;;

@@ -15,7 +15,9 @@
 #include "cli.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/contact_bench.hpp"
-#include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/parameters.hpp"
+#include "plotting.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/scenarios/work_precision.hpp"
 
@@ -35,88 +37,22 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       "error in mu Fn with and without spin, M_z error; writes bench_contact.csv and "
       "bench_contact.png");
   add_output_option(contact, *out, "output folder", {"--out"})->capture_default_str();
-  contact->add_option("--reference-elements", opt->reference_elements,
-                      "reference MIM: N (grids N x N and 2N x 2N over the patch)")
-      ->capture_default_str();
-  contact->add_option("--reference", opt->reference,
-                      "reference CSV: read when it holds this case set, else computed and written "
-                      "(shipped: tests/data/contact_bench_reference.csv)");
-  contact->add_option("--threads", opt->threads, "threads of the reference computation")
-      ->capture_default_str();
-  contact->add_option("--table", opt->table,
-                      "mim_table HDF5 file (default: build the default table)");
-  contact->add_option("--min-time", opt->min_time_s, "timing: minimum CPU seconds per model")
-      ->capture_default_str();
-  contact->add_flag("--quick", opt->quick, "15 cases, coarse reference and table (smoke test)");
+  add_parameters(contact, scenarios::parameters(*opt));
   add_no_plots_flag(contact, *no_png, {"--no-png"});
   contact->callback([&handler, opt, out, no_png] {
     handler = [opt, out, no_png] {
-      if (opt->reference_elements < 8) {
-        throw std::invalid_argument(fmt::format("--reference-elements: must be >= 8, got {}",
-                                                opt->reference_elements));
-      }
-      if (opt->threads < 1) {
-        throw std::invalid_argument(fmt::format("--threads: must be >= 1, got {}", opt->threads));
-      }
       const scenarios::ContactBenchResult r = scenarios::run_contact_bench(*opt);
-      const int n = r.reference_elements;
-      // Grid study: pure spin (phi* = 1) and a transition creepage (0.8 at 30 deg) per a/b, at
-      // N/2, N, 2N; observed order p = log2(|F_N/2 - F_N| / |F_N - F_2N|).
-      {
-        std::vector<scenarios::ContactBenchCase> study;
-        std::vector<std::size_t> index;
-        for (std::size_t k = 0; k < r.cases.size(); ++k) {
-          const auto& c = r.cases[k];
-          const bool spin = c.kind == "spin" && c.spin == 1.0;
-          const bool creep = c.spin == 0.0 && c.kind == "x+y" && c.xi_y > 0.0 &&
-                             std::abs(std::hypot(c.xi_x, c.xi_y) - 0.8) < 1e-9 && c.xi_x > c.xi_y;
-          if (spin || creep) {
-            study.push_back(c);
-            index.push_back(k);
-          }
-        }
-        if (!study.empty() && n >= 16) {
-          const auto half = scenarios::contact_bench_reference(study, n / 2, opt->threads);
-          fmt::print("Reference grid study (MIM over the patch; F in mu F_n):\n");
-          fmt::print("| a/b | case | F_y ({0}) | F_y ({1}) | F_y ({2}) | extrapolated | order |\n"
-                     "|---|---|---|---|---|---|---|\n",
-                     n / 2, n, 2 * n);
-          for (std::size_t j = 0; j < study.size(); ++j) {
-            const auto& ref = r.reference[index[j]];
-            const double d1 = std::hypot(half[j].fx_n - ref.fx_n, half[j].fy_n - ref.fy_n);
-            const double d2 = std::hypot(ref.fx_n - ref.fx_2n, ref.fy_n - ref.fy_2n);
-            fmt::print("| {} | {} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {:.2f} |\n",
-                       study[j].ratio, study[j].kind == "spin" ? "spin 1" : "creep 0.8 @ 30 deg",
-                       half[j].fy_n, ref.fy_n, ref.fy_2n, ref.fy,
-                       d2 > 0.0 ? std::log2(d1 / d2) : 0.0);
-          }
-        }
-      }
-      double corr = 0.0;
-      for (const auto& ref : r.reference) corr += std::hypot(ref.fx - ref.fx_2n, ref.fy - ref.fy_2n);
-      fmt::print("{} Hertzian cases; reference MIM {} / {} over the patch{}, mean Richardson "
-                 "correction {:.5f} mu F_n; error = |F_t - F_t,ref| / (mu F_n); CPU time per "
-                 "evaluation\n",
-                 r.cases.size(), n, 2 * n, r.reference_from_file ? " (from file)" : "",
-                 corr / static_cast<double>(r.reference.size()));
-      fmt::print("| model | us / eval | mean | 95th pct | max | mean no spin | mean spin | M_z mean "
-                 "| max abs F |\n|---|---|---|---|---|---|---|---|---|\n");
-      for (const auto& row : r.rows) {
-        fmt::print("| {} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
-                   "|\n",
-                   row.label, row.us_per_eval, row.mean_error, row.p95_error, row.max_error,
-                   row.mean_no_spin, row.mean_spin, row.mz_mean_error, row.max_force);
-      }
+      fmt::print("{}", scenarios::contact_bench_report(r, opt->threads));
       std::filesystem::create_directories(*out);
       const std::string csv = (std::filesystem::path(*out) / "bench_contact.csv").string();
       scenarios::write_contact_bench_csv(r, csv);
       fmt::print("wrote {}\n", csv);
       if (!*no_png) {
         const std::string png = (std::filesystem::path(*out) / "bench_contact.png").string();
-        if (scenarios::run_python_tool("bench_contact_plot.py", {csv, png}) != 0) {
+        if (run_python_tool("bench_contact_plot.py", {csv, png}) != 0) {
           throw std::runtime_error(fmt::format(
               "bench_contact_plot.py failed (python {} with matplotlib needed; --no-plots skips)",
-              scenarios::python_program()));
+              python_program()));
         }
         fmt::print("wrote {}\n", png);
       }
@@ -126,8 +62,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
 
   struct WpArgs {
     std::string scene, output;
-    double t_end = NAN, speed = NAN;
-    std::string tangential;
+    scenarios::RunOverrides overrides;
     scenarios::WorkPrecisionOptions options;
     bool overwrite = false;
   };
@@ -140,41 +75,13 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
   work->add_option("scene", wp->scene, "Scene YAML file")->required();
   add_output_option(work, wp->output, "CSV file of the table (default: none)");
   add_overwrite_flag(work, wp->overwrite);
-  work->add_option("--t-end", wp->t_end, "Override simulation.t_end [s]");
-  work->add_option("--speed", wp->speed, "Override simulation.speed [m/s]");
-  work->add_option("--tangential", wp->tangential, "Override the tangential contact model");
-  work->add_option("--integrators", wp->options.integrators,
-                   "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
-                   "odeint_rosenbrock4 arkode_erk@5e-4 odeint_bs3@1e-3")
-      ->delimiter(',')
-      ->capture_default_str();
-  work->add_option("--rtols", wp->options.rtols, "relative tolerances")
-      ->delimiter(',')
-      ->capture_default_str();
-  work->add_option("--atol-per-rtol", wp->options.atol_per_rtol, "atol = rtol x this [SI]")
-      ->capture_default_str();
-  work->add_option("--reference-rtol", wp->options.reference_rtol,
-                   "tolerance of the reference run (cvode_bdf)")
-      ->capture_default_str();
-  work->add_option("--states", wp->options.states,
-                   "states compared (default: every wheelset's y and yaw)")
-      ->delimiter(',');
-  work->add_option("--target-error", wp->options.target_error,
-                   "error the recommended setting must meet [-]")
-      ->capture_default_str();
-  work->add_option("--settle", wp->options.settle,
-                   "settling time [s]: the reference runs this long first and every run starts "
-                   "from its end state (for limit cycles)")
-      ->capture_default_str();
-  work->add_option("--metric", wp->options.metric,
-                   "error that picks the best setting: pointwise (largest deviation) or cycle "
-                   "(amplitude and frequency of each compared state)")
-      ->check(CLI::IsMember({"pointwise", "cycle"}))
-      ->capture_default_str();
+  add_parameters(work, scenarios::select_parameters(scenarios::parameters(wp->overrides),
+                                                    {"t_end", "speed", "tangential"}));
+  add_parameters(work, scenarios::parameters(wp->options));
   work->callback([&handler, wp] {
     handler = [wp] {
       scenarios::Scene scene = scenarios::load_scene(wp->scene);
-      apply_run_overrides(scene, wp->t_end, wp->speed, wp->tangential);
+      scenarios::apply_overrides(scene, wp->overrides, scenarios::Spelling::option);
       if (wp->options.settle > 0.0) {
         const std::string problem = scenarios::track_extent_problem(
             scene, wp->options.settle + scene.simulation.t_end);
@@ -184,42 +91,7 @@ void add_bench_commands(CLI::App& app, VerbHandler& handler) {
       scenarios::OutputFile* table =
           wp->output.empty() ? nullptr : &outputs.claim(wp->output, "-o");
       const scenarios::WorkPrecisionReport r = scenarios::run_work_precision(scene, wp->options);
-      fmt::print("work-precision: {} ({} s simulated at {} m/s); model setup {:.3f} CPU-s\n",
-                 scene.name, r.t_end, scene.simulation.speed, r.setup_cpu_seconds);
-      fmt::print("compared: {}\n", fmt::join(r.compared_states, ", "));
-      if (r.settle > 0.0) {
-        fmt::print("settled: the reference ran {} s first ({:.3f} CPU-s); compared over [{}, {}] s\n",
-                   r.settle, r.settle_cpu_seconds, r.settle, r.settle + r.t_end);
-      }
-      for (std::size_t k = 0; k < r.compared_states.size(); ++k) {
-        const auto& c = r.reference_cycles[k];
-        fmt::print("reference {}: amplitude {:.6g}, frequency {:.6g} Hz\n", r.compared_states[k],
-                   c.amplitude, c.frequency);
-      }
-      fmt::print("| integrator | max order | rtol | atol | status | steps | rhs | CPU s | CPU s per "
-                 "simulated s | error | cycle error |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-      const auto line = [&](const scenarios::WorkPrecisionPoint& p, const char* note) {
-        fmt::print("| {}{} | {} | {:.0e} | {:.0e} | {} | {} | {} | {:.3f} | {:.4f} | {:.2e} | {:.2e} |\n",
-                   p.integrator.substr(0, p.integrator.find(':')), note,
-                   p.settings.max_order == 0 ? std::string("default")
-                                             : std::to_string(p.settings.max_order),
-                   p.settings.rtol, p.settings.atol,
-                   p.status == "completed" ? p.status
-                                           : fmt::format("{} at {:.4g} s", p.status, p.t_reached),
-                   p.steps, p.rhs_evaluations, p.cpu_seconds, p.cpu_seconds / r.t_end, p.error,
-                   p.cycle_error);
-      };
-      line(r.reference, " (reference)");
-      for (const auto& p : r.points) line(p, "");
-      if (r.best) {
-        const auto& b = r.points[*r.best];
-        fmt::print("cheapest within {} error {:.1e}: {} (max order {}) at rtol {:.0e}: {:.4f} "
-                   "CPU-s per simulated s, error {:.2e}, cycle error {:.2e}\n",
-                   r.metric, wp->options.target_error, b.integrator, b.settings.max_order,
-                   b.settings.rtol, b.cpu_seconds / r.t_end, b.error, b.cycle_error);
-      } else {
-        fmt::print("no setting met {} error {:.1e}\n", r.metric, wp->options.target_error);
-      }
+      fmt::print("{}", scenarios::work_precision_report(scene, r, wp->options));
       if (table != nullptr) {
         scenarios::write_work_precision_csv(r, table->write_path());
         table->commit();

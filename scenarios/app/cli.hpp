@@ -7,6 +7,7 @@
 // std::runtime_error for a failed run -> exit code 1. Handlers return their own exit code.
 
 #include <functional>
+#include <memory>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ class Validator;
 }
 
 namespace ferro::scenarios {
+struct Parameter;
 struct Scene;
 struct EigenReport;
 }
@@ -25,17 +27,6 @@ struct EigenReport;
 namespace ferro::cli {
 
 using VerbHandler = std::function<int()>;
-
-/// The run-time overrides of a scene (--t-end, --speed, --tangential; NaN / empty: keep the
-/// scene's value), validated with option-named messages.
-void apply_run_overrides(scenarios::Scene& scene, double t_end, double speed,
-                         const std::string& tangential);
-
-/// What the environment gives a tangential model the command line names (the program reads the
-/// environment, the library never does): mim_table without a "table" option gets
-/// table = $FERRO_MIM_TABLE when that is set. Other models: `options` unchanged.
-[[nodiscard]] std::map<std::string, std::string> with_environment_options(
-    const std::string& model, std::map<std::string, std::string> options = {});
 
 /// The eigenvalue sweep as `eig` and `critical-speed eigen` print it: per speed (at most
 /// `max_rows`, evenly strided) the least damped hunting mode (damping ratio, frequency, shape)
@@ -79,9 +70,16 @@ void check_plot_folder(const std::string& dir, const std::string& what);
 inline constexpr long kMaxJobs = 1024;
 /// Exit status of the plotting scripts when python3-matplotlib or python3-h5py is missing.
 inline constexpr int kPlotsNeedPython = 3;
+
+/// One option per parameter (scenarios/parameters.hpp): --key ('-' for '_'; -j for jobs), its
+/// help with the unit, the default shown when it has one; a switch on by default is --no-key.
+void add_parameters(CLI::App* cmd, const std::vector<scenarios::Parameter>& parameters);
 /// A hidden alias of an option that takes a value.
 template <class T>
 void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target);
+/// Once `cmd` is parsed, `handler` is set to run `verb(*args)`.
+template <class Args, class Verb>
+void on_parsed(CLI::App* cmd, VerbHandler& handler, std::shared_ptr<Args> args, Verb verb);
 
 /// Parses argv, runs the chosen verb, returns the process exit code.
 int run_main(int argc, char** argv);
@@ -110,5 +108,9 @@ namespace ferro::cli {
 template <class T>
 void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target) {
   cmd->add_option(old_name, target)->group("");
+}
+template <class Args, class Verb>
+void on_parsed(CLI::App* cmd, VerbHandler& handler, std::shared_ptr<Args> args, Verb verb) {
+  cmd->callback([&handler, args, verb] { handler = [args, verb] { return verb(*args); }; });
 }
 }  // namespace ferro::cli

@@ -1,5 +1,4 @@
-// Flags shared by every verb, what the environment adds to them, and the strict reading of
-// every option value (see cli.hpp).
+// Flags shared by every verb and the strict reading of every option value (see cli.hpp).
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,6 +13,8 @@
 #include <stdexcept>
 
 #include "cli.hpp"
+#include "ferro/scenarios/overrides.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::cli {
 namespace {
@@ -129,13 +130,35 @@ void strict_values(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) strict_values(*sub);
 }
 
-std::map<std::string, std::string> with_environment_options(
-    const std::string& model, std::map<std::string, std::string> options) {
-  if (model == "mim_table" && options.count("table") == 0) {
-    const char* table = std::getenv("FERRO_MIM_TABLE");
-    if (table != nullptr && *table != '\0') options["table"] = table;
+void add_parameters(CLI::App* cmd, const std::vector<scenarios::Parameter>& parameters) {
+  for (const scenarios::Parameter& p : parameters) {
+    const std::string name =
+        (p.key == "jobs" ? "-j," : "") + scenarios::spelled(p.key, scenarios::Spelling::option);
+    const std::string help = scenarios::parameter_help(p);
+    if (bool* const* flag = std::get_if<bool*>(&p.target)) {
+      bool* target = *flag;
+      if (*target) {
+        cmd->add_flag_function(
+            "--no-" + name.substr(2), [target](std::int64_t) { *target = false; }, "skip " + help);
+      } else {
+        cmd->add_flag(name, *target, help);
+      }
+      continue;
+    }
+    CLI::Option* o = std::visit(
+        [&](auto* target) -> CLI::Option* {
+          if constexpr (std::is_same_v<decltype(target), bool*>) {
+            return nullptr;
+          } else {
+            return cmd->add_option(name, *target, help);
+          }
+        },
+        p.target);
+    if (std::holds_alternative<std::vector<double>*>(p.target) ||
+        std::holds_alternative<std::vector<std::string>*>(p.target))
+      o->delimiter(',');
+    if (p.has_default) o->capture_default_str();
   }
-  return options;
 }
 
 }  // namespace ferro::cli

@@ -25,6 +25,8 @@
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
 #include "ferro/scenarios/contact_eval.hpp"
+#include "ferro/scenarios/overrides.hpp"
+#include "plotting.hpp"
 
 namespace ferro::cli {
 namespace {
@@ -88,32 +90,11 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   CLI::App* eval = contact->add_subcommand(
       "eval",
       "Solve a Hertzian case; prints forces on the wheel (from the rail) as JSON, SI units");
-  eval->add_option("--a", in->a, "semi-axis along rolling x [m] (with --b)");
-  eval->add_option("--b", in->b, "lateral semi-axis [m] (with --a)");
-  eval->add_option("--curvature-x", in->curvature_x, "A: longitudinal relative curvature [1/m]");
-  eval->add_option("--curvature-y", in->curvature_y, "B: lateral relative curvature [1/m]");
-  eval->add_option("--fn", in->fn, "normal load [N]");
-  eval->add_option("--g1", in->g1, "wheel shear modulus [Pa]")->capture_default_str();
-  eval->add_option("--nu1", in->nu1, "wheel Poisson ratio")->capture_default_str();
-  eval->add_option("--g2", in->g2, "rail shear modulus [Pa]")->capture_default_str();
-  eval->add_option("--nu2", in->nu2, "rail Poisson ratio")->capture_default_str();
-  eval->add_option("--mu", in->mu, "friction coefficient");
-  eval->add_option("--xi-x", in->xi_x, "longitudinal creepage [-]");
-  eval->add_option("--xi-y", in->xi_y, "lateral creepage [-]");
-  eval->add_option("--spin", in->phi, "spin creepage [1/m]");
+  add_parameters(eval, scenarios::parameters(*in));
   add_hidden_alias(eval, "--phi", in->phi);
-  eval->add_option("--model", in->model,
-                   "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, "
-                   "chopaya, polach, fastsim, fastrip, mim, mim_table")
-      ->capture_default_str();
   eval->add_option("--option", *opts,
                    "model option key=value (repeatable), e.g. mx=40, "
                    "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
-  eval->add_option("--k11", in->reduction.k11, "reduction factor K11")->capture_default_str();
-  eval->add_option("--k22", in->reduction.k22, "reduction factor K22")->capture_default_str();
-  eval->add_option("--k23", in->reduction.k23,
-                   "reduction factor K23 (default: K22, as in the thesis 4.2.4)");
-  eval->add_option("--k33", in->reduction.k33, "reduction factor K33")->capture_default_str();
   eval->add_option("--kij-table", *kij_table,
                    "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
   eval->add_option("--kij-at", *kij_at,
@@ -144,7 +125,8 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
         return kExitOk;
       }
       const auto model =
-          fc::make_tangential_model(input.model, with_environment_options(input.model, options));
+          fc::make_tangential_model(input.model,
+                                    scenarios::with_environment_options(input.model, options));
       print_json(input, scenarios::evaluate_contact(input, *model, source));
       return kExitOk;
     };
@@ -177,7 +159,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       if (!*no_png) {
         const std::string png = output_path(*curve_out, c.name, "_curves.png");
         const fc::ContactPatch& p = normal.patches.at(0);
-        scenarios::run_plot_script(
+        run_plot_script(
             "curves", csv, png,
             fmt::format("{}: a = {:.3g} mm, b = {:.3g} mm, Fn = {:.4g} kN, mu = {}", c.name,
                         p.semi_axis_x * 1e3, p.semi_axis_y * 1e3, c.normal.normal_force * 1e-3,
@@ -223,7 +205,7 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
       fmt::print("{}\n{}\n", summary.dump(2), csv);
       if (!*patch_no_png) {
         const std::string png = output_path(*patch_out, c.name, "_patch.png");
-        scenarios::run_plot_script(
+        run_plot_script(
             "patch", csv, png,
             fmt::format("{}: {} + {}, xi_x = {:.3g}, xi_y = {:.3g}, phi = {:.3g} 1/m", c.name,
                         c.normal_model, c.patch_model.label(), c.patch_creepage.longitudinal,

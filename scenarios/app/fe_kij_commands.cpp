@@ -1,397 +1,62 @@
 // `ferrodyn fe-kij CONFIG.yaml`: K_ij reduction-factor table over wheel load, interfacial-layer
-// parameters and the rail's yield stress (fe_contact), written in the docs/KIJ_TABLE.md layout (version 2), with creep and
-// derivative curves per configuration. Finished points are kept in a journal directory next to
-// the output, so an interrupted run resumes where it stopped.
+// parameters and the rail's yield stress (scenarios::FeKijStudy), with creep and derivative
+// curves per configuration; resumes an interrupted run.
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
-#include <limits>
-#include <map>
 #include <memory>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include "cli.hpp"
-#include "ferro/contact/mim/mim.hpp"
-#include "ferro/contact/kij/kij_table.hpp"
-#include "ferro/fe_contact/kij_sweep.hpp"
+#include "ferro/scenarios/fe_kij_study.hpp"
 #include "ferro/scenarios/output_file.hpp"
-#include "ferro/scenarios/plotting.hpp"
-#include "ferro/scenarios/yaml_reader.hpp"
+#include "plotting.hpp"
 #include "terminal.hpp"
 
 namespace ferro::cli {
 namespace {
 
-namespace fs = std::filesystem;
-using scenarios::MapReader;
-
-std::vector<double> number_list(MapReader& r, const std::string& key) {
-  const YAML::Node n = r.node(key);
-  if (!n.IsSequence() || n.size() == 0) r.fail(key, "must be a non-empty list of numbers");
-  std::vector<double> v;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    try {
-      v.push_back(n[i].as<double>());
-    } catch (const YAML::Exception&) {
-      r.fail(key, fmt::format("entry {} is not a number", i));
-    }
-  }
-  return v;
-}
-
-struct FeKijConfig {
-  fe_contact::KijSweepSpec spec;
-  std::string output;
-  bool plots = true;
-};
-
-// CONFIG.yaml (SI units):
-//   schema_version: 1
-//   contact: {reference_force, semi_axis_x, semi_axis_y, young_modulus, poisson, friction,
-//             elements_minor, margin}
-//   layer:   {thickness, shear_modulus, yield_shear}      # defaults of the unswept layer axes
-//   axes:    {normal_force: [...], layer_thickness: [...], layer_shear_modulus: [...],
-//             layer_yield_shear: [...], yield_stress: [...]}  # any non-empty subset;
-//                                                         # yield_stress: only with normal_force
-//   plastic: {elements_per_semi_axis, load_steps, unload_steps, hardening_modulus, growth,
-//             extent}
-//                                                         # FE rail with the yield_stress axis
-//   solver:  {tolerance, probe_creepage, probe_spin_times_a}
-//   curves:  {creepages: [...]}                           # optional
-//   output:  kij.h5                                       # relative to the config file
-//   plots:   true
-FeKijConfig read_config(const std::string& path) {
-  const scenarios::YamlFile file = scenarios::load_yaml_file(path);
-  MapReader top(file.root, path, "");
-  if (top.integer_or("schema_version", -1) != 1) {
-    top.fail("schema_version", "must be 1");
-  }
-  FeKijConfig cfg;
-  fe_contact::KijSweepSpec& s = cfg.spec;
-  {
-    MapReader c = top.map("contact");
-    s.contact.reference_force = c.number("reference_force");
-    s.contact.reference_semi_axis_x = c.number("semi_axis_x");
-    s.contact.reference_semi_axis_y = c.number("semi_axis_y");
-    s.contact.normal_force = c.number_or("normal_force", s.contact.reference_force);
-    s.contact.body = contact::Material::from_young(c.number("young_modulus"), c.number("poisson"));
-    s.contact.friction = c.number("friction");
-    const long elements = c.integer_or("elements_minor", 24);
-    // Work bounded up front: the MIM grid of the largest patch of the sweep.
-    const int most = contact::mim::max_elements_minor(s.contact.reference_semi_axis_x,
-                                                      s.contact.reference_semi_axis_y);
-    if (elements < 8 || elements > most) {
-      c.fail("elements_minor",
-             fmt::format("must lie in 8..{} (MIM grids are capped at 2^18 elements), got {}",
-                         most, elements));
-    }
-    s.contact.elements_minor = static_cast<int>(elements);
-    s.contact.margin = c.number_or("margin", 0.15);
-    c.finish();
-  }
-  {
-    MapReader l = top.map_or_empty("layer");
-    s.layer.thickness = l.number_or("thickness", 0.0);
-    s.layer.shear_modulus = l.number_or("shear_modulus", fe_contact::kNaN, true);
-    s.layer.yield_shear =
-        l.number_or("yield_shear", std::numeric_limits<double>::infinity(), true);
-    l.finish();
-  }
-  {
-    MapReader a = top.map("axes");
-    for (const std::string& name : fe_contact::sweep_axis_names()) {
-      a.allow(name);
-      if (!a.has(name)) continue;
-      s.axis_names.push_back(name);
-      s.axes.push_back(number_list(a, name));
-    }
-    a.finish();
-    if (s.axis_names.empty()) {
-      top.fail("axes", "give at least one of normal_force, layer_thickness, "
-                       "layer_shear_modulus, layer_yield_shear, yield_stress");
-    }
-  }
-  {
-    MapReader pl = top.map_or_empty("plastic");
-    fe_contact::ElastoplasticKijSpec& e = s.plastic;
-    e.elements_per_semi_axis = static_cast<int>(pl.integer_or("elements_per_semi_axis", 4));
-    e.load_steps = static_cast<int>(pl.integer_or("load_steps", 6));
-    e.unload_steps = static_cast<int>(pl.integer_or("unload_steps", 0));
-    e.hardening_modulus = pl.number_or("hardening_modulus", 0.0);
-    e.growth = pl.number_or("growth", 1.6);
-    e.extent = pl.number_or("extent", 12.0);
-    pl.finish();
-  }
-  {
-    MapReader so = top.map_or_empty("solver");
-    s.slope.mim.tangential.tolerance = so.number_or("tolerance", 1.0e-6);
-    s.slope.probe_creepage = so.number_or("probe_creepage", 1.0e-6);
-    s.slope.probe_spin_times_a = so.number_or("probe_spin_times_a", 1.0e-6);
-    so.finish();
-  }
-  {
-    MapReader cu = top.map_or_empty("curves");
-    if (cu.has("creepages")) s.curve_creepages = number_list(cu, "creepages");
-    cu.finish();
-  }
-  const std::string out = top.string_or("output", "kij.h5");
-  cfg.output = fs::path(out).is_absolute() ? out : (fs::path(path).parent_path() / out).string();
-  cfg.plots = top.boolean_or("plots", true);
-  top.finish();
-  // The spec's own checks, located at the key they name ("<section>.<key>: ...").
-  try {
-    s.validate("");
-  } catch (const scenarios::YamlInputError&) {
-    throw;
-  } catch (const std::invalid_argument& e) {
-    const std::string msg = e.what();
-    const auto colon = msg.find(": ");
-    std::string field = colon == std::string::npos ? std::string() : msg.substr(0, colon);
-    if (!field.empty() && field.front() == '.') field.erase(0, 1);
-    const auto dot = field.find('.');
-    std::string section = field.substr(0, dot);
-    if (section == "slope") section = "solver";
-    if (section == "curve_creepages") section = "curves";
-    const std::string key = dot == std::string::npos ? std::string() : field.substr(dot + 1);
-    const std::string text = colon == std::string::npos ? msg : msg.substr(colon + 2);
-    if (top.has(section) && top.yaml()[section].IsMap()) {
-      MapReader part = top.map(section);
-      const std::string leaf = key.substr(0, key.find_first_of(".["));
-      part.fail(!leaf.empty() && part.has(leaf) ? leaf : std::string(), text);
-    }
-    top.fail(top.has(section) ? section : std::string(), text);
-  }
-  return cfg;
-}
-
-// Journal of finished points: one text file per point, written to a temporary name and renamed.
-std::string journal_name(const fs::path& dir, std::size_t i) {
-  return (dir / fmt::format("point_{:05d}.txt", i)).string();
-}
-
-// Elasto-plastic rail: the first-pass K and the load cycle of a point (Table 3.9 quantities).
-struct PlasticRecord {
-  contact::ReductionFactors first_pass;
-  std::vector<double> cycle;  // p0, u_loaded, u_residual, eps_p, depth, flowing, reverse, cpu
-};
-constexpr const char* kCycleColumns =
-    "peak_pressure_Pa,displacement_loaded_m,displacement_residual_m,max_plastic_strain,"
-    "depth_max_plastic_strain_m,flowing_points,reverse_flowing_points,cycle_cpu_s";
-
-bool positive(const contact::ReductionFactors& k) {
-  return k.k11 > 0.0 && k.k22 > 0.0 && k.k23 > 0.0 && k.k33 > 0.0;
-}
-
-bool read_journal(const fs::path& dir, std::size_t i, contact::ReductionFactors& k,
-                  PlasticRecord* plastic) {
-  std::ifstream in(journal_name(dir, i));
-  if (!in) return false;
-  std::string tag;
-  in >> tag >> k.k11 >> k.k22 >> k.k23 >> k.k33;
-  if (!in || tag != "K" || !positive(k)) return false;
-  if (plastic == nullptr) return true;
-  // Elasto-plastic points also need their first-pass and cycle lines.
-  std::string line;
-  bool first = false, cycle = false;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    ls >> tag;
-    if (tag == "KFP") {
-      contact::ReductionFactors& f = plastic->first_pass;
-      ls >> f.k11 >> f.k22 >> f.k23 >> f.k33;
-      first = static_cast<bool>(ls) && positive(f);
-    } else if (tag == "cycle") {
-      // Tokens through strtod: an elastic point has no plastic-strain depth ("nan").
-      plastic->cycle.assign(8, 0.0);
-      cycle = true;
-      for (double& v : plastic->cycle) {
-        std::string token;
-        ls >> token;
-        char* end = nullptr;
-        v = std::strtod(token.c_str(), &end);
-        cycle = cycle && !token.empty() && end == token.c_str() + token.size();
-      }
-    }
-  }
-  return first && cycle;
-}
-
-void write_journal(const fs::path& dir, std::size_t i, const fe_contact::KijPoint& p) {
-  const std::string name = journal_name(dir, i);
-  const std::string tmp = name + ".tmp";
-  {
-    std::ofstream out(tmp);
-    const contact::ReductionFactors& k = p.slopes.k;
-    out << fmt::format("K {:.17g} {:.17g} {:.17g} {:.17g}\n", k.k11, k.k22, k.k23, k.k33);
-    out << fmt::format("grid {} {} {:.17g}\n", p.nx, p.ny, p.element_size);
-    if (p.has_first_pass) {
-      const contact::ReductionFactors& f = p.first_pass.k;
-      const fe_contact::ElastoplasticResult& c = p.cycle;
-      out << fmt::format("KFP {:.17g} {:.17g} {:.17g} {:.17g}\n", f.k11, f.k22, f.k23, f.k33);
-      out << fmt::format("cycle {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {} {} {:.6g}\n",
-                         c.peak_pressure, c.displacement_loaded, c.displacement_residual,
-                         c.max_plastic_strain, c.depth_max_plastic_strain, c.flowing_points,
-                         c.reverse_flowing_points, c.cpu_seconds);
-    }
-    if (!out) throw std::runtime_error(fmt::format("{}: cannot write", tmp));
-  }
-  fs::rename(tmp, name);
-}
-
-void write_curves(const fs::path& dir, std::size_t i, const std::vector<double>& coords,
-                  const std::vector<std::string>& names, const fe_contact::KijPoint& p) {
-  std::ofstream out(dir / fmt::format("curves_{:05d}.csv", i));
-  std::string title;
-  for (std::size_t a = 0; a < names.size(); ++a) {
-    title += fmt::format("{}{}={:g}", a ? " " : "", names[a], coords[a]);
-  }
-  out << "# " << title << "\n";
-  out << "creepage,Fx_N,Ax_N,Fy_N,Ay_N,Fx_half_space_N,Ax_half_space_N,Fy_half_space_N,"
-         "Ay_half_space_N\n";
-  for (std::size_t j = 0; j < p.curve_x.creepage.size(); ++j) {
-    out << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n",
-                       p.curve_x.creepage[j], p.curve_x.force[j], p.curve_x.derivative[j],
-                       p.curve_y.force[j], p.curve_y.derivative[j], p.reference_curve_x.force[j],
-                       p.reference_curve_x.derivative[j], p.reference_curve_y.force[j],
-                       p.reference_curve_y.derivative[j]);
-  }
-  if (!out) throw std::runtime_error(fmt::format("{}: cannot write creep curves", dir.string()));
-}
-
 int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
-  const FeKijConfig cfg = read_config(config_path);
-  const fe_contact::KijSweepSpec& spec = cfg.spec;
+  scenarios::FeKijStudy study(config_path, restart);
   // The table is claimed before anything is computed: a path that would be refused is refused
   // now, not after hours of finite elements.
   scenarios::OutputSet outputs({overwrite, {config_path}});
-  scenarios::OutputFile& table_file = outputs.claim(cfg.output, "output");
-  const fs::path work = cfg.output + ".d";
-  if (restart && fs::exists(work)) fs::remove_all(work);
-  fs::create_directories(work);
-  const std::size_t n = spec.points();
-  std::vector<contact::ReductionFactors> k(n);
-  const bool plastic = spec.elastoplastic();
-  std::vector<PlasticRecord> records(plastic ? n : 0);
-  std::vector<bool> done(n, false);
-  std::size_t resumed = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    done[i] = read_journal(work, i, k[i], plastic ? &records[i] : nullptr);
-    resumed += done[i] ? 1 : 0;
+  scenarios::OutputFile* table_file = nullptr;
+  try {
+    table_file = &outputs.claim(study.output(), "output");
+  } catch (...) {
+    std::error_code ec;
+    if (study.resumed() == 0) std::filesystem::remove(study.work_dir(), ec);  // only when empty
+    throw;
   }
-  fmt::print("fe-kij: {} configurations ({} already done in {})\n", n, resumed, work.string());
-  Progress progress(static_cast<double>(n), stderr);
-  const std::clock_t cpu0 = std::clock();
-  const auto t0 = std::chrono::steady_clock::now();
-  int grid_nx = 0, grid_ny = 0;
-  double element = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (const int sig = InterruptGuard::signal_received(); sig != 0) {
-      progress.finish();
-      fmt::print(stderr, "fe-kij: interrupted; {} finished points kept in {} (run again to resume)\n",
-                 std::count(done.begin(), done.end(), true), work.string());
-      return 128 + sig;
-    }
-    if (!done[i]) {
-      const fe_contact::KijPoint p = fe_contact::compute_point(spec, i);
-      if (!p.slopes.converged) {
-        throw std::runtime_error(fmt::format("configuration {}: the MIM solves did not converge", i));
-      }
-      write_journal(work, i, p);
-      if (!spec.curve_creepages.empty()) {
-        write_curves(work, i, spec.coordinates(i), spec.axis_names, p);
-      }
-      k[i] = p.slopes.k;
-      if (plastic) {
-        const fe_contact::ElastoplasticResult& c = p.cycle;
-        records[i].first_pass = p.first_pass.k;
-        records[i].cycle = {c.peak_pressure,
-                            c.displacement_loaded,
-                            c.displacement_residual,
-                            c.max_plastic_strain,
-                            c.depth_max_plastic_strain,
-                            static_cast<double>(c.flowing_points),
-                            static_cast<double>(c.reverse_flowing_points),
-                            c.cpu_seconds};
-      }
-      done[i] = true;
-      grid_nx = p.nx;
-      grid_ny = p.ny;
-      element = p.element_size;
-    }
-    progress.update(static_cast<double>(i + 1));
-  }
+  fmt::print("fe-kij: {} configurations ({} already done in {})\n", study.points(),
+             study.resumed(), study.work_dir());
+  Progress progress(static_cast<double>(study.points()), stderr);
+  scenarios::FeKijRunOptions options;
+  options.should_stop = [] { return InterruptGuard::stop_now(); };
+  options.table_path = table_file->write_path();
+  options.progress = [&](std::size_t done, std::size_t) {
+    progress.update(static_cast<double>(done));
+  };
+  const scenarios::FeKijReport r = study.run(options);
   progress.finish();
-  const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::map<std::string, std::string> prov;
-  prov["method"] =
-      "ratio of initial creep-curve slopes of two steady-rolling MIM runs on the same grid "
-      "(half-space + interfacial layer vs half-space)";
-  // The configuration as named on the command line (a machine-independent path when run from
-  // the repository, as the shipped tables were).
-  prov["config"] = fs::path(config_path).lexically_normal().string();
-  prov["elements_minor"] = std::to_string(spec.contact.elements_minor);
-  if (grid_nx > 0) prov["grid_last_point"] = fmt::format("{} x {}, dx = dy = {:.6g} m", grid_nx, grid_ny, element);
-  prov["mesh_sizes"] = "none (half-space + interfacial layer; no finite-element mesh)";
-  std::vector<contact::ReductionFactors> first_pass;
-  if (plastic) {
-    prov["method"] =
-        "ratio of initial creep-curve slopes of two steady-rolling MIM runs on the same grid "
-        "(elasto-plastic rail + elastic half-space wheel vs half-space pair)";
-    prov["mesh_sizes"] = fmt::format(
-        "J2 rail block, trilinear hexahedra: {} cells across min(a, b) = the MIM grid elements, "
-        "growth {:g}, extent {:g} max(a, b); {} load steps up, {} down; hardening modulus {:g} "
-        "Pa",
-        spec.plastic.elements_per_semi_axis, spec.plastic.growth, spec.plastic.extent,
-        spec.plastic.load_steps,
-        spec.plastic.unload_steps > 0 ? spec.plastic.unload_steps : spec.plastic.load_steps,
-        spec.plastic.hardening_modulus);
-    prov["range"] =
-        "K11..K33: shaken down (elastic rail about its residual state, residual dent in the "
-        "gap); K*_first_pass: first pass (frozen elasto-plastic tangent of the rail under the "
-        "peak load)";
-    for (const PlasticRecord& r : records) first_pass.push_back(r.first_pass);
-    // Load-cycle quantities per point (thesis Table 3.9), with the axis values and both K.
-    std::ofstream csv(work / "elastoplastic.csv");
-    for (const std::string& name : spec.axis_names) csv << name << ",";
-    csv << kCycleColumns
-        << ",K11_first_pass,K22_first_pass,K23_first_pass,K33_first_pass,K11,K22,K23,K33\n";
-    for (std::size_t i = 0; i < n; ++i) {
-      for (double x : spec.coordinates(i)) csv << fmt::format("{:.9g},", x);
-      for (double v : records[i].cycle) csv << fmt::format("{:.9g},", v);
-      const contact::ReductionFactors& f = records[i].first_pass;
-      csv << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", f.k11,
-                         f.k22, f.k23, f.k33, k[i].k11, k[i].k22, k[i].k23, k[i].k33);
-    }
-    if (!csv) throw std::runtime_error(fmt::format("{}: cannot write elastoplastic.csv", work.string()));
+  if (r.interrupted) {
+    fmt::print(stderr, "fe-kij: interrupted; {} finished points kept in {} (run again to resume)\n",
+               r.finished, study.work_dir());
+    return 128 + InterruptGuard::signal_received();
   }
-  prov["solver_tolerance"] = fmt::format("{:g}", spec.slope.mim.tangential.tolerance);
-  prov["normal_tolerance"] = fmt::format("{:g}", spec.slope.mim.normal.tolerance);
-  prov["probe_creepage"] = fmt::format("{:g}", spec.slope.probe_creepage);
-  prov["probe_spin_times_a"] = fmt::format("{:g}", spec.slope.probe_spin_times_a);
-  if (!plastic) prov["range"] = "single-valued (elastic layer; no first-pass/shakedown range)";
-  const contact::KijTable table = fe_contact::make_table(spec, k, prov, first_pass);
-  table.write_hdf5(table_file.write_path());
-  table_file.commit();
+  table_file->commit();
   fmt::print("fe-kij: wrote {} ({} configurations; this run {:.2f} s CPU, {:.1f} s wall)\n",
-             cfg.output, n, cpu, wall);
-  if (cfg.plots && !spec.curve_creepages.empty()) {
-    const int rc = scenarios::run_python_tool("plot_kij_curves.py", {work.string()});
+             study.output(), study.points(), r.cpu_seconds, r.wall_seconds);
+  if (study.wants_curve_plots()) {
+    const int rc = run_python_tool("plot_kij_curves.py", {study.work_dir()});
     if (rc != 0) {
       fmt::print(stderr, "fe-kij: plotting failed (exit {}); the table and curve CSVs are written\n", rc);
       return kExitRunFailure;
     }
-    fmt::print("fe-kij: creep and derivative curves plotted in {}\n", work.string());
+    fmt::print("fe-kij: creep and derivative curves plotted in {}\n", study.work_dir());
   }
   return kExitOk;
 }
@@ -401,7 +66,6 @@ int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
   auto config = std::make_shared<std::string>();
   auto restart = std::make_shared<bool>(false);
-  auto overwrite = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand(
       "fe-kij",
       "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load, "
@@ -409,6 +73,7 @@ void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
       "an interrupted run");
   cmd->add_option("config", *config, "CONFIG.yaml")->required();
   cmd->add_flag("--restart", *restart, "discard the finished points of a previous run");
+  auto overwrite = std::make_shared<bool>(false);
   add_overwrite_flag(cmd, *overwrite);
   cmd->callback([&handler, config, restart, overwrite] {
     handler = [config, restart, overwrite] { return run_fe_kij(*config, *restart, *overwrite); };

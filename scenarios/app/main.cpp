@@ -1,3 +1,5 @@
+// ferrodyn: the command-line program (run_main; the entry point is ferrodyn_main.cpp). Each verb
+// group is one file in this folder.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>

@@ -17,40 +17,14 @@
 #include "cli.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/pair_file.hpp"
-#include "ferro/scenarios/plotting.hpp"
+#include "ferro/scenarios/report.hpp"
 #include "ferro/scenarios/wheelset_contact_file.hpp"
+#include "plotting.hpp"
 
 namespace ferro::cli {
 namespace {
 
 namespace fc = ferro::contact;
-
-void print_table(const std::vector<fc::WheelsetContact>& results) {
-  fmt::print(
-      "{:>4} {:>5} {:>5} {:>2} {:>8} {:>8} {:>8} {:>7} {:>8} {:>10} {:>10} {:>9} {:>8} {:>8} "
-      "{:>8} {:>6} {:>7} {:>8}\n",
-      "case", "y", "wheel", "np", "height", "rail_y", "wheel_y", "angle", "N", "xi_x", "xi_y",
-      "phi", "F_x", "F_y", "M_z", "delta", "p_max", "Q");
-  fmt::print(
-      "{:>4} {:>5} {:>5} {:>2} {:>8} {:>8} {:>8} {:>7} {:>8} {:>10} {:>10} {:>9} {:>8} {:>8} "
-      "{:>8} {:>6} {:>7} {:>8}\n",
-      "", "mm", "", "", "mm", "mm", "mm", "deg", "N", "-", "-", "1/m", "N", "N", "N m", "um", "MPa",
-      "N");
-  for (const auto& r : results) {
-    for (const auto& w : r.wheels) {
-      for (const auto& p : w.patches) {
-        fmt::print(
-            "{:>4} {:>5.1f} {:>5} {:>2} {:>8.4f} {:>8.3f} {:>8.3f} {:>7.3f} {:>8.1f} {:>10.3e} "
-            "{:>10.3e} {:>9.4f} {:>8.1f} {:>8.1f} {:>8.3f} {:>6.2f} {:>7.1f} {:>8.1f}\n",
-            r.input.id, r.input.lateral * 1e3, w.side == fc::Side::left ? "left" : "right",
-            w.patches.size(), w.vertical * 1e3, p.rail_y * 1e3, p.wheel_y * 1e3,
-            p.contact_angle * 180.0 / std::numbers::pi, p.normal_force, p.creepage.longitudinal,
-            p.creepage.lateral, p.creepage.spin, p.force_x, p.force_y, p.moment_z, p.approach * 1e6,
-            p.peak_pressure * 1e-6, w.vertical_load);
-      }
-    }
-  }
-}
 
 int run_wheelset_contact(const std::string& yaml, const std::string& out,
                          const std::vector<int>& only, bool plot, bool overwrite) {
@@ -78,17 +52,17 @@ int run_wheelset_contact(const std::string& yaml, const std::string& out,
   }
   const fc::WheelRailPair pair = scenarios::make_wheel_rail_pair(in.pair);
   const auto results = fc::solve_wheelset_contacts(pair, in.spec, in.cases);
-  print_table(results);
+  fmt::print("{}", scenarios::wheelset_contact_report(results));
   fc::write_wheelset_contacts(results, in.spec, in.pair.path, h5_file.write_path(),
                               csv_file.write_path());
   outputs.commit_all();
   fmt::print("wrote {}, {}\n", h5.string(), csv.string());
   if (plot) {
-    if (scenarios::run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
+    if (run_python_tool("wheelset_contact_plot.py", {h5.string()}) != 0) {
       fmt::print(stderr,
                  "plotting failed ({} tools/wheelset_contact_plot.py {}); the table is "
                  "written\n",
-                 scenarios::python_program(), h5.string());
+                 python_program(), h5.string());
       return kExitRunFailure;
     }
   }

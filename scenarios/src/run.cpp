@@ -87,6 +87,18 @@ std::vector<std::string> resolve_csv(const std::vector<std::string>& asked,
 
 }  // namespace
 
+void check_output_on_steps(double interval, const vehicle::IntegratorSettings& solver,
+                           const std::string& where) {
+  if (!(solver.fixed_step > 0.0) || !vehicle::takes_fixed_step(solver.method)) return;
+  const double ratio = interval / solver.fixed_step;
+  if (ratio >= 1.0 - 1e-9 && std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio) return;
+  throw std::invalid_argument(fmt::format(
+      "{}: {} s is not a whole multiple of solver.fixed_step {} s ({} at a fixed step samples "
+      "at its steps only: forces between steps would come from interpolated states); choose "
+      "an interval of k x {} s, or a step that divides {} s",
+      where, interval, solver.fixed_step, solver.method, solver.fixed_step, interval));
+}
+
 std::uint64_t output_sample_count(double t_end, double interval, const std::string& where) {
   if (!(interval > 0.0) || !std::isfinite(interval)) {
     throw std::invalid_argument(
@@ -230,7 +242,7 @@ void check_scene(const Scene& scene, const RunOptions& options) {
   rules.inputs = scene_inputs(scene);
   rules.overwrite = true;  // whether the file exists is the run's business, not the scene's
   OutputSet outputs(std::move(rules));
-  outputs.check(plan.output_file, output_option(options));
+  if (options.write_output) outputs.check(plan.output_file, output_option(options));
 }
 
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
@@ -246,27 +258,37 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   summary.final_values.assign(n_channels, 0.0);
   const double t_end = scene.simulation.t_end, interval = scene.output.interval;
   const std::uint64_t n_times = output_sample_count(t_end, interval);
+  check_output_on_steps(interval, scene.solver);
   const std::uint64_t n_regular = static_cast<std::uint64_t>(std::floor(t_end / interval + 1e-9)) + 1;
 
+  if (!options.write_output && !plan.csv_index.empty())
+    throw std::invalid_argument("csv: signals are written to CSV only beside an output file");
+  // Without an output file (options.write_output false) the samples reach the caller through
+  // options.on_sample only; with one, it is written as <file>.part and renamed when complete.
   OutputSet outputs = run_outputs(scene, options);
-  OutputFile& h5 = outputs.claim(plan.output_file, output_option(options));
-  OutputFile* csv_out = plan.csv_file.empty() ? nullptr : &outputs.claim(plan.csv_file, "--csv");
-  summary.output_file = h5.path();
-  summary.csv_file = plan.csv_file;
-
-  H5File file = H5File::create(h5.write_path());
-  write_metadata(file, scene, "time_simulation");
-  const auto warnings = scene_warnings(scene);
-  file.set_attribute("/", "warning_count", static_cast<long>(warnings.size()));
-  file.set_attribute("/", "warnings", fmt::format("{}", fmt::join(warnings, "\n")));
-  set_status(file, "running", "", 0.0);
-  file.set_attribute("/", "samples", 0L);
+  std::optional<H5File> file;
+  OutputFile* h5 = nullptr;
+  OutputFile* csv_out = nullptr;
+  if (options.write_output) {
+    h5 = &outputs.claim(plan.output_file, output_option(options));
+    if (!plan.csv_file.empty()) csv_out = &outputs.claim(plan.csv_file, "--csv");
+    summary.output_file = h5->path();
+    summary.csv_file = plan.csv_file;
+    file.emplace(H5File::create(h5->write_path()));
+    write_metadata(*file, scene, "time_simulation");
+    const auto warnings = scene_warnings(scene);
+    file->set_attribute("/", "warning_count", static_cast<long>(warnings.size()));
+    file->set_attribute("/", "warnings", fmt::format("{}", fmt::join(warnings, "\n")));
+    set_status(*file, "running", "", 0.0);
+    file->set_attribute("/", "samples", 0L);
+  }
 
   // From here every failure is recorded in the file, which is then renamed to its name.
   const auto wall_start = std::chrono::steady_clock::now();
   bool stopped_by_request = false;
   const auto stop_requested = [&] { return options.should_stop && options.should_stop(); };
   std::optional<TimeSeriesWriter> writer;
+  double last_sample_time = 0.0;  // without a file, what the caller has received
   try {
     std::optional<io::TextWriter> csv;
     if (csv_out != nullptr) {
@@ -276,7 +298,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       for (auto i : plan.csv_index) csv->print(",{}", summary.channels[i].name);
       csv->write("\n");
     }
-    writer.emplace(file, summary.channels, scene.output.flush_seconds);
+    if (file) writer.emplace(*file, summary.channels, scene.output.flush_seconds);
     const std::vector<double> x0 = initial_state(scene, system);
     std::vector<double> row(n_channels);
     bool skip_first = false;  // each block after the first starts at the previous block's end
@@ -287,8 +309,10 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       }
       std::copy(x.begin(), x.end(), row.begin());
       system.signals(t, x, std::span<double>(row).subspan(n_states));
-      writer->append(t, row);
-      summary.samples = writer->samples();
+      if (writer) writer->append(t, row);
+      ++summary.samples;
+      last_sample_time = t;
+      if (options.on_sample) options.on_sample(t, row);
       for (std::size_t i = 0; i < n_channels; ++i)
         summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
       summary.final_values = row;
@@ -316,7 +340,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
     std::exception_ptr write_failure;
     plan.integrator->set_stop_request([&] {
       try {
-        writer->flush_if_due();
+        if (writer) writer->flush_if_due();
       } catch (...) {
         write_failure = std::current_exception();
         return true;
@@ -350,49 +374,52 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
       x = result.state;
       first = last;
     }
-    writer->flush();
+    if (writer) writer->flush();
     if (csv) csv->close();
     summary.status = result.status;
     summary.status_text = vehicle::to_string(result.status);
     // The file's t_reached is its last sample; the solver's own time (a stop or a failure
     // between two outputs) goes into the message.
-    summary.t_reached = writer->last_written_time();
+    summary.t_reached = writer ? writer->last_written_time() : last_sample_time;
     summary.steps = result.steps;
     summary.rhs_evaluations = result.rhs_evaluations;
-    summary.samples = writer->samples();
     summary.message = result.message;
     if (stopped_by_request || result.status == vehicle::IntegrationResult::Status::kInterrupted) {
       summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
     }
-    if (result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
+    if (file && result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
       // Keep the state where the solver stopped beside the samples.
-      file.write_vector("/failure/state", result.state, "SI (see /signals units)",
-                        "state where the solver stopped, at time t, in state order");
-      file.set_attribute("/failure/state", "t", result.t_reached);
+      file->write_vector("/failure/state", result.state, "SI (see /signals units)",
+                         "state where the solver stopped, at time t, in state order");
+      file->set_attribute("/failure/state", "t", result.t_reached);
     }
   } catch (const std::exception& e) {
     // Record the failure in the file, close it and give it its name; the original error is what
     // the caller sees.
-    summary.t_reached = writer ? writer->last_written_time() : 0.0;
+    summary.t_reached = writer ? writer->last_written_time() : last_sample_time;
     try {
-      set_status(file, "error", e.what(), summary.t_reached);
+      if (file) set_status(*file, "error", e.what(), summary.t_reached);
     } catch (const std::exception&) {  // e.g. a full disk: the last flush stands
     }
     try {
-      file.close();
-      h5.commit();
+      if (file) {
+        file->close();
+        h5->commit();
+      }
     } catch (const std::exception&) {
     }
     throw;
   }
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  file.set_attribute("/", "wall_time_s", summary.wall_seconds);
-  file.set_attribute("/", "steps", summary.steps);
-  file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
-  set_status(file, summary.status_text, summary.message, summary.t_reached);
-  file.close();
-  outputs.commit_all();
+  if (file) {
+    file->set_attribute("/", "wall_time_s", summary.wall_seconds);
+    file->set_attribute("/", "steps", summary.steps);
+    file->set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
+    set_status(*file, summary.status_text, summary.message, summary.t_reached);
+    file->close();
+    outputs.commit_all();
+  }
   return summary;
 }
 

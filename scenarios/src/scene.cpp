@@ -23,6 +23,54 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The files a scene reads beside its own (kept alive while it is read), and the values given by
+// key in place of theirs.
+struct Parts {
+  std::vector<YamlFile> files;
+  std::vector<KeyOverride> overrides;
+  std::vector<bool> applied;  // per override
+};
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = key.find('.', start);
+    parts.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (dot == std::string::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+// Sets the overrides under `prefix` (the key path of `root` in the scene; "" for the scene's
+// own root). A path that meets a file name stops there: that file takes it when it is read.
+void apply_overrides(YAML::Node root, Parts& parts, const std::string& prefix,
+                     const std::string& file) {
+  for (std::size_t k = 0; k < parts.overrides.size(); ++k) {
+    const KeyOverride& o = parts.overrides[k];
+    if (!prefix.empty() && o.key.rfind(prefix + ".", 0) != 0) continue;
+    const auto keys = split_key(prefix.empty() ? o.key : o.key.substr(prefix.size() + 1));
+    YAML::Node node = root;
+    bool reaches = true;
+    for (std::size_t i = 0; i + 1 < keys.size() && reaches; ++i) {
+      if (node[keys[i]].IsScalar()) {
+        reaches = false;  // a file name (or a value: reported once reading is done)
+      } else {
+        if (!node[keys[i]].IsMap()) node[keys[i]] = YAML::Node(YAML::NodeType::Map);
+        node.reset(node[keys[i]]);
+      }
+    }
+    if (!reaches) continue;
+    try {
+      node[keys.back()] = YAML::Load(o.value);
+    } catch (const YAML::Exception& e) {
+      throw YamlInputError(file, 0, 0, o.key,
+                           fmt::format("override value '{}' is not YAML: {}", o.value, e.msg));
+    }
+    parts.applied[k] = true;
+  }
+}
+
 template <class F>
 void validated(const MapReader& reader, F&& check) {
   detail::located(reader, std::forward<F>(check));
@@ -30,8 +78,7 @@ void validated(const MapReader& reader, F&& check) {
 
 // A part is either written inline (a mapping) or named by a file relative to the scene. An
 // included file carries its own schema_version; its text is appended to the scene's text.
-MapReader open_part(MapReader& scene, const std::string& key, Scene& out,
-                    std::vector<YamlFile>& keep) {
+MapReader open_part(MapReader& scene, const std::string& key, Scene& out, Parts& parts) {
   if (scene.has(key) && scene.yaml()[key].IsScalar()) {
     const YAML::Node ref = scene.node(key);
     const fs::path base = fs::path(scene.file()).parent_path();
@@ -47,9 +94,10 @@ MapReader open_part(MapReader& scene, const std::string& key, Scene& out,
                                   "YAML file",
                                   ref.Scalar(), file));
     }
-    keep.push_back(load_yaml_file(file));
-    out.text += fmt::format("\n# ---- included: {} ----\n{}", file, keep.back().text);
-    MapReader part(keep.back().root, file, key);
+    parts.files.push_back(load_yaml_file(file));
+    apply_overrides(parts.files.back().root, parts, key, file);
+    out.text += fmt::format("\n# ---- included: {} ----\n{}", file, parts.files.back().text);
+    MapReader part(parts.files.back().root, file, key);
     const long version = part.integer_or("schema_version", -1);
     if (version != kSceneSchemaVersion) {
       part.fail("schema_version",
@@ -71,7 +119,7 @@ void read_material(MapReader r, contact::Material& m) {
 constexpr double kTrackMargin = 1.0;
 
 // The `vehicle` model: a vehicle file (or inline description) and what of it to model.
-void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep) {
+void read_vehicle_model(MapReader& m, Scene& scene, Parts& parts) {
   auto& model = scene.model;
   if (m.has("vehicle") && m.yaml()["vehicle"].IsScalar()) {
     const std::string name = m.string("vehicle");
@@ -81,10 +129,11 @@ void read_vehicle_model(MapReader& m, Scene& scene, std::vector<YamlFile>& keep)
                                     file.string()));
     }
     model.vehicle_file = file.string();
-    model.vehicle = load_vehicle_file(model.vehicle_file, &model.category);
-    keep.push_back(load_yaml_file(model.vehicle_file));
+    parts.files.push_back(load_yaml_file(model.vehicle_file));
+    apply_overrides(parts.files.back().root, parts, m.key_path("vehicle"), model.vehicle_file);
+    model.vehicle = read_vehicle_file(parts.files.back(), &model.category);
     scene.text += fmt::format("\n# ---- included: {} ----\n{}", model.vehicle_file,
-                              keep.back().text);
+                              parts.files.back().text);
   } else {
     MapReader v = m.map("vehicle");
     model.vehicle = read_vehicle(v, &model.category);
@@ -208,6 +257,25 @@ void check_track_extent(const Scene& scene, MapReader& sim) {
 
 }  // namespace
 
+YAML::Node scene_value(const YamlFile& scene_file, const std::string& key) {
+  const auto keys = split_key(key);
+  std::vector<YamlFile> files = {scene_file};  // the files the path runs through
+  YAML::Node node = files.back().root;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (!node.IsMap()) return {};
+    const YAML::Node& map = node;
+    YAML::Node next = map[keys[i]];
+    if (!next.IsDefined()) return {};
+    if (next.IsScalar() && i + 1 < keys.size()) {  // a part or vehicle given by file name
+      const fs::path folder = fs::path(files.back().path).parent_path();
+      files.push_back(load_yaml_file((folder / next.Scalar()).string()));
+      next.reset(files.back().root);
+    }
+    node.reset(next);
+  }
+  return node.IsDefined() ? YAML::Clone(node) : YAML::Node();
+}
+
 std::string track_extent_problem(const Scene& scene, double t_end) {
   if (scene.model.type != "vehicle" || scene.track.type != "design") return {};
   double front = 0.0;
@@ -227,10 +295,219 @@ std::string track_extent_problem(const Scene& scene, double t_end) {
                      distance, t_end, s.start_position, front, end);
 }
 
-Scene load_scene(const std::string& path) {
+namespace {
+
+// The model part: a suspended wheelset inline, or a vehicle.
+void read_model_part(MapReader& top, Scene& scene, Parts& included) {
+  MapReader m = open_part(top, "model", scene, included);
+  scene.model.type = m.string("type", {"suspended_wheelset", "vehicle"});
+  if (scene.model.type == "vehicle") {
+    read_vehicle_model(m, scene, included);
+  } else {
+    auto& w = scene.model.wheelset;
+    w.mass = m.number("mass");
+    w.yaw_inertia = m.number("yaw_inertia");
+    w.half_gauge = m.number("half_gauge");
+    w.rolling_radius = m.number("rolling_radius");
+    w.conicity = m.number("conicity");
+    w.primary_stiffness_x = m.number("primary_stiffness_x");
+    w.primary_stiffness_y = m.number("primary_stiffness_y");
+    w.primary_damping_x = m.number_or("primary_damping_x", 0.0);
+    w.primary_damping_y = m.number_or("primary_damping_y", 0.0);
+    w.primary_semi_spacing = m.number_or("primary_semi_spacing", w.primary_semi_spacing);
+    m.finish();
+    validated(m, [&] { w.validate(m.path()); });
+  }
+}
+
+// The track part: a designed or measured track for a vehicle, straight for the wheelset.
+void read_track_part(MapReader& top, Scene& scene, Parts& included) {
+  MapReader t = open_part(top, "track", scene, included);
+  if (scene.model.type == "vehicle") {
+    scene.track = read_track(t);
+    auto& wr = scene.model.vehicle.wheel_rail;
+    if (!std::isnan(scene.track.gauge)) wr.track_gauge = scene.track.gauge;
+    scene.track.design.gauge = wr.track_gauge;
+    if (!std::isnan(scene.track.rail_inclination))
+      wr.rail_inclination = scene.track.rail_inclination;
+  } else {
+    scene.track.type = t.string_or("type", "straight", {"straight"});
+    t.finish();
+  }
+}
+
+// The contact part: optional for a vehicle (its file's wheel_rail block holds the defaults).
+void read_contact_part(MapReader& top, Scene& scene, Parts& included) {
+  const bool vehicle_model = scene.model.type == "vehicle";
+  if (vehicle_model) {
+    // Optional: the vehicle file's wheel_rail block holds the defaults.
+    if (top.has("contact")) {
+      MapReader c = open_part(top, "contact", scene, included);
+      read_wheel_rail(c, scene.model.vehicle.wheel_rail);
+      c.finish();
+      check_wheel_rail(c, scene.model.vehicle.wheel_rail);
+    } else {
+      top.allow("contact");
+    }
+  } else {
+    MapReader c = open_part(top, "contact", scene, included);
+    auto& cr = scene.contact.creep;
+    (void)c.string_or("tangential", "kalker_linear", {"kalker_linear"});
+    cr.semi_axis_a = c.number("semi_axis_a");
+    cr.semi_axis_b = c.number("semi_axis_b");
+    cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
+    cr.reduction.k11 = c.number_or("k11", cr.reduction.k11);
+    cr.reduction.k22 = c.number_or("k22", cr.reduction.k22);
+    // Reduction factors (docs/SCENES.md): (0, 1], as for vehicles.
+    for (const auto& [key, k] :
+         {std::pair{"k11", cr.reduction.k11}, std::pair{"k22", cr.reduction.k22}}) {
+      if (!(k > 0.0 && k <= 1.0)) c.fail(key, fmt::format("must lie in (0, 1], got {}", k));
+    }
+    read_material(c.map_or_empty("wheel"), cr.wheel);
+    read_material(c.map_or_empty("rail"), cr.rail);
+    c.finish();
+    validated(c, [&] { cr.validate(c.path()); });
+  }
+}
+
+// The simulation settings: speed, duration, initial state; the run must stay on the track.
+void read_simulation(MapReader& top, Scene& scene) {
+  const bool vehicle_model = scene.model.type == "vehicle";
+  MapReader s = top.map("simulation");
+  const bool kmh = s.has("speed_kmh");
+  if (kmh && s.has("speed")) s.fail("speed_kmh", "give either speed [m/s] or speed_kmh, not both");
+  scene.simulation.speed = kmh ? s.number("speed_kmh") / 3.6 : s.number("speed");
+  if (!kmh)
+    s.allow("speed_kmh");
+  else
+    s.allow("speed");
+  const char* speed_key = kmh ? "speed_kmh" : "speed";
+  if (vehicle_model) {
+    if (!(scene.simulation.speed >= 0.0)) s.fail(speed_key, "must be >= 0");
+    scene.simulation.acceleration = s.number_or("acceleration", 0.0);
+    scene.simulation.start_position = s.number_or("start_position", 0.0);
+  } else if (!(scene.simulation.speed > 0.0)) {
+    s.fail(speed_key, "must be > 0");
+  }
+  scene.simulation.t_end = s.number("t_end");
+  if (!(scene.simulation.t_end > 0.0))
+    s.fail("t_end", fmt::format("must be > 0 s, got {}", scene.simulation.t_end));
+  MapReader init = s.map_or_empty("initial");
+  if (vehicle_model) {
+    // State names are the model's; they are checked when the model is built.
+    for (const auto& kv : init.yaml()) {
+      const std::string name = kv.first.as<std::string>();
+      scene.simulation.initial[name] = init.number(name);
+      scene.simulation.initial_position[name] = position_of(kv.first);
+    }
+  } else {
+    const auto states = state_names(scene.model);
+    for (const auto& kv : init.yaml()) {
+      const std::string name = kv.first.as<std::string>();
+      if (std::find(states.begin(), states.end(), name) != states.end()) {
+        scene.simulation.initial[name] = init.number(name);
+      }
+    }
+    for (const auto& n : states) init.allow(n);
+  }
+  init.finish();
+  if (vehicle_model && scene.track.type == "design") {
+    check_track_extent(scene, s);
+  } else {
+    s.allow("acceleration");
+    s.allow("start_position");
+  }
+  s.finish();
+}
+
+void read_solver_part(MapReader& top, Scene& scene, Parts& included) {
+  MapReader r = open_part(top, "solver", scene, included);
+  auto& v = scene.solver;
+  v.method = r.string_or("integrator", v.method, vehicle::available_integrators());
+  v.rtol = r.number_or("rtol", v.rtol);
+  v.atol = r.number_or("atol", v.atol);
+  v.max_step = r.number_or("max_step", v.max_step, /*allow_infinite=*/true);
+  v.initial_step = r.number_or("initial_step", v.initial_step);
+  v.linear_solver = r.string_or("linear_solver", v.linear_solver, {"dense", "band"});
+  v.max_steps = r.integer_or("max_steps", v.max_steps);
+  v.erk_order = static_cast<int>(r.integer_or("erk_order", v.erk_order));
+  v.max_order = static_cast<int>(r.integer_or("max_order", v.max_order));
+  v.stability_limit_detection =
+      r.boolean_or("stability_limit_detection", v.stability_limit_detection);
+  v.jacobian_max_steps = r.integer_or("jacobian_max_steps", v.jacobian_max_steps);
+  v.fixed_step = r.number_or("fixed_step", v.fixed_step);
+  r.finish();
+  validated(r, [&] { v.validate(r.path()); });
+}
+
+// The output part: file, sampling, flushing, CSV and plotted signals.
+void read_output_part(MapReader& top, Scene& scene, Parts& included) {
+  const bool vehicle_model = scene.model.type == "vehicle";
+  MapReader o = open_part(top, "output", scene, included);
+  auto& v = scene.output;
+  v.file = o.string_or("file", v.file);
+  v.interval = o.number_or("interval", v.interval);
+  if (!(v.interval > 0.0)) o.fail("interval", fmt::format("must be > 0 s, got {}", v.interval));
+  validated(o, [&] { (void)output_sample_count(scene.simulation.t_end, v.interval, "interval"); });
+  validated(o, [&] { check_output_on_steps(v.interval, scene.solver, "interval"); });
+  v.flush_seconds = o.number_or("flush_seconds", v.flush_seconds);
+  if (!(v.flush_seconds > 0.0))
+    o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));
+  v.csv = o.string_list_or("csv", {});
+  v.plots = o.string_list_or("plots", {});
+  if (vehicle_model) {
+    read_sensors(o, scene);
+  } else {
+    for (const char* k : {"sensors", "anti_alias_frequency", "anti_alias_order", "floor_height",
+                          "contact_points"})
+      if (o.has(k)) o.fail(k, "applies to vehicle scenes (model.type vehicle) only");
+  }
+  o.finish();
+  const auto names = vehicle_model ? std::vector<std::string>{} : signal_names(scene.model);
+  auto check_names = [&](const std::vector<std::string>& list, const char* key) {
+    for (const auto& n : list) {
+      if (n == "all") continue;
+      if (std::find(names.begin(), names.end(), n) == names.end()) {
+        const std::string near = nearest_key(n, std::set<std::string>(names.begin(), names.end()));
+        o.fail(key, fmt::format("unknown signal '{}'{}; signals of this model: all, {}", n,
+                                near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
+                                fmt::join(names, ", ")));
+      }
+    }
+  };
+  // A vehicle model's signal names are checked when the model is built.
+  if (!vehicle_model) {
+    check_names(v.csv, "csv");
+    check_names(v.plots, "plots");
+  }
+}
+
+void read_analysis(MapReader& top, Scene& scene) {
+  MapReader a = top.map_or_empty("analysis");
+  MapReader e = a.map_or_empty("eigen");
+  scene.eigen.speed_min = e.number_or("speed_min", scene.eigen.speed_min);
+  scene.eigen.speed_max = e.number_or("speed_max", scene.eigen.speed_max);
+  scene.eigen.points = static_cast<int>(e.integer_or("points", scene.eigen.points));
+  if (!(scene.eigen.speed_min > 0.0)) e.fail("speed_min", "must be > 0 m/s");
+  if (!(scene.eigen.speed_max > scene.eigen.speed_min))
+    e.fail("speed_max", "must exceed speed_min");
+  if (scene.eigen.points < 2 || scene.eigen.points > kMaxEigenPoints)
+    e.fail("points", fmt::format("must lie in 2..{}", kMaxEigenPoints));
+  e.finish();
+  MapReader as = a.map_or_empty("assessment");
+  scene.assessment.twist_test = as.boolean_or("twist_test", scene.assessment.twist_test);
+  as.finish();
+  a.finish();
+}
+
+}  // namespace
+
+namespace {
+
+Scene read_scene(YamlFile file, Parts& included) {
+  const std::string& path = file.path;
   Scene scene;
-  const YamlFile file = load_yaml_file(path);
-  std::vector<YamlFile> included;
+  apply_overrides(file.root, included, "", path);
   scene.path = path;
   scene.text = file.text;
   MapReader top(file.root, path, "");
@@ -246,200 +523,58 @@ Scene load_scene(const std::string& path) {
   scene.name = top.string_or("name", fs::path(path).stem().string());
   scene.description = top.string_or("description", "");
 
-  {  // model
-    MapReader m = open_part(top, "model", scene, included);
-    scene.model.type = m.string("type", {"suspended_wheelset", "vehicle"});
-    if (scene.model.type == "vehicle") {
-      read_vehicle_model(m, scene, included);
-    } else {
-      auto& w = scene.model.wheelset;
-      w.mass = m.number("mass");
-      w.yaw_inertia = m.number("yaw_inertia");
-      w.half_gauge = m.number("half_gauge");
-      w.rolling_radius = m.number("rolling_radius");
-      w.conicity = m.number("conicity");
-      w.primary_stiffness_x = m.number("primary_stiffness_x");
-      w.primary_stiffness_y = m.number("primary_stiffness_y");
-      w.primary_damping_x = m.number_or("primary_damping_x", 0.0);
-      w.primary_damping_y = m.number_or("primary_damping_y", 0.0);
-      w.primary_semi_spacing = m.number_or("primary_semi_spacing", w.primary_semi_spacing);
-      m.finish();
-      validated(m, [&] { w.validate(m.path()); });
-    }
-  }
-  const bool vehicle_model = scene.model.type == "vehicle";
-  std::optional<MapReader> track_reader;
-  {  // track
-    track_reader.emplace(open_part(top, "track", scene, included));
-    MapReader& t = *track_reader;
-    if (vehicle_model) {
-      scene.track = read_track(t);
-      auto& wr = scene.model.vehicle.wheel_rail;
-      if (!std::isnan(scene.track.gauge)) wr.track_gauge = scene.track.gauge;
-      scene.track.design.gauge = wr.track_gauge;
-      if (!std::isnan(scene.track.rail_inclination))
-        wr.rail_inclination = scene.track.rail_inclination;
-    } else {
-      scene.track.type = t.string_or("type", "straight", {"straight"});
-      t.finish();
-    }
-  }
-  {  // contact
-    if (vehicle_model) {
-      // Optional: the vehicle file's wheel_rail block holds the defaults.
-      if (top.has("contact")) {
-        MapReader c = open_part(top, "contact", scene, included);
-        read_wheel_rail(c, scene.model.vehicle.wheel_rail);
-        c.finish();
-        check_wheel_rail(c, scene.model.vehicle.wheel_rail);
-      } else {
-        top.allow("contact");
-      }
-    } else {
-      MapReader c = open_part(top, "contact", scene, included);
-      auto& cr = scene.contact.creep;
-      (void)c.string_or("tangential", "kalker_linear", {"kalker_linear"});
-      cr.semi_axis_a = c.number("semi_axis_a");
-      cr.semi_axis_b = c.number("semi_axis_b");
-      cr.coefficients = c.string_or("coefficients", cr.coefficients, {"kalker_table", "equal"});
-      cr.reduction.k11 = c.number_or("k11", cr.reduction.k11);
-      cr.reduction.k22 = c.number_or("k22", cr.reduction.k22);
-      // Reduction factors (docs/SCENES.md): (0, 1], as for vehicles.
-      for (const auto& [key, k] :
-           {std::pair{"k11", cr.reduction.k11}, std::pair{"k22", cr.reduction.k22}}) {
-        if (!(k > 0.0 && k <= 1.0)) c.fail(key, fmt::format("must lie in (0, 1], got {}", k));
-      }
-      read_material(c.map_or_empty("wheel"), cr.wheel);
-      read_material(c.map_or_empty("rail"), cr.rail);
-      c.finish();
-      validated(c, [&] { cr.validate(c.path()); });
-    }
-  }
-  {  // simulation
-    MapReader s = top.map("simulation");
-    const bool kmh = s.has("speed_kmh");
-    if (kmh && s.has("speed"))
-      s.fail("speed_kmh", "give either speed [m/s] or speed_kmh, not both");
-    scene.simulation.speed = kmh ? s.number("speed_kmh") / 3.6 : s.number("speed");
-    if (!kmh)
-      s.allow("speed_kmh");
-    else
-      s.allow("speed");
-    const char* speed_key = kmh ? "speed_kmh" : "speed";
-    if (vehicle_model) {
-      if (!(scene.simulation.speed >= 0.0)) s.fail(speed_key, "must be >= 0");
-      scene.simulation.acceleration = s.number_or("acceleration", 0.0);
-      scene.simulation.start_position = s.number_or("start_position", 0.0);
-    } else if (!(scene.simulation.speed > 0.0)) {
-      s.fail(speed_key, "must be > 0");
-    }
-    scene.simulation.t_end = s.number("t_end");
-    if (!(scene.simulation.t_end > 0.0))
-      s.fail("t_end", fmt::format("must be > 0 s, got {}", scene.simulation.t_end));
-    MapReader init = s.map_or_empty("initial");
-    if (vehicle_model) {
-      // State names are the model's; they are checked when the model is built.
-      for (const auto& kv : init.yaml()) {
-        const std::string name = kv.first.as<std::string>();
-        scene.simulation.initial[name] = init.number(name);
-        scene.simulation.initial_position[name] = position_of(kv.first);
-      }
-    } else {
-      const auto states = state_names(scene.model);
-      for (const auto& kv : init.yaml()) {
-        const std::string name = kv.first.as<std::string>();
-        if (std::find(states.begin(), states.end(), name) != states.end()) {
-          scene.simulation.initial[name] = init.number(name);
-        }
-      }
-      for (const auto& n : states) init.allow(n);
-    }
-    init.finish();
-    if (vehicle_model && scene.track.type == "design") {
-      check_track_extent(scene, s);
-    } else {
-      s.allow("acceleration");
-      s.allow("start_position");
-    }
-    s.finish();
-  }
-  {  // solver
-    MapReader r = open_part(top, "solver", scene, included);
-    auto& v = scene.solver;
-    v.method = r.string_or("integrator", v.method, vehicle::available_integrators());
-    v.rtol = r.number_or("rtol", v.rtol);
-    v.atol = r.number_or("atol", v.atol);
-    v.max_step = r.number_or("max_step", v.max_step, /*allow_infinite=*/true);
-    v.initial_step = r.number_or("initial_step", v.initial_step);
-    v.linear_solver = r.string_or("linear_solver", v.linear_solver, {"dense", "band"});
-    v.max_steps = r.integer_or("max_steps", v.max_steps);
-    v.erk_order = static_cast<int>(r.integer_or("erk_order", v.erk_order));
-    v.max_order = static_cast<int>(r.integer_or("max_order", v.max_order));
-    v.stability_limit_detection =
-        r.boolean_or("stability_limit_detection", v.stability_limit_detection);
-    v.jacobian_max_steps = r.integer_or("jacobian_max_steps", v.jacobian_max_steps);
-    v.fixed_step = r.number_or("fixed_step", v.fixed_step);
-    r.finish();
-    validated(r, [&] { v.validate(r.path()); });
-  }
-  {  // output
-    MapReader o = open_part(top, "output", scene, included);
-    auto& v = scene.output;
-    v.file = o.string_or("file", v.file);
-    v.interval = o.number_or("interval", v.interval);
-    if (!(v.interval > 0.0)) o.fail("interval", fmt::format("must be > 0 s, got {}", v.interval));
-    validated(o, [&] { (void)output_sample_count(scene.simulation.t_end, v.interval, "interval"); });
-    v.flush_seconds = o.number_or("flush_seconds", v.flush_seconds);
-    if (!(v.flush_seconds > 0.0))
-      o.fail("flush_seconds", fmt::format("must be > 0 s, got {}", v.flush_seconds));
-    v.csv = o.string_list_or("csv", {});
-    v.plots = o.string_list_or("plots", {});
-    if (vehicle_model) {
-      read_sensors(o, scene);
-    } else {
-      for (const char* k : {"sensors", "anti_alias_frequency", "anti_alias_order", "floor_height",
-                            "contact_points"})
-        if (o.has(k)) o.fail(k, "applies to vehicle scenes (model.type vehicle) only");
-    }
-    o.finish();
-    const auto names = vehicle_model ? std::vector<std::string>{} : signal_names(scene.model);
-    auto check_names = [&](const std::vector<std::string>& list, const char* key) {
-      for (const auto& n : list) {
-        if (n == "all") continue;
-        if (std::find(names.begin(), names.end(), n) == names.end()) {
-          const std::string near =
-              nearest_key(n, std::set<std::string>(names.begin(), names.end()));
-          o.fail(key, fmt::format("unknown signal '{}'{}; signals of this model: all, {}", n,
-                                  near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
-                                  fmt::join(names, ", ")));
-        }
-      }
-    };
-    // A vehicle model's signal names are checked when the model is built.
-    if (!vehicle_model) {
-      check_names(v.csv, "csv");
-      check_names(v.plots, "plots");
-    }
-  }
-  {  // analysis (optional)
-    MapReader a = top.map_or_empty("analysis");
-    MapReader e = a.map_or_empty("eigen");
-    scene.eigen.speed_min = e.number_or("speed_min", scene.eigen.speed_min);
-    scene.eigen.speed_max = e.number_or("speed_max", scene.eigen.speed_max);
-    scene.eigen.points = static_cast<int>(e.integer_or("points", scene.eigen.points));
-    if (!(scene.eigen.speed_min > 0.0)) e.fail("speed_min", "must be > 0 m/s");
-    if (!(scene.eigen.speed_max > scene.eigen.speed_min))
-      e.fail("speed_max", "must exceed speed_min");
-    if (scene.eigen.points < 2 || scene.eigen.points > kMaxEigenPoints)
-      e.fail("points", fmt::format("must lie in 2..{}", kMaxEigenPoints));
-    e.finish();
-    MapReader as = a.map_or_empty("assessment");
-    scene.assessment.twist_test = as.boolean_or("twist_test", scene.assessment.twist_test);
-    as.finish();
-    a.finish();
-  }
+  read_model_part(top, scene, included);
+  read_track_part(top, scene, included);
+  read_contact_part(top, scene, included);
+  read_simulation(top, scene);
+  read_solver_part(top, scene, included);
+  read_output_part(top, scene, included);
+  read_analysis(top, scene);
   top.finish();
+  for (std::size_t k = 0; k < included.overrides.size(); ++k) {
+    if (!included.applied[k]) {
+      throw YamlInputError(path, 0, 0, included.overrides[k].key,
+                           "cannot be set: the path runs into a value that is not a mapping");
+    }
+  }
   return scene;
+}
+
+// Reads the scene; an error at an overridden key is located at the override.
+Scene read_scene_with(YamlFile file, const std::vector<KeyOverride>& overrides) {
+  Parts parts;
+  parts.overrides = overrides;
+  parts.applied.assign(overrides.size(), false);
+  const std::string path = file.path;
+  try {
+    return read_scene(std::move(file), parts);
+  } catch (const YamlInputError& e) {
+    throw at_override(e, path, overrides);
+  }
+}
+
+}  // namespace
+
+YamlInputError at_override(const YamlInputError& e, const std::string& scene_path,
+                           const std::vector<KeyOverride>& overrides) {
+  for (const KeyOverride& o : overrides) {
+    const bool at = e.key() == o.key || e.key().rfind(o.key + ".", 0) == 0 ||
+                    e.key().rfind(o.key + "[", 0) == 0;
+    if (at && e.line() > 0)
+      return YamlInputError(scene_path, 0, 0, e.key(), e.message() + " (given as an override)");
+  }
+  return e;
+}
+
+Scene load_scene(const std::string& path) { return load_scene(path, {}); }
+
+Scene load_scene(const std::string& path, const std::vector<KeyOverride>& overrides) {
+  return read_scene_with(load_yaml_file(path), overrides);
+}
+
+Scene load_scene_text(const std::string& text, const std::string& path,
+                      const std::vector<KeyOverride>& overrides) {
+  return read_scene_with(parse_yaml_text(text, path), overrides);
 }
 
 std::vector<std::string> scene_inputs(const Scene& scene) {

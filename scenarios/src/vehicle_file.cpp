@@ -383,6 +383,162 @@ int body_index(const VehicleConfig& config, const std::string& name) {
   return -1;
 }
 
+namespace {
+
+// Body indices of the expanded vehicle: car body, bogies front first, wheelsets front first.
+constexpr int kCar = 0;
+constexpr int kBogie[2] = {1, 2};
+constexpr int wheelset_index(int b, int w) {
+  return 3 + 2 * b + w;
+}
+
+// Primary suspension: bogie frame (upper) - wheelset (lower).
+void read_primary(MapReader& r, MapReader& g, VehicleConfig& v, const BodyBlock& car,
+                  const BodyBlock& bogie) {
+  MapReader p = r.map("primary_suspension");
+  const bool compact = p.has("stiffness") || p.has("damping");
+  const auto explicit_items = detail::map_list(p, "elements", "a suspension element");
+  if (!compact && explicit_items.empty()) {
+    p.fail("stiffness", "give per-axlebox stiffness/damping or an elements list");
+  }
+  if (compact) {
+    const Eigen::Vector3d k = axis_map(p.map_or_empty("stiffness"), "N/m");
+    const Eigen::Vector3d c = axis_map(p.map_or_empty("damping"), "N s/m");
+    const double semi = positive(g, "primary_lateral_semi_spacing", "m");
+    const bool preload = p.boolean_or("static_preload", false);
+    // Weight carried by each axlebox spring: car body and bogie frames over 8 axleboxes.
+    const double axlebox_load = (car.mass + 2.0 * bogie.mass) * v.gravity / 8.0;
+    for (int b = 0; b < 2; ++b) {
+      for (int w = 0; w < 2; ++w) {
+        const auto& bo = v.bodies[static_cast<std::size_t>(kBogie[b])];
+        const auto& ws = v.bodies[static_cast<std::size_t>(wheelset_index(b, w))];
+        for (int side = 0; side < 2; ++side) {
+          const double y = side == 0 ? semi : -semi;
+          SuspensionElementSpec s;
+          s.name = fmt::format("primary.{}.{}", ws.name, side == 0 ? "left" : "right");
+          s.type = ElementType::spring_damper;
+          s.body_a = kBogie[b];
+          s.body_b = wheelset_index(b, w);
+          s.point_a = {ws.position.x() - bo.position.x(), y, ws.position.z() - bo.position.z()};
+          s.point_b = {0.0, y, 0.0};
+          s.stiffness = k;
+          s.damping = c;
+          if (preload) s.preload = {0.0, 0.0, -axlebox_load};
+          v.elements.push_back(s);
+        }
+      }
+    }
+  } else {
+    p.allow("static_preload");
+  }
+  for (int b = 0; b < 2; ++b) {
+    for (int w = 0; w < 2; ++w) {
+      for (const auto& item : explicit_items) {
+        const auto& ws = v.bodies[static_cast<std::size_t>(wheelset_index(b, w))];
+        v.elements.push_back(read_element(item, v, {kBogie[b], wheelset_index(b, w)},
+                                          fmt::format("primary.{}.", ws.name)));
+      }
+    }
+  }
+  p.finish();
+}
+
+// Secondary suspension: car body (upper) - bogie frame (lower).
+void read_secondary(MapReader& r, MapReader& g, VehicleConfig& v, const BodyBlock& car) {
+  MapReader s2 = r.map("secondary_suspension");
+  const bool compact = s2.has("stiffness") || s2.has("damping");
+  const auto explicit_items = detail::map_list(s2, "elements", "a suspension element");
+  if (!compact && explicit_items.empty()) {
+    s2.fail("stiffness", "give per-side stiffness/damping or an elements list");
+  }
+  const auto& cb = v.bodies[kCar];
+  if (compact) {
+    const Eigen::Vector3d k = axis_map(s2.map_or_empty("stiffness"), "N/m");
+    const Eigen::Vector3d c = axis_map(s2.map_or_empty("damping"), "N s/m");
+    const double semi = positive(g, "secondary_lateral_semi_spacing", "m");
+    const double height = positive(g, "secondary_height", "m (above top of rail)");
+    const bool preload = s2.boolean_or("static_preload", false);
+    const double side_load = car.mass * v.gravity / 4.0;
+    for (int b = 0; b < 2; ++b) {
+      const auto& bo = v.bodies[static_cast<std::size_t>(kBogie[b])];
+      for (int side = 0; side < 2; ++side) {
+        const double y = side == 0 ? semi : -semi;
+        SuspensionElementSpec s;
+        s.name = fmt::format("secondary.{}.{}", bo.name, side == 0 ? "left" : "right");
+        s.type = ElementType::spring_damper;
+        s.body_a = kCar;
+        s.body_b = kBogie[b];
+        s.point_a = {bo.position.x() - cb.position.x(), y, height - cb.position.z()};
+        s.point_b = {0.0, y, height - bo.position.z()};
+        s.stiffness = k;
+        s.damping = c;
+        if (preload) s.preload = {0.0, 0.0, -side_load};
+        v.elements.push_back(s);
+      }
+    }
+  } else {
+    s2.allow("static_preload");
+  }
+  // Bogie yaw stiffness (per side: both sides in one torsion element per bogie, factor 2) and
+  // the anti-roll bar (per bogie): torsion elements between the car body and each bogie.
+  const auto add_torsion = [&](const char* key, const char* element, Dof axis,
+                               double per_bogie_factor) {
+    if (!s2.has(key)) {
+      s2.allow(key);
+      return;
+    }
+    const double k = positive(s2, key, "N m/rad");
+    for (int b = 0; b < 2; ++b) {
+      const auto& bo = v.bodies[static_cast<std::size_t>(kBogie[b])];
+      SuspensionElementSpec s;
+      s.name = fmt::format("secondary.{}.{}", bo.name, element);
+      s.type = ElementType::torsion;
+      s.axis = axis;
+      s.body_a = kCar;
+      s.body_b = kBogie[b];
+      s.point_a = bo.position - cb.position;
+      s.k = per_bogie_factor * k;
+      v.elements.push_back(s);
+    }
+  };
+  add_torsion("bogie_yaw_stiffness", "yaw_stiffness", Dof::yaw, 2.0);
+  add_torsion("anti_roll_bar", "anti_roll_bar", Dof::roll, 1.0);
+  if (s2.has("lateral_bump_stop")) {
+    MapReader bs = s2.map("lateral_bump_stop");
+    SuspensionElementSpec proto;
+    proto.type = ElementType::bump_stop;
+    proto.axis = Dof::y;
+    proto.clearance = non_negative(bs, "clearance", "m");
+    const double height = bs.number("height");
+    proto.table_displacement = detail::number_list(bs, "displacement");
+    proto.table_force = detail::number_list(bs, "force");
+    check_bump_stop_table(bs, proto, "displacement");
+    bs.finish();
+    for (int b = 0; b < 2; ++b) {
+      const auto& bo = v.bodies[static_cast<std::size_t>(kBogie[b])];
+      SuspensionElementSpec s = proto;
+      s.name = fmt::format("secondary.{}.lateral_bump_stop", bo.name);
+      s.body_a = kCar;
+      s.body_b = kBogie[b];
+      s.point_a = {bo.position.x() - cb.position.x(), 0.0, height - cb.position.z()};
+      s.point_b = {0.0, 0.0, height - bo.position.z()};
+      v.elements.push_back(s);
+    }
+  } else {
+    s2.allow("lateral_bump_stop");
+  }
+  for (int b = 0; b < 2; ++b) {
+    for (const auto& item : explicit_items) {
+      const auto& bo = v.bodies[static_cast<std::size_t>(kBogie[b])];
+      v.elements.push_back(
+          read_element(item, v, {kCar, kBogie[b]}, fmt::format("secondary.{}.", bo.name)));
+    }
+  }
+  s2.finish();
+}
+
+}  // namespace
+
 const std::vector<std::string>& vehicle_categories() {
   static const std::vector<std::string> k{"coach", "locomotive", "power_car", "wagon"};
   return k;
@@ -426,153 +582,9 @@ VehicleConfig read_vehicle(MapReader& r, std::string* category) {
                                    wheelset, {x, 0.0, wheelset.rolling_radius}));
     }
   }
-  const int car_i = 0;
-  const int bogie_i[2] = {1, 2};
-  const auto ws_i = [](int b, int w) { return 3 + 2 * b + w; };
 
-  // Primary suspension: bogie frame (upper) - wheelset (lower).
-  {
-    MapReader p = r.map("primary_suspension");
-    const bool compact = p.has("stiffness") || p.has("damping");
-    const auto explicit_items = detail::map_list(p, "elements", "a suspension element");
-    if (!compact && explicit_items.empty()) {
-      p.fail("stiffness", "give per-axlebox stiffness/damping or an elements list");
-    }
-    if (compact) {
-      const Eigen::Vector3d k = axis_map(p.map_or_empty("stiffness"), "N/m");
-      const Eigen::Vector3d c = axis_map(p.map_or_empty("damping"), "N s/m");
-      const double semi = positive(g, "primary_lateral_semi_spacing", "m");
-      const bool preload = p.boolean_or("static_preload", false);
-      // Weight carried by each axlebox spring: car body and bogie frames over 8 axleboxes.
-      const double axlebox_load = (car.mass + 2.0 * bogie.mass) * v.gravity / 8.0;
-      for (int b = 0; b < 2; ++b) {
-        for (int w = 0; w < 2; ++w) {
-          const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
-          const auto& ws = v.bodies[static_cast<std::size_t>(ws_i(b, w))];
-          for (int side = 0; side < 2; ++side) {
-            const double y = side == 0 ? semi : -semi;
-            SuspensionElementSpec s;
-            s.name = fmt::format("primary.{}.{}", ws.name, side == 0 ? "left" : "right");
-            s.type = ElementType::spring_damper;
-            s.body_a = bogie_i[b];
-            s.body_b = ws_i(b, w);
-            s.point_a = {ws.position.x() - bo.position.x(), y, ws.position.z() - bo.position.z()};
-            s.point_b = {0.0, y, 0.0};
-            s.stiffness = k;
-            s.damping = c;
-            if (preload) s.preload = {0.0, 0.0, -axlebox_load};
-            v.elements.push_back(s);
-          }
-        }
-      }
-    } else {
-      p.allow("static_preload");
-    }
-    for (int b = 0; b < 2; ++b) {
-      for (int w = 0; w < 2; ++w) {
-        for (const auto& item : explicit_items) {
-          const auto& ws = v.bodies[static_cast<std::size_t>(ws_i(b, w))];
-          v.elements.push_back(read_element(item, v, {bogie_i[b], ws_i(b, w)},
-                                            fmt::format("primary.{}.", ws.name)));
-        }
-      }
-    }
-    p.finish();
-  }
-
-  // Secondary suspension: car body (upper) - bogie frame (lower).
-  {
-    MapReader s2 = r.map("secondary_suspension");
-    const bool compact = s2.has("stiffness") || s2.has("damping");
-    const auto explicit_items = detail::map_list(s2, "elements", "a suspension element");
-    if (!compact && explicit_items.empty()) {
-      s2.fail("stiffness", "give per-side stiffness/damping or an elements list");
-    }
-    const auto& cb = v.bodies[car_i];
-    if (compact) {
-      const Eigen::Vector3d k = axis_map(s2.map_or_empty("stiffness"), "N/m");
-      const Eigen::Vector3d c = axis_map(s2.map_or_empty("damping"), "N s/m");
-      const double semi = positive(g, "secondary_lateral_semi_spacing", "m");
-      const double height = positive(g, "secondary_height", "m (above top of rail)");
-      const bool preload = s2.boolean_or("static_preload", false);
-      const double side_load = car.mass * v.gravity / 4.0;
-      for (int b = 0; b < 2; ++b) {
-        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
-        for (int side = 0; side < 2; ++side) {
-          const double y = side == 0 ? semi : -semi;
-          SuspensionElementSpec s;
-          s.name = fmt::format("secondary.{}.{}", bo.name, side == 0 ? "left" : "right");
-          s.type = ElementType::spring_damper;
-          s.body_a = car_i;
-          s.body_b = bogie_i[b];
-          s.point_a = {bo.position.x() - cb.position.x(), y, height - cb.position.z()};
-          s.point_b = {0.0, y, height - bo.position.z()};
-          s.stiffness = k;
-          s.damping = c;
-          if (preload) s.preload = {0.0, 0.0, -side_load};
-          v.elements.push_back(s);
-        }
-      }
-    } else {
-      s2.allow("static_preload");
-    }
-    // Bogie yaw stiffness (per side: both sides in one torsion element per bogie, factor 2) and
-    // the anti-roll bar (per bogie): torsion elements between the car body and each bogie.
-    const auto add_torsion = [&](const char* key, const char* element, Dof axis,
-                                 double per_bogie_factor) {
-      if (!s2.has(key)) {
-        s2.allow(key);
-        return;
-      }
-      const double k = positive(s2, key, "N m/rad");
-      for (int b = 0; b < 2; ++b) {
-        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
-        SuspensionElementSpec s;
-        s.name = fmt::format("secondary.{}.{}", bo.name, element);
-        s.type = ElementType::torsion;
-        s.axis = axis;
-        s.body_a = car_i;
-        s.body_b = bogie_i[b];
-        s.point_a = bo.position - cb.position;
-        s.k = per_bogie_factor * k;
-        v.elements.push_back(s);
-      }
-    };
-    add_torsion("bogie_yaw_stiffness", "yaw_stiffness", Dof::yaw, 2.0);
-    add_torsion("anti_roll_bar", "anti_roll_bar", Dof::roll, 1.0);
-    if (s2.has("lateral_bump_stop")) {
-      MapReader bs = s2.map("lateral_bump_stop");
-      SuspensionElementSpec proto;
-      proto.type = ElementType::bump_stop;
-      proto.axis = Dof::y;
-      proto.clearance = non_negative(bs, "clearance", "m");
-      const double height = bs.number("height");
-      proto.table_displacement = detail::number_list(bs, "displacement");
-      proto.table_force = detail::number_list(bs, "force");
-      check_bump_stop_table(bs, proto, "displacement");
-      bs.finish();
-      for (int b = 0; b < 2; ++b) {
-        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
-        SuspensionElementSpec s = proto;
-        s.name = fmt::format("secondary.{}.lateral_bump_stop", bo.name);
-        s.body_a = car_i;
-        s.body_b = bogie_i[b];
-        s.point_a = {bo.position.x() - cb.position.x(), 0.0, height - cb.position.z()};
-        s.point_b = {0.0, 0.0, height - bo.position.z()};
-        v.elements.push_back(s);
-      }
-    } else {
-      s2.allow("lateral_bump_stop");
-    }
-    for (int b = 0; b < 2; ++b) {
-      for (const auto& item : explicit_items) {
-        const auto& bo = v.bodies[static_cast<std::size_t>(bogie_i[b])];
-        v.elements.push_back(
-            read_element(item, v, {car_i, bogie_i[b]}, fmt::format("secondary.{}.", bo.name)));
-      }
-    }
-    s2.finish();
-  }
+  read_primary(r, g, v, car, bogie);
+  read_secondary(r, g, v, car);
   // Explicit bump stops: check their tables.
   for (const auto& e : v.elements) {
     if (e.type == ElementType::bump_stop && e.table_displacement.size() < 2) {
@@ -592,8 +604,11 @@ VehicleConfig read_vehicle(MapReader& r, std::string* category) {
 }
 
 VehicleConfig load_vehicle_file(const std::string& path, std::string* category) {
-  const YamlFile file = load_yaml_file(path);
-  MapReader r(file.root, path, "");
+  return read_vehicle_file(load_yaml_file(path), category);
+}
+
+VehicleConfig read_vehicle_file(const YamlFile& file, std::string* category) {
+  MapReader r(file.root, file.path, "");
   const long version = r.integer_or("schema_version", -1);
   if (version != kVehicleSchemaVersion) {
     r.fail("schema_version", fmt::format("required in a vehicle file; supported: {}, got {}",

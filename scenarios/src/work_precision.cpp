@@ -2,10 +2,12 @@
 #include "ferro/scenarios/work_precision.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -122,7 +124,10 @@ CycleStatistics cycle_statistics(const std::vector<double>& t, const std::vector
   return c;
 }
 
-WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+namespace {
+
+// Every option checked before any run.
+void check_options(const WorkPrecisionOptions& options) {
   if (options.rtols.empty()) throw std::invalid_argument("--rtols: give at least one tolerance");
   for (double r : options.rtols) {
     if (!(r > 0.0 && r < 1.0)) {
@@ -142,13 +147,109 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
         fmt::format("--settle: must be finite and >= 0 s, got {}", options.settle));
   }
   if (options.metric != "pointwise" && options.metric != "cycle") {
-    throw std::invalid_argument(fmt::format(
-        "--metric: allowed values: pointwise, cycle; got '{}'", options.metric));
+    throw std::invalid_argument(
+        fmt::format("--metric: allowed values: pointwise, cycle; got '{}'", options.metric));
   }
   if (!(options.target_error > 0.0)) {
     throw std::invalid_argument(
         fmt::format("--target-error: must be > 0, got {}", options.target_error));
   }
+}
+
+// The compared states: options.states by name, else every wheelset's lateral and yaw state.
+std::vector<std::size_t> compared_state_indices(const std::vector<vehicle::SignalInfo>& info,
+                                                const WorkPrecisionOptions& options) {
+  std::vector<std::size_t> index;
+  if (options.states.empty()) {
+    for (std::size_t i = 0; i < info.size(); ++i) {
+      const std::string& n = info[i].name;
+      const bool wheelset = n.rfind("wheelset", 0) == 0;
+      const bool lateral = n.size() > 2 && n.compare(n.size() - 2, 2, ".y") == 0;
+      const bool yaw = n.size() > 4 && n.compare(n.size() - 4, 4, ".yaw") == 0;
+      if (wheelset && (lateral || yaw)) index.push_back(i);
+    }
+    if (index.empty()) {
+      throw std::invalid_argument(
+          "--states: the model has no wheelset lateral or yaw state; name the states to compare");
+    }
+  } else {
+    for (const std::string& name : options.states) {
+      const auto it = std::find_if(info.begin(), info.end(),
+                                   [&](const vehicle::SignalInfo& s) { return s.name == name; });
+      if (it == info.end()) {
+        std::vector<std::string> names;
+        for (const auto& s : info) names.push_back(s.name);
+        throw std::invalid_argument(
+            fmt::format("--states: unknown state '{}'; states: {}", name, fmt::join(names, ", ")));
+      }
+      index.push_back(static_cast<std::size_t>(it - info.begin()));
+    }
+  }
+  return index;
+}
+
+// The state at `settle` of the reference integration from x0 (x0 itself when settle is 0).
+std::vector<double> settled_state(const vehicle::OdeSystem& system, std::vector<double> x0,
+                                  const vehicle::IntegratorSettings& ref_settings,
+                                  const Scene& scene, const WorkPrecisionOptions& options,
+                                  WorkPrecisionReport& report) {
+  const double t0 = options.settle;
+  if (t0 > 0.0) {
+    std::vector<double> settled;
+    auto integrator = vehicle::make_integrator(ref_settings);
+    const double start = cpu_now();
+    const auto res =
+        integrator->integrate(system, x0, vehicle::output_grid(0.0, t0, scene.output.interval),
+                              [&](double, std::span<const double> x) {
+                                settled.assign(x.begin(), x.end());
+                                return true;
+                              });
+    report.settle_cpu_seconds = cpu_now() - start;
+    if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
+      throw std::runtime_error(fmt::format(
+          "work-precision: the reference's settling run (cvode_bdf, rtol {}) stopped at t = {} "
+          "s of {} s: {}",
+          options.reference_rtol, res.t_reached, t0, res.message));
+    }
+    x0 = settled;
+  }
+  return x0;
+}
+
+// Error and cycle error of a completed run against the reference (see the header).
+void measure_errors(WorkPrecisionPoint& p, const Trajectory& run, const Trajectory& ref,
+                    const std::vector<double>& peak, const std::vector<CycleStatistics>& ref_cycles,
+                    const std::vector<CycleStatistics>& run_cycles) {
+  const std::size_t n = peak.size();
+  double err = 0.0;
+  for (std::size_t t = 0; t < run.compared.size(); ++t) {
+    for (std::size_t k = 0; k < n; ++k) {
+      if (peak[k] > 0.0) {
+        err = std::max(err, std::abs(run.compared[t][k] - ref.compared[t][k]) / peak[k]);
+      }
+    }
+  }
+  p.error = err;
+  double cyc = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& r = ref_cycles[k];
+    if (r.amplitude > 0.0) {
+      cyc = std::max(cyc, std::abs(run_cycles[k].amplitude - r.amplitude) / r.amplitude);
+    }
+    // A frequency needs at least two whole periods in the reference.
+    if (r.crossings >= 3) {
+      const double f = run_cycles[k].frequency;
+      cyc = std::max(cyc, std::isfinite(f) ? std::abs(f - r.frequency) / r.frequency
+                                           : std::numeric_limits<double>::infinity());
+    }
+  }
+  p.cycle_error = cyc;
+}
+
+}  // namespace
+
+WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+  check_options(options);
   // Every entry is checked before any run.
   std::vector<vehicle::IntegratorSettings> settings;
   std::vector<std::string> labels;
@@ -172,32 +273,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   report.metric = options.metric;
 
   const auto info = system->state_info();
-  std::vector<std::size_t> index;
-  if (options.states.empty()) {
-    for (std::size_t i = 0; i < info.size(); ++i) {
-      const std::string& n = info[i].name;
-      const bool wheelset = n.rfind("wheelset", 0) == 0;
-      const bool lateral = n.size() > 2 && n.compare(n.size() - 2, 2, ".y") == 0;
-      const bool yaw = n.size() > 4 && n.compare(n.size() - 4, 4, ".yaw") == 0;
-      if (wheelset && (lateral || yaw)) index.push_back(i);
-    }
-    if (index.empty()) {
-      throw std::invalid_argument(
-          "--states: the model has no wheelset lateral or yaw state; name the states to compare");
-    }
-  } else {
-    for (const std::string& name : options.states) {
-      const auto it = std::find_if(info.begin(), info.end(),
-                                   [&](const vehicle::SignalInfo& s) { return s.name == name; });
-      if (it == info.end()) {
-        std::vector<std::string> names;
-        for (const auto& s : info) names.push_back(s.name);
-        throw std::invalid_argument(fmt::format("--states: unknown state '{}'; states: {}", name,
-                                                fmt::join(names, ", ")));
-      }
-      index.push_back(static_cast<std::size_t>(it - info.begin()));
-    }
-  }
+  const std::vector<std::size_t> index = compared_state_indices(info, options);
   for (std::size_t i : index) report.compared_states.push_back(info[i].name);
 
   vehicle::IntegratorSettings ref_settings = scene.solver;
@@ -208,25 +284,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
   ref_settings.atol = options.reference_rtol * options.atol_per_rtol;
 
   const double t0 = options.settle;
-  if (t0 > 0.0) {
-    std::vector<double> settled;
-    auto integrator = vehicle::make_integrator(ref_settings);
-    const double start = cpu_now();
-    const auto res = integrator->integrate(*system, x0,
-                                           vehicle::output_grid(0.0, t0, scene.output.interval),
-                                           [&](double, std::span<const double> x) {
-                                             settled.assign(x.begin(), x.end());
-                                             return true;
-                                           });
-    report.settle_cpu_seconds = cpu_now() - start;
-    if (res.status != vehicle::IntegrationResult::Status::kCompleted) {
-      throw std::runtime_error(fmt::format(
-          "work-precision: the reference's settling run (cvode_bdf, rtol {}) stopped at t = {} "
-          "s of {} s: {}",
-          options.reference_rtol, res.t_reached, t0, res.message));
-    }
-    x0 = settled;
-  }
+  x0 = settled_state(*system, x0, ref_settings, scene, options, report);
   const std::vector<double> times =
       vehicle::output_grid(t0, t0 + scene.simulation.t_end, scene.output.interval);
   const Trajectory ref = integrate(*system, x0, times, ref_settings, index);
@@ -269,30 +327,7 @@ WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOp
     fill(p, run);
     if (run.result.status == vehicle::IntegrationResult::Status::kCompleted &&
         run.compared.size() == ref.compared.size()) {
-      double err = 0.0;
-      for (std::size_t t = 0; t < run.compared.size(); ++t) {
-        for (std::size_t k = 0; k < index.size(); ++k) {
-          if (peak[k] > 0.0) {
-            err = std::max(err, std::abs(run.compared[t][k] - ref.compared[t][k]) / peak[k]);
-          }
-        }
-      }
-      p.error = err;
-      const auto run_cycles = cycles(run);
-      double cyc = 0.0;
-      for (std::size_t k = 0; k < index.size(); ++k) {
-        const auto& r = report.reference_cycles[k];
-        if (r.amplitude > 0.0) {
-          cyc = std::max(cyc, std::abs(run_cycles[k].amplitude - r.amplitude) / r.amplitude);
-        }
-        // A frequency needs at least two whole periods in the reference.
-        if (r.crossings >= 3) {
-          const double f = run_cycles[k].frequency;
-          cyc = std::max(cyc, std::isfinite(f) ? std::abs(f - r.frequency) / r.frequency
-                                               : std::numeric_limits<double>::infinity());
-        }
-      }
-      p.cycle_error = cyc;
+      measure_errors(p, run, ref, peak, report.reference_cycles, cycles(run));
     } else {
       p.error = std::numeric_limits<double>::quiet_NaN();
       p.cycle_error = p.error;
@@ -315,14 +350,80 @@ void write_work_precision_csv(const WorkPrecisionReport& report, const std::stri
       "cpu_s_per_simulated_s,error,cycle_error\n");
   const auto row = [&](const WorkPrecisionPoint& p) {
     out.print("{},{},{:.3g},{:.3g},{},{:.9g},{},{},{:.6g},{:.6g},{:.6g},{:.6g}\n",
-              p.integrator.substr(0, p.integrator.find(':')), p.settings.max_order,
-              p.settings.rtol, p.settings.atol, p.status, p.t_reached, p.steps,
-              p.rhs_evaluations, p.cpu_seconds,
+              p.integrator.substr(0, p.integrator.find(':')), p.settings.max_order, p.settings.rtol,
+              p.settings.atol, p.status, p.t_reached, p.steps, p.rhs_evaluations, p.cpu_seconds,
               report.t_end > 0.0 ? p.cpu_seconds / report.t_end : 0.0, p.error, p.cycle_error);
   };
   row(report.reference);
   for (const auto& p : report.points) row(p);
   out.close();
+}
+
+Parameters parameters(WorkPrecisionOptions& o) {
+  return {
+      {"integrators", "",
+       "method, method:max_order or method@fixed_step, e.g. cvode_bdf cvode_bdf:2 "
+       "odeint_rosenbrock4 arkode_erk@5e-4 odeint_bs3@1e-3",
+       &o.integrators},
+      {"rtols", "-", "relative tolerances", &o.rtols},
+      {"atol_per_rtol", "SI state units", "atol = rtol x this", &o.atol_per_rtol},
+      {"reference_rtol", "-", "tolerance of the reference run (cvode_bdf)", &o.reference_rtol},
+      {"states", "", "states compared (default: every wheelset's y and yaw)", &o.states, false},
+      {"target_error", "-", "error the recommended setting must meet", &o.target_error},
+      {"settle", "s",
+       "settling time: the reference runs this long first and every run starts from its end "
+       "state (for limit cycles)",
+       &o.settle},
+      {"metric", "",
+       "error that picks the best setting: pointwise (largest deviation) or cycle (amplitude "
+       "and frequency of each compared state)",
+       &o.metric},
+  };
+}
+
+std::string work_precision_report(const Scene& scene, const WorkPrecisionReport& r,
+                                  const WorkPrecisionOptions& options) {
+  std::string text;
+  auto out = std::back_inserter(text);
+  fmt::format_to(out, "work-precision: {} ({} s simulated at {} m/s); model setup {:.3f} CPU-s\n",
+                 scene.name, r.t_end, scene.simulation.speed, r.setup_cpu_seconds);
+  fmt::format_to(out, "compared: {}\n", fmt::join(r.compared_states, ", "));
+  if (r.settle > 0.0) {
+    fmt::format_to(
+        out, "settled: the reference ran {} s first ({:.3f} CPU-s); compared over [{}, {}] s\n",
+        r.settle, r.settle_cpu_seconds, r.settle, r.settle + r.t_end);
+  }
+  for (std::size_t k = 0; k < r.compared_states.size(); ++k) {
+    const auto& c = r.reference_cycles[k];
+    fmt::format_to(out, "reference {}: amplitude {:.6g}, frequency {:.6g} Hz\n",
+                   r.compared_states[k], c.amplitude, c.frequency);
+  }
+  fmt::format_to(
+      out,
+      "| integrator | max order | rtol | atol | status | steps | rhs | CPU s | CPU s per "
+      "simulated s | error | cycle error |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const auto line = [&](const WorkPrecisionPoint& p, const char* note) {
+    fmt::format_to(
+        out, "| {}{} | {} | {:.0e} | {:.0e} | {} | {} | {} | {:.3f} | {:.4f} | {:.2e} | {:.2e} |\n",
+        p.integrator.substr(0, p.integrator.find(':')), note,
+        p.settings.max_order == 0 ? std::string("default") : std::to_string(p.settings.max_order),
+        p.settings.rtol, p.settings.atol,
+        p.status == "completed" ? p.status : fmt::format("{} at {:.4g} s", p.status, p.t_reached),
+        p.steps, p.rhs_evaluations, p.cpu_seconds, p.cpu_seconds / r.t_end, p.error, p.cycle_error);
+  };
+  line(r.reference, " (reference)");
+  for (const auto& p : r.points) line(p, "");
+  if (r.best) {
+    const auto& b = r.points[*r.best];
+    fmt::format_to(out,
+                   "cheapest within {} error {:.1e}: {} (max order {}) at rtol {:.0e}: {:.4f} "
+                   "CPU-s per simulated s, error {:.2e}, cycle error {:.2e}\n",
+                   r.metric, options.target_error, b.integrator, b.settings.max_order,
+                   b.settings.rtol, b.cpu_seconds / r.t_end, b.error, b.cycle_error);
+  } else {
+    fmt::format_to(out, "no setting met {} error {:.1e}\n", r.metric, options.target_error);
+  }
+  return text;
 }
 
 }  // namespace ferro::scenarios

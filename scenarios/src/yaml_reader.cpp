@@ -165,7 +165,9 @@ YamlInputError::YamlInputError(const std::string& file, int line, int column,
                                 : fmt::format("{}: {}: {}", file, key, message)),
       file_(file),
       line_(line),
-      key_(key) {}
+      column_(column),
+      key_(key),
+      message_(message) {}
 
 std::pair<int, int> position_of(const YAML::Node& node) {
   if (!node.IsDefined()) return {0, 0};

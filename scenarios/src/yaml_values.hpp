@@ -19,16 +19,19 @@ namespace ferro::scenarios::detail {
   throw YamlInputError(r.file(), l, c, r.key_path(key), message);
 }
 
-/// Optional list of finite numbers (empty when absent).
-[[nodiscard]] inline std::vector<double> number_list(MapReader& r, const std::string& key) {
+/// Optional list of finite numbers (empty when absent); allow_infinite also accepts .inf.
+[[nodiscard]] inline std::vector<double> number_list(MapReader& r, const std::string& key,
+                                                     bool allow_infinite = false) {
   const YAML::Node n = r.node(key);
   std::vector<double> out;
   if (!n.IsDefined() || n.IsNull()) return out;
   if (!n.IsSequence()) fail_at(r, n, key, "expected a list of numbers, e.g. [0.0, 1.0]");
   for (std::size_t i = 0; i < n.size(); ++i) {
     double v = 0.0;
-    if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], v) || !std::isfinite(v)) {
-      fail_at(r, n[i], fmt::format("{}[{}]", key, i), "expected a finite number");
+    if (!n[i].IsScalar() || !YAML::convert<double>::decode(n[i], v) || std::isnan(v) ||
+        (!allow_infinite && std::isinf(v))) {
+      fail_at(r, n[i], fmt::format("{}[{}]", key, i),
+              allow_infinite ? "expected a number (.inf allowed)" : "expected a finite number");
     }
     out.push_back(v);
   }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "ferro/scenarios/overrides.hpp"
 #include "ferro/scenarios/scene.hpp"
 
 namespace {
@@ -23,12 +24,6 @@ const std::vector<std::vector<std::string>> kVerbs = {
     {"run"},
     {"eig"},
     {"assess"},
-};
-
-// The options of `run` that override a scene, read back after parsing.
-struct RunOverrides {
-  double t_end = NAN, speed = NAN;
-  std::string tangential;
 };
 
 }  // namespace
@@ -67,9 +62,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   if (verb.front() != "run") return 0;
-  // The overrides `run` applies before it builds anything, on a linear and a vehicle scene.
+  // The overrides `run` applies before it builds anything (read back after parsing), on a linear
+  // and a vehicle scene.
   CLI::App* run = app.get_subcommand("run");
-  RunOverrides o;
+  ferro::scenarios::RunOverrides o;
   if (auto* opt = run->get_option_no_throw("--t-end"); opt && opt->count() > 0)
     o.t_end = opt->as<double>();
   if (auto* opt = run->get_option_no_throw("--speed"); opt && opt->count() > 0)
@@ -79,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto* base : {&hunting, &vehicle}) {
     ferro::scenarios::Scene scene = *base;
     try {
-      ferro::cli::apply_run_overrides(scene, o.t_end, o.speed, o.tangential);
+      ferro::scenarios::apply_overrides(scene, o, ferro::scenarios::Spelling::option);
     } catch (const std::invalid_argument&) {
     }
   }

@@ -14,3 +14,11 @@ test -x "$scratch/prefix/bin/ferrodyn"
 test -x "$scratch/prefix/libexec/ferrodyn/ferrodyn"
 test -f "$scratch/prefix/share/ferrodyn/ferroplot.py"
 "$scratch/prefix/bin/ferrodyn" --version
+# The Python module, when built: installed under the prefix at FERRO_PYTHON_INSTALL_DIR and
+# importable from there.
+if grep -q '^FERRO_BUILD_PYTHON:BOOL=ON' "$build_dir/CMakeCache.txt"; then
+  pydir=$(sed -n 's/^FERRO_PYTHON_INSTALL_DIR:STRING=//p' "$build_dir/CMakeCache.txt")
+  python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$build_dir/CMakeCache.txt")
+  (cd "$scratch" && PYTHONPATH="$scratch/prefix/$pydir" "$python" -c \
+    "import ferrodyn; assert ferrodyn.__file__.startswith('$scratch/prefix'); print('ferrodyn', ferrodyn.__version__)")
+fi

@@ -52,6 +52,7 @@ const BadScene kBadScenes[] = {
     {"include_directory", 12, "track", "is a directory"},
     {"include_name_too_long", 12, "track", "File name too long"},
     {"leading_comma", 1, "(document)", "',' outside [ ] or { }"},
+    {"output_between_steps", 26, "output.interval", "not a whole multiple of solver.fixed_step"},
 };
 
 class BadSceneFile : public ::testing::TestWithParam<BadScene> {};

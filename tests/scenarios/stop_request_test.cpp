@@ -103,10 +103,12 @@ TEST(StopRequest, sigterm_during_a_million_tiny_fixed_steps_per_output) {
 TEST(StopRequest, sigint_with_an_absurd_absolute_tolerance) {
   const fs::path dir = scratch("atol");
   const std::string out = (dir / "a.h5").string();
-  // The derailment scene's BDF run: an absolute tolerance of 1e-30 on states of order 1e-3
-  // takes steps of nanoseconds.
+  // The derailment scene under adaptive BDF (cvode_bdf; the scene's bdf2 takes a fixed step,
+  // where the tolerance only ends its Newton iterations): an absolute tolerance of 1e-30 on
+  // states of order 1e-3 takes steps of tens of nanoseconds.
   const auto s = stop_after({test::ferrodyn_exe(), "run", "scenarios/scenes/thesis_derailment.yaml",
-                             "--atol", "1e-30", "--no-plots", "-q", "-o", out},
+                             "--integrator", "cvode_bdf", "--atol", "1e-30", "--no-plots", "-q",
+                             "-o", out},
                             dir, 1.0, SIGINT);
   EXPECT_EQ(s.exit_code, 130) << s.output;
   EXPECT_LT(s.seconds, kStopSeconds);
@@ -119,8 +121,10 @@ TEST(StopRequest, a_signal_in_the_first_milliseconds_leaves_an_interrupted_file)
     std::string name = "e";
     name += std::to_string(delay_ms) + ".h5";
     const std::string out = (dir / name).string();
+    // In real time (--pace 1: 0.5 s) so the signal always comes before the end: unpaced, the
+    // whole run takes about as long as the longest delay here.
     test::LimitedProcess p({test::ferrodyn_exe(), "run", "tests/scenarios/data/good_minimal.yaml",
-                            "--no-plots", "-q", "-o", out},
+                            "--pace", "1", "--no-plots", "-q", "-o", out},
                            {});
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
     p.signal(SIGTERM);

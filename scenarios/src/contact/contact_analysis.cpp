@@ -13,7 +13,6 @@
 
 #include "ferro/io/hdf5.hpp"
 #include "ferro/io/text_writer.hpp"
-#include "ferro/scenarios/plotting.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -195,16 +194,6 @@ void write_patch_csv(const std::string& path, const PatchPicture& picture) {
             c.dy, c.pressure, c.traction_x, c.traction_y, c.slip);
   }
   f.close();
-}
-
-void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
-                     const std::string& title) {
-  if (run_python_tool("plot_contact.py", {mode, csv, png, title}) != 0) {
-    throw std::runtime_error(fmt::format(
-        "could not draw {} ({} with matplotlib needed; set FERRO_PYTHON to choose another); the "
-        "CSV {} is written",
-        png, python_program(), csv));
-  }
 }
 
 }  // namespace ferro::scenarios

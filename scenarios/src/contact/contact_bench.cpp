@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -231,7 +232,128 @@ void write_contact_bench_reference(const std::string& path,
   out.close();
 }
 
+namespace {
+
+// The mim_table file: given, or built (default spec) into a temporary file.
+std::string bench_table_path(const ContactBenchOptions& opt) {
+  std::string table_path = opt.table;
+  if (table_path.empty()) {
+    fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
+    if (opt.quick) {
+      spec.ratio = {0.2, 1.0, 5.0};
+      spec.xi_x = {0.0, 0.5, 1.2, 2.5, 5.0};
+      spec.xi_y = spec.xi_x;
+      spec.spin = {-9.0, -3.0, -1.0, 0.0, 1.0, 3.0, 9.0};
+      spec.elements = 8;
+      spec.grid = "minor";
+    }
+    spec.threads = std::max(1, opt.threads);
+    table_path = (std::filesystem::temp_directory_path() /
+                  fmt::format("ferrodyn_bench_mim_table_{}.h5", static_cast<long>(::getpid())))
+                     .string();
+    fc::MimTable::build(spec).write_hdf5(table_path);
+  }
+
+  return table_path;
+}
+
+struct BenchModel {
+  std::string label, name;
+  fc::ModelOptions options;
+};
+
+// Every model and setting the bench times, with the mim_table file.
+std::vector<BenchModel> bench_models(const std::string& table_path) {
+  return {
+      {"kalker_linear", "kalker_linear", {}},
+      {"linear_saturated", "linear_saturated", {}},
+      {"vermeulen_johnson", "vermeulen_johnson", {}},
+      {"shen_hedrick_elkins", "shen_hedrick_elkins", {}},
+      {"chopaya", "chopaya", {}},
+      {"polach", "polach", {}},
+      {"fastsim 20x20", "fastsim", {{"mx", "20"}, {"my", "20"}}},
+      {"fastsim 50x50", "fastsim", {{"mx", "50"}, {"my", "50"}}},
+      {"fastsim 20x20 elliptic", "fastsim", {{"mx", "20"}, {"my", "20"}, {"bound", "elliptic"}}},
+      {"fastsim 10x10 adaptive",
+       "fastsim",
+       {{"mx", "10"}, {"my", "10"}, {"flexibility", "adaptive"}}},
+      {"fastsim 20x20 adaptive",
+       "fastsim",
+       {{"mx", "20"}, {"my", "20"}, {"flexibility", "adaptive"}}},
+      {"fastsim 50x50 adaptive",
+       "fastsim",
+       {{"mx", "50"}, {"my", "50"}, {"flexibility", "adaptive"}}},
+      {"fastrip 8x8", "fastrip", {{"mx", "8"}, {"my", "8"}}},
+      {"fastrip 12x12", "fastrip", {{"mx", "12"}, {"my", "12"}}},
+      {"fastrip 20x20", "fastrip", {{"mx", "20"}, {"my", "20"}}},
+      {"fastrip 12x12 weighted", "fastrip", {{"slip_flexibility", "weighted"}}},
+      {"fastrip 12x12 three", "fastrip", {{"slip_flexibility", "three"}}},
+      {"mim_table", "mim_table", {{"table", table_path}}},
+      {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
+      {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},
+      {"mim 20 patch_richardson", "mim", {{"elements", "20"}, {"grid", "patch_richardson"}}},
+      {"mim 25 patch_richardson", "mim", {{"elements", "25"}, {"grid", "patch_richardson"}}},
+  };
+}
+
+// Times one model over the cases and measures its errors against the reference.
+ContactBenchRow bench_row(const BenchModel& e, const std::vector<ContactBenchCase>& cases,
+                          const std::vector<fc::TangentialProblem>& problems,
+                          const std::vector<ContactBenchReference>& reference, double min_time_s) {
+  const auto problem = [&](std::size_t k) -> const fc::TangentialProblem& { return problems[k]; };
+  const double s = kFriction * kNormalForce;
+  const auto model = fc::make_tangential_model(e.name, e.options);
+  std::vector<fc::TangentialSolution> forces;
+  double t0 = cpu_seconds();
+  for (std::size_t k = 0; k < cases.size(); ++k) forces.push_back(model->solve(problem(k)));
+  double elapsed = cpu_seconds() - t0;
+  long evaluations = static_cast<long>(cases.size());
+  if (elapsed < min_time_s) {  // timed passes with warm caches
+    evaluations = 0;
+    t0 = cpu_seconds();
+    do {
+      for (std::size_t k = 0; k < cases.size(); ++k) (void)model->solve(problem(k));
+      evaluations += static_cast<long>(cases.size());
+      elapsed = cpu_seconds() - t0;
+    } while (elapsed < min_time_s);
+  }
+  ContactBenchRow row;
+  row.label = e.label;
+  row.us_per_eval = 1e6 * elapsed / static_cast<double>(evaluations);
+  std::vector<double> err;
+  double sum_spin = 0.0, sum_plain = 0.0, sum_mz = 0.0;
+  int n_spin = 0, n_plain = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const double fx = forces[k].force_x / s, fy = forces[k].force_y / s;
+    const double ex = std::hypot(fx - reference[k].fx, fy - reference[k].fy);
+    err.push_back(ex);
+    (cases[k].spin != 0.0 ? sum_spin : sum_plain) += ex;
+    (cases[k].spin != 0.0 ? n_spin : n_plain) += 1;
+    sum_mz += std::abs(forces[k].moment_z / (s * kPatchScale) - reference[k].mz);
+    row.max_force = std::max(row.max_force, std::hypot(fx, fy));
+  }
+  double sum = 0.0;
+  for (double v : err) sum += v;
+  std::sort(err.begin(), err.end());
+  row.mean_error = sum / static_cast<double>(err.size());
+  row.p95_error =
+      err[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(err.size()))) - 1];
+  row.max_error = err.back();
+  row.mean_no_spin = n_plain > 0 ? sum_plain / n_plain : 0.0;
+  row.mean_spin = n_spin > 0 ? sum_spin / n_spin : 0.0;
+  row.mz_mean_error = sum_mz / static_cast<double>(cases.size());
+  return row;
+}
+
+}  // namespace
+
 ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
+  if (opt.reference_elements < 8) {
+    throw std::invalid_argument(fmt::format("--reference-elements: must be >= 8, got {}",
+                                            opt.reference_elements));
+  }
+  if (opt.threads < 1)
+    throw std::invalid_argument(fmt::format("--threads: must be >= 1, got {}", opt.threads));
   ContactBenchResult result;
   std::vector<ContactBenchCase> cases = contact_bench_cases();
   if (opt.quick) {  // 15 cases spread over the ratios, spins, directions and magnitudes
@@ -256,24 +378,7 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
     }
   }
 
-  // mim_table: given or built (default spec) into a temporary file.
-  std::string table_path = opt.table;
-  if (table_path.empty()) {
-    fc::MimTableSpec spec = fc::MimTableSpec::default_spec();
-    if (opt.quick) {
-      spec.ratio = {0.2, 1.0, 5.0};
-      spec.xi_x = {0.0, 0.5, 1.2, 2.5, 5.0};
-      spec.xi_y = spec.xi_x;
-      spec.spin = {-9.0, -3.0, -1.0, 0.0, 1.0, 3.0, 9.0};
-      spec.elements = 8;
-      spec.grid = "minor";
-    }
-    spec.threads = std::max(1, opt.threads);
-    table_path = (std::filesystem::temp_directory_path() /
-                  fmt::format("ferrodyn_bench_mim_table_{}.h5", static_cast<long>(::getpid())))
-                     .string();
-    fc::MimTable::build(spec).write_hdf5(table_path);
-  }
+  const std::string table_path = bench_table_path(opt);
 
   std::vector<fc::ContactPatch> patches(cases.size());
   for (std::size_t k = 0; k < cases.size(); ++k) patches[k] = contact_bench_patch(cases[k]);
@@ -282,80 +387,8 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
   for (std::size_t k = 0; k < cases.size(); ++k) {
     problems[k] = contact_bench_problem(cases[k], patches[k]);
   }
-  const auto problem = [&](std::size_t k) -> const fc::TangentialProblem& { return problems[k]; };
-
-  struct Entry {
-    std::string label, name;
-    fc::ModelOptions options;
-  };
-  std::vector<Entry> models = {
-      {"kalker_linear", "kalker_linear", {}},
-      {"linear_saturated", "linear_saturated", {}},
-      {"vermeulen_johnson", "vermeulen_johnson", {}},
-      {"shen_hedrick_elkins", "shen_hedrick_elkins", {}},
-      {"chopaya", "chopaya", {}},
-      {"polach", "polach", {}},
-      {"fastsim 20x20", "fastsim", {{"mx", "20"}, {"my", "20"}}},
-      {"fastsim 50x50", "fastsim", {{"mx", "50"}, {"my", "50"}}},
-      {"fastsim 20x20 elliptic", "fastsim", {{"mx", "20"}, {"my", "20"}, {"bound", "elliptic"}}},
-      {"fastsim 10x10 adaptive", "fastsim", {{"mx", "10"}, {"my", "10"}, {"flexibility", "adaptive"}}},
-      {"fastsim 20x20 adaptive", "fastsim", {{"mx", "20"}, {"my", "20"}, {"flexibility", "adaptive"}}},
-      {"fastsim 50x50 adaptive", "fastsim", {{"mx", "50"}, {"my", "50"}, {"flexibility", "adaptive"}}},
-      {"fastrip 8x8", "fastrip", {{"mx", "8"}, {"my", "8"}}},
-      {"fastrip 12x12", "fastrip", {{"mx", "12"}, {"my", "12"}}},
-      {"fastrip 20x20", "fastrip", {{"mx", "20"}, {"my", "20"}}},
-      {"fastrip 12x12 weighted", "fastrip", {{"slip_flexibility", "weighted"}}},
-      {"fastrip 12x12 three", "fastrip", {{"slip_flexibility", "three"}}},
-      {"mim_table", "mim_table", {{"table", table_path}}},
-      {"mim 16 patch", "mim", {{"elements", "16"}, {"grid", "patch"}}},
-      {"mim 25 patch", "mim", {{"elements", "25"}, {"grid", "patch"}}},
-      {"mim 20 patch_richardson", "mim", {{"elements", "20"}, {"grid", "patch_richardson"}}},
-      {"mim 25 patch_richardson", "mim", {{"elements", "25"}, {"grid", "patch_richardson"}}},
-  };
-
-  const double s = kFriction * kNormalForce;
-  for (const Entry& e : models) {
-    const auto model = fc::make_tangential_model(e.name, e.options);
-    std::vector<fc::TangentialSolution> forces;
-    double t0 = cpu_seconds();
-    for (std::size_t k = 0; k < cases.size(); ++k) forces.push_back(model->solve(problem(k)));
-    double elapsed = cpu_seconds() - t0;
-    long evaluations = static_cast<long>(cases.size());
-    if (elapsed < opt.min_time_s) {  // timed passes with warm caches
-      evaluations = 0;
-      t0 = cpu_seconds();
-      do {
-        for (std::size_t k = 0; k < cases.size(); ++k) (void)model->solve(problem(k));
-        evaluations += static_cast<long>(cases.size());
-        elapsed = cpu_seconds() - t0;
-      } while (elapsed < opt.min_time_s);
-    }
-    ContactBenchRow row;
-    row.label = e.label;
-    row.us_per_eval = 1e6 * elapsed / static_cast<double>(evaluations);
-    std::vector<double> err;
-    double sum_spin = 0.0, sum_plain = 0.0, sum_mz = 0.0;
-    int n_spin = 0, n_plain = 0;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      const double fx = forces[k].force_x / s, fy = forces[k].force_y / s;
-      const double ex = std::hypot(fx - result.reference[k].fx, fy - result.reference[k].fy);
-      err.push_back(ex);
-      (cases[k].spin != 0.0 ? sum_spin : sum_plain) += ex;
-      (cases[k].spin != 0.0 ? n_spin : n_plain) += 1;
-      sum_mz += std::abs(forces[k].moment_z / (s * kPatchScale) - result.reference[k].mz);
-      row.max_force = std::max(row.max_force, std::hypot(fx, fy));
-    }
-    double sum = 0.0;
-    for (double v : err) sum += v;
-    std::sort(err.begin(), err.end());
-    row.mean_error = sum / static_cast<double>(err.size());
-    row.p95_error = err[static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(err.size()))) - 1];
-    row.max_error = err.back();
-    row.mean_no_spin = n_plain > 0 ? sum_plain / n_plain : 0.0;
-    row.mean_spin = n_spin > 0 ? sum_spin / n_spin : 0.0;
-    row.mz_mean_error = sum_mz / static_cast<double>(cases.size());
-    result.rows.push_back(row);
-  }
+  for (const BenchModel& e : bench_models(table_path))
+    result.rows.push_back(bench_row(e, cases, problems, result.reference, opt.min_time_s));
   if (opt.table.empty()) std::filesystem::remove(table_path);
   return result;
 }
@@ -371,6 +404,92 @@ void write_contact_bench_csv(const ContactBenchResult& result, const std::string
               r.mz_mean_error, r.max_force);
   }
   out.close();
+}
+
+Parameters parameters(ContactBenchOptions& o) {
+  return {
+      {"reference_elements", "", "reference MIM: N (grids N x N and 2N x 2N over the patch)",
+       &o.reference_elements},
+      {"reference", "",
+       "reference CSV: read when it holds this case set, else computed and written (shipped: "
+       "tests/data/contact_bench_reference.csv)",
+       &o.reference, false},
+      {"threads", "", "threads of the reference computation", &o.threads},
+      {"table", "", "mim_table HDF5 file (default: build the default table)", &o.table, false},
+      {"min_time", "s", "timing: minimum CPU time per model", &o.min_time_s},
+      {"quick", "", "15 cases, coarse reference and table (smoke test)", &o.quick},
+  };
+}
+
+std::vector<ContactBenchGridRow> contact_bench_grid_study(const ContactBenchResult& r,
+                                                          int threads) {
+  const int n = r.reference_elements;
+  std::vector<ContactBenchCase> study;
+  std::vector<std::size_t> index;
+  for (std::size_t k = 0; k < r.cases.size(); ++k) {
+    const auto& c = r.cases[k];
+    const bool spin = c.kind == "spin" && c.spin == 1.0;
+    const bool creep = c.spin == 0.0 && c.kind == "x+y" && c.xi_y > 0.0 &&
+                       std::abs(std::hypot(c.xi_x, c.xi_y) - 0.8) < 1e-9 && c.xi_x > c.xi_y;
+    if (spin || creep) {
+      study.push_back(c);
+      index.push_back(k);
+    }
+  }
+  std::vector<ContactBenchGridRow> rows;
+  if (study.empty() || n < 16) return rows;
+  const auto half = contact_bench_reference(study, n / 2, threads);
+  for (std::size_t j = 0; j < study.size(); ++j) {
+    const auto& ref = r.reference[index[j]];
+    const double d1 = std::hypot(half[j].fx_n - ref.fx_n, half[j].fy_n - ref.fy_n);
+    const double d2 = std::hypot(ref.fx_n - ref.fx_2n, ref.fy_n - ref.fy_2n);
+    rows.push_back(
+        {study[j], half[j].fy_n, ref.fy_n, ref.fy_2n, ref.fy, d2 > 0.0 ? std::log2(d1 / d2) : 0.0});
+  }
+  return rows;
+}
+
+double contact_bench_mean_correction(const ContactBenchResult& r) {
+  double corr = 0.0;
+  for (const auto& ref : r.reference) corr += std::hypot(ref.fx - ref.fx_2n, ref.fy - ref.fy_2n);
+  return corr / static_cast<double>(r.reference.size());
+}
+
+std::string contact_bench_report(const ContactBenchResult& r, int threads) {
+  std::string text;
+  auto out = std::back_inserter(text);
+  const int n = r.reference_elements;
+  const auto study = contact_bench_grid_study(r, threads);
+  if (!study.empty()) {
+    fmt::format_to(out, "Reference grid study (MIM over the patch; F in mu F_n):\n");
+    fmt::format_to(out,
+                   "| a/b | case | F_y ({0}) | F_y ({1}) | F_y ({2}) | extrapolated | order |\n"
+                   "|---|---|---|---|---|---|---|\n",
+                   n / 2, n, 2 * n);
+    for (const auto& g : study) {
+      fmt::format_to(out, "| {} | {} | {:.5f} | {:.5f} | {:.5f} | {:.5f} | {:.2f} |\n", g.c.ratio,
+                     g.c.kind == "spin" ? "spin 1" : "creep 0.8 @ 30 deg", g.fy_half, g.fy_n,
+                     g.fy_2n, g.fy_extrapolated, g.order);
+    }
+  }
+  fmt::format_to(out,
+                 "{} Hertzian cases; reference MIM {} / {} over the patch{}, mean Richardson "
+                 "correction {:.5f} mu F_n; error = |F_t - F_t,ref| / (mu F_n); CPU time per "
+                 "evaluation\n",
+                 r.cases.size(), n, 2 * n, r.reference_from_file ? " (from file)" : "",
+                 contact_bench_mean_correction(r));
+  fmt::format_to(
+      out,
+      "| model | us / eval | mean | 95th pct | max | mean no spin | mean spin | M_z mean "
+      "| max abs F |\n|---|---|---|---|---|---|---|---|---|\n");
+  for (const auto& row : r.rows) {
+    fmt::format_to(out,
+                   "| {} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
+                   "|\n",
+                   row.label, row.us_per_eval, row.mean_error, row.p95_error, row.max_error,
+                   row.mean_no_spin, row.mean_spin, row.mz_mean_error, row.max_force);
+  }
+  return text;
 }
 
 }  // namespace ferro::scenarios

@@ -135,152 +135,112 @@ std::string NamedModel::label() const {
   return s;
 }
 
-ContactCase load_contact_case(const std::string& path) {
-  const YamlFile file = load_yaml_file(path);
-  MapReader root(file.root, path, "");
-  ContactCase c;
-  if (!root.has("schema_version")) {
-    root.fail("schema_version", fmt::format("missing; this program reads schema_version {}",
-                                            ContactCase::kSchemaVersion));
+namespace {
+
+// The geometry block: curvatures (or radii), and for semi_hertz a gap from wells or samples.
+void read_case_geometry(MapReader& root, ContactCase& c, const std::string& path) {
+  MapReader g = root.map("geometry");
+  c.normal.curvature_x = positive_or(g, "curvature_x", c.normal.curvature_x);
+  c.normal.curvature_y = positive_or(g, "curvature_y", c.normal.curvature_y);
+  if (g.has("radii")) {
+    MapReader r = g.map("radii");
+    c.normal.curvature_x = half_curvature(r, "body1_x") + half_curvature(r, "body2_x");
+    c.normal.curvature_y = half_curvature(r, "body1_y") + half_curvature(r, "body2_y");
+    r.finish();
   }
-  const long version = root.integer_or("schema_version", -1);
-  if (version != ContactCase::kSchemaVersion) {
-    root.fail("schema_version", fmt::format("unsupported version {}; supported: {}", version,
-                                            ContactCase::kSchemaVersion));
-  }
-  c.name = root.string_or("name", "contact_case");
-  // Normal model.
-  if (root.has("normal_model")) {
-    const NamedModel n = named_model(root.node("normal_model"), path, "normal_model");
-    c.normal_model = n.name;
-    c.normal_options = n.options;
-  }
-  root.allow("normal_model");
-  try {
-    (void)contact::make_normal_model(c.normal_model, c.normal_options);
-  } catch (const std::invalid_argument& e) {
-    root.fail("normal_model", e.what());
-  }
-  // Geometry.
-  {
-    MapReader g = root.map("geometry");
-    c.normal.curvature_x = positive_or(g, "curvature_x", c.normal.curvature_x);
-    c.normal.curvature_y = positive_or(g, "curvature_y", c.normal.curvature_y);
-    if (g.has("radii")) {
-      MapReader r = g.map("radii");
-      c.normal.curvature_x = half_curvature(r, "body1_x") + half_curvature(r, "body2_x");
-      c.normal.curvature_y = half_curvature(r, "body1_y") + half_curvature(r, "body2_y");
-      r.finish();
+  g.allow("radii");
+  if (g.has("wells")) {
+    // Gap z(y) = min over wells of curvature (y - y_w)^2 + depth, sampled on [y_min, y_max].
+    const double y0 = g.number("y_min");
+    const double y1 = g.number("y_max");
+    const long n = g.integer_or("samples", 1201);
+    if (!(y1 > y0)) g.fail("y_max", "must be > y_min");
+    if (n < 3 || n > 1'000'000) g.fail("samples", "must lie in [3, 1000000]");
+    const YAML::Node w = g.node("wells");
+    if (!w.IsSequence() || w.size() == 0)
+      g.fail("wells", "expected a list of {y, curvature, depth}");
+    struct Well {
+      double y, curvature, depth;
+    };
+    std::vector<Well> wells;
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      MapReader wr(w[k], path, fmt::format("geometry.wells[{}]", k));
+      wells.push_back({wr.number("y"), positive(wr, "curvature"), wr.number_or("depth", 0.0)});
+      wr.finish();
     }
-    g.allow("radii");
-    if (g.has("wells")) {
-      // Gap z(y) = min over wells of curvature (y - y_w)^2 + depth, sampled on [y_min, y_max].
-      const double y0 = g.number("y_min");
-      const double y1 = g.number("y_max");
-      const long n = g.integer_or("samples", 1201);
-      if (!(y1 > y0)) g.fail("y_max", "must be > y_min");
-      if (n < 3 || n > 1'000'000) g.fail("samples", "must lie in [3, 1000000]");
-      const YAML::Node w = g.node("wells");
-      if (!w.IsSequence() || w.size() == 0)
-        g.fail("wells", "expected a list of {y, curvature, depth}");
-      struct Well {
-        double y, curvature, depth;
-      };
-      std::vector<Well> wells;
-      for (std::size_t k = 0; k < w.size(); ++k) {
-        MapReader wr(w[k], path, fmt::format("geometry.wells[{}]", k));
-        wells.push_back({wr.number("y"), positive(wr, "curvature"), wr.number_or("depth", 0.0)});
-        wr.finish();
+    for (long i = 0; i < n; ++i) {
+      const double y = y0 + (y1 - y0) * static_cast<double>(i) / static_cast<double>(n - 1);
+      double z = INFINITY;
+      for (const Well& well : wells) {
+        z = std::min(z, well.curvature * (y - well.y) * (y - well.y) + well.depth);
       }
-      for (long i = 0; i < n; ++i) {
-        const double y = y0 + (y1 - y0) * static_cast<double>(i) / static_cast<double>(n - 1);
-        double z = INFINITY;
-        for (const Well& well : wells) {
-          z = std::min(z, well.curvature * (y - well.y) * (y - well.y) + well.depth);
-        }
-        c.normal.gap_y.push_back(y);
-        c.normal.gap_z.push_back(z);
-      }
-    }
-    g.allow("wells");
-    if (g.has("gap_y") || g.has("gap_z")) {
-      c.normal.gap_y = number_list(g, "gap_y");
-      c.normal.gap_z = number_list(g, "gap_z");
-      if (c.normal.gap_y.size() != c.normal.gap_z.size()) {
-        g.fail("gap_z", fmt::format("must have as many values as gap_y ({}), got {}",
-                                    c.normal.gap_y.size(), c.normal.gap_z.size()));
-      }
-    }
-    g.allow("gap_y");
-    g.allow("gap_z");
-    g.finish();
-    if (!(c.normal.curvature_x > 0.0)) {
-      g.fail("curvature_x", "missing or not > 0 (A [1/m], or radii)");
-    }
-    if (c.normal_model == "hertz" && !(c.normal.curvature_y > 0.0)) {
-      g.fail("curvature_y", "hertz needs B > 0 [1/m] (or radii)");
-    }
-    if (c.normal_model == "semi_hertz" && c.normal.gap_y.size() < 3) {
-      g.fail("wells", "semi_hertz needs 'wells' or 'gap_y'/'gap_z'");
+      c.normal.gap_y.push_back(y);
+      c.normal.gap_z.push_back(z);
     }
   }
-  // Load.
-  {
-    MapReader load = root.map("load");
-    if (load.has("normal_force") && load.has("approach")) {
-      load.fail("approach", "give normal_force [N] or approach [m], not both");
-    }
-    if (load.has("normal_force")) {
-      c.normal.normal_force = positive(load, "normal_force");
-    } else if (load.has("approach")) {
-      c.approach = positive(load, "approach");
-      if (c.normal_model != "hertz") load.fail("approach", "only with normal_model hertz");
-    } else {
-      load.fail("normal_force", "needs normal_force [N] or approach [m]");
-    }
-    load.allow("normal_force");
-    load.allow("approach");
-    load.finish();
-  }
-  // Materials, friction, K_ij.
-  {
-    MapReader bodies = root.map("bodies");
-    c.normal.body1 = material_of(bodies.map("wheel"));
-    c.normal.body2 = material_of(bodies.map("rail"));
-    bodies.finish();
-  }
-  c.friction = positive(root, "friction");
-  if (root.has("reduction")) {
-    MapReader k = root.map("reduction");
-    if (k.has("k")) c.reduction = contact::ReductionFactors::uniform(positive(k, "k"));
-    c.reduction.k11 = positive_or(k, "k11", c.reduction.k11);
-    c.reduction.k22 = positive_or(k, "k22", c.reduction.k22);
-    // K23 = K22 unless given (Toumi 2016, section 4.2.4).
-    if (k.has("k22") && !k.has("k23") && !k.has("k")) c.reduction.k23 = c.reduction.k22;
-    c.reduction.k23 = positive_or(k, "k23", c.reduction.k23);
-    c.reduction.k33 = positive_or(k, "k33", c.reduction.k33);
-    k.allow("k");
-    k.finish();
-  }
-  root.allow("reduction");
-  // Models.
-  {
-    const YAML::Node models = root.node("models");
-    if (!models.IsSequence() || models.size() == 0) {
-      root.fail("models", "expected a non-empty list of {name, options}");
-    }
-    for (std::size_t i = 0; i < models.size(); ++i) {
-      const std::string key = fmt::format("models[{}]", i);
-      NamedModel m = named_model(models[i], path, key);
-      try {
-        (void)contact::make_tangential_model(m.name, m.options);
-      } catch (const std::invalid_argument& e) {
-        const auto [l, col] = position_of(models[i]);
-        throw YamlInputError(path, l, col, key, e.what());
-      }
-      c.models.push_back(std::move(m));
+  g.allow("wells");
+  if (g.has("gap_y") || g.has("gap_z")) {
+    c.normal.gap_y = number_list(g, "gap_y");
+    c.normal.gap_z = number_list(g, "gap_z");
+    if (c.normal.gap_y.size() != c.normal.gap_z.size()) {
+      g.fail("gap_z", fmt::format("must have as many values as gap_y ({}), got {}",
+                                  c.normal.gap_y.size(), c.normal.gap_z.size()));
     }
   }
+  g.allow("gap_y");
+  g.allow("gap_z");
+  g.finish();
+  if (!(c.normal.curvature_x > 0.0)) {
+    g.fail("curvature_x", "missing or not > 0 (A [1/m], or radii)");
+  }
+  if (c.normal_model == "hertz" && !(c.normal.curvature_y > 0.0)) {
+    g.fail("curvature_y", "hertz needs B > 0 [1/m] (or radii)");
+  }
+  if (c.normal_model == "semi_hertz" && c.normal.gap_y.size() < 3) {
+    g.fail("wells", "semi_hertz needs 'wells' or 'gap_y'/'gap_z'");
+  }
+}
+
+// The load block: normal force or (Hertz) approach.
+void read_case_load(MapReader& root, ContactCase& c) {
+  MapReader load = root.map("load");
+  if (load.has("normal_force") && load.has("approach")) {
+    load.fail("approach", "give normal_force [N] or approach [m], not both");
+  }
+  if (load.has("normal_force")) {
+    c.normal.normal_force = positive(load, "normal_force");
+  } else if (load.has("approach")) {
+    c.approach = positive(load, "approach");
+    if (c.normal_model != "hertz") load.fail("approach", "only with normal_model hertz");
+  } else {
+    load.fail("normal_force", "needs normal_force [N] or approach [m]");
+  }
+  load.allow("normal_force");
+  load.allow("approach");
+  load.finish();
+}
+
+// The tangential models to compare, each checked by building it.
+void read_case_models(MapReader& root, ContactCase& c, const std::string& path) {
+  const YAML::Node models = root.node("models");
+  if (!models.IsSequence() || models.size() == 0) {
+    root.fail("models", "expected a non-empty list of {name, options}");
+  }
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const std::string key = fmt::format("models[{}]", i);
+    NamedModel m = named_model(models[i], path, key);
+    try {
+      (void)contact::make_tangential_model(m.name, m.options);
+    } catch (const std::invalid_argument& e) {
+      const auto [l, col] = position_of(models[i]);
+      throw YamlInputError(path, l, col, key, e.what());
+    }
+    c.models.push_back(std::move(m));
+  }
+}
+
+// The curves and the patch picture asked for.
+void read_case_outputs(MapReader& root, ContactCase& c) {
   // Curves and patch picture.
   if (root.has("curves")) {
     MapReader cv = root.map("curves");
@@ -307,6 +267,61 @@ ContactCase load_contact_case(const std::string& path) {
     p.finish();
   }
   root.allow("patch");
+}
+
+}  // namespace
+
+ContactCase load_contact_case(const std::string& path) {
+  const YamlFile file = load_yaml_file(path);
+  MapReader root(file.root, path, "");
+  ContactCase c;
+  if (!root.has("schema_version")) {
+    root.fail("schema_version", fmt::format("missing; this program reads schema_version {}",
+                                            ContactCase::kSchemaVersion));
+  }
+  const long version = root.integer_or("schema_version", -1);
+  if (version != ContactCase::kSchemaVersion) {
+    root.fail("schema_version", fmt::format("unsupported version {}; supported: {}", version,
+                                            ContactCase::kSchemaVersion));
+  }
+  c.name = root.string_or("name", "contact_case");
+  // Normal model.
+  if (root.has("normal_model")) {
+    const NamedModel n = named_model(root.node("normal_model"), path, "normal_model");
+    c.normal_model = n.name;
+    c.normal_options = n.options;
+  }
+  root.allow("normal_model");
+  try {
+    (void)contact::make_normal_model(c.normal_model, c.normal_options);
+  } catch (const std::invalid_argument& e) {
+    root.fail("normal_model", e.what());
+  }
+  read_case_geometry(root, c, path);
+  read_case_load(root, c);
+  // Materials, friction, K_ij.
+  {
+    MapReader bodies = root.map("bodies");
+    c.normal.body1 = material_of(bodies.map("wheel"));
+    c.normal.body2 = material_of(bodies.map("rail"));
+    bodies.finish();
+  }
+  c.friction = positive(root, "friction");
+  if (root.has("reduction")) {
+    MapReader k = root.map("reduction");
+    if (k.has("k")) c.reduction = contact::ReductionFactors::uniform(positive(k, "k"));
+    c.reduction.k11 = positive_or(k, "k11", c.reduction.k11);
+    c.reduction.k22 = positive_or(k, "k22", c.reduction.k22);
+    // K23 = K22 unless given (Toumi 2016, section 4.2.4).
+    if (k.has("k22") && !k.has("k23") && !k.has("k")) c.reduction.k23 = c.reduction.k22;
+    c.reduction.k23 = positive_or(k, "k23", c.reduction.k23);
+    c.reduction.k33 = positive_or(k, "k33", c.reduction.k33);
+    k.allow("k");
+    k.finish();
+  }
+  root.allow("reduction");
+  read_case_models(root, c, path);
+  read_case_outputs(root, c);
   root.finish();
   return c;
 }

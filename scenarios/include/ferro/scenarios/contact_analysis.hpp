@@ -46,9 +46,4 @@ struct PatchPicture {
                                                  const contact::NormalSolution& normal);
 void write_patch_csv(const std::string& path, const PatchPicture& picture);
 
-/// Runs tools/plot_contact.py (mode "curves" or "patch"). Interpreters tried in order:
-/// $FERRO_PYTHON, python3, /usr/bin/python3. Throws std::runtime_error if none succeeds.
-void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
-                     const std::string& title);
-
 }  // namespace ferro::scenarios

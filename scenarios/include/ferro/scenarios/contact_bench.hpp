@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ferro/contact/tangential/tangential_model.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {
 
@@ -74,13 +75,35 @@ struct ContactBenchResult {
   bool reference_from_file = false;
 };
 
-/// Runs every model over the cases. Throws std::runtime_error when a model fails.
+/// The options as parameters (see parameters.hpp).
+[[nodiscard]] Parameters parameters(ContactBenchOptions& options);
+
+/// Runs every model over the cases. Throws std::invalid_argument for bad options,
+/// std::runtime_error when a model fails.
 [[nodiscard]] ContactBenchResult run_contact_bench(const ContactBenchOptions& options);
 
 /// Converged-MIM reference of the cases: MIM on N x N and 2N x 2N grids over the patch, the
 /// forces extrapolated as second order (F = F_2N + (F_2N - F_N) / 3).
 [[nodiscard]] std::vector<ContactBenchReference> contact_bench_reference(
     const std::vector<ContactBenchCase>& cases, int elements, int threads);
+
+/// One case of the reference's grid study: F_y / (mu F_n) by MIM over the patch at N/2, N and
+/// 2N elements, the extrapolated value and the observed order p = log2(|F_N/2 - F_N| /
+/// |F_N - F_2N|) (of the force vector; 0 when the last difference is 0).
+struct ContactBenchGridRow {
+  ContactBenchCase c;
+  double fy_half = 0.0, fy_n = 0.0, fy_2n = 0.0, fy_extrapolated = 0.0, order = 0.0;
+};
+/// The grid study of `result`'s reference over pure spin (phi* = 1) and a transition creepage
+/// (0.8 at 30 deg) for each a/b: empty when the reference has fewer than 16 elements.
+[[nodiscard]] std::vector<ContactBenchGridRow> contact_bench_grid_study(
+    const ContactBenchResult& result, int threads);
+/// Mean |F(extrapolated) - F(2N)| / (mu F_n) over the cases: the size of the Richardson step.
+[[nodiscard]] double contact_bench_mean_correction(const ContactBenchResult& result);
+
+/// The report `ferrodyn bench contact` prints: the reference's grid study (computed here on
+/// `threads` threads), then one Markdown row per model.
+[[nodiscard]] std::string contact_bench_report(const ContactBenchResult& result, int threads);
 
 /// Reference CSV I/O (ratio, xi_x, xi_y, spin, fx, fy, mz, fx_n, fy_n, fx_2n, fy_2n; '#' lines
 /// are comments; the first comment names N). read returns false when the file is missing or its

@@ -8,11 +8,13 @@
 #include <map>
 #include <memory>
 #include <ostream>
+#include <span>
 #include <string>
 
 #include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/contact/tangential/kalker_coefficients.hpp"
 #include "ferro/contact/tangential/tangential_model.hpp"
+#include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::scenarios {
 
@@ -35,6 +37,10 @@ struct EvalInput {
   std::map<std::string, double> table_point;
 };
 
+/// A case's values as parameters (see parameters.hpp): the table and its point are not among
+/// them.
+[[nodiscard]] Parameters parameters(EvalInput& input);
+
 struct EvalOutput {
   contact::ContactPatch patch;
   contact::NormalProblem gap;  ///< the quadratic gap A x^2 + B y^2, for models that need it (MIM)
@@ -48,10 +54,43 @@ struct EvalOutput {
                                           const contact::TangentialModel& model,
                                           contact::CoefficientSource source);
 
+/// Caller-owned output columns of evaluate_contact_columns, each empty (not wanted) or one value
+/// per case: patch [m, Pa], forces on the wheel [N, N m], adhesion fraction [-], C_ij used [-].
+struct EvalOutputColumns {
+  std::span<double> semi_axis_x, semi_axis_y, peak_pressure;
+  std::span<double> force_x, force_y, moment_z, adhesion_fraction;
+  std::span<double> c11, c22, c23, c33;
+};
+
+/// Solves n cases with `model`: each input column, named by a key of parameters(EvalInput)
+/// (a, b, curvature_x, curvature_y, fn, g1, nu1, g2, nu2, mu, xi_x, xi_y, spin, k11, k22, k23,
+/// k33), holds n values or one for every case; the other fields are those of `defaults`. The
+/// same arithmetic as evaluate_contact, case after case. Throws std::invalid_argument naming an
+/// unknown key, a column of the wrong length, or the case and the bad value.
+void evaluate_contact_columns(const EvalInput& defaults,
+                              const std::map<std::string, std::span<const double>>& inputs,
+                              std::size_t n, const contact::TangentialModel& model,
+                              contact::CoefficientSource source, const EvalOutputColumns& out);
+
+/// n normal-contact cases with `model` on `base` (materials, gap samples): the normal force and
+/// the curvatures A, B from columns (n values or one; empty: the base's). Per case the rigid
+/// approach [m]; per patch (several per case for a split semi-Hertz contact) its case index and
+/// the patch itself.
+struct NormalCases {
+  std::vector<double> approach;
+  std::vector<std::size_t> patch_case;
+  std::vector<contact::ContactPatch> patches;
+};
+[[nodiscard]] NormalCases solve_normal_cases(const contact::NormalContactModel& model,
+                                             const contact::NormalProblem& base, std::size_t n,
+                                             std::span<const double> normal_force,
+                                             std::span<const double> curvature_x,
+                                             std::span<const double> curvature_y);
+
 /// CSV batch: a header naming EvalInput's fields (a, b, curvature_x, curvature_y, fn, g1, nu1,
 /// g2, nu2, mu, xi_x, xi_y, phi or spin, k11, k22, k23, k33, model), then one case per row; an
 /// empty cell keeps the value of `defaults`. Writes a header and one CSV row per case to `out`
-/// as each is solved. Throws std::invalid_argument located as "<input_name>:<line>: ...".
+/// as each is solved, every number in the shortest text that reads back as the same double. Throws std::invalid_argument located as "<input_name>:<line>: ...".
 void evaluate_contact_batch(std::istream& in, const std::string& input_name,
                             const EvalInput& defaults, const contact::ModelOptions& options,
                             contact::CoefficientSource source, std::ostream& out);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct RunOptions {
   /// Simulated seconds per wall-clock second (0 = as fast as possible). With pace 1 a run
   /// advances in real time, so it can be watched live.
   double pace = 0.0;
+  /// Called with each sample: time [s] and the values of RunSummary::channels [SI].
+  std::function<void(double t, std::span<const double> values)> on_sample;
+  /// false: no HDF5 (nor CSV) file; the samples reach the caller through on_sample only.
+  bool write_output = true;
 };
 
 struct RunSummary {
@@ -37,7 +42,7 @@ struct RunSummary {
   double wall_seconds = 0.0;
   long steps = 0;
   long rhs_evaluations = 0;
-  std::string output_file;
+  std::string output_file;                    ///< empty when no file was written
   std::string csv_file;                       ///< empty when no CSV was asked for
   std::vector<vehicle::SignalInfo> channels;  ///< states then derived signals
   std::size_t state_count = 0;                ///< the first state_count channels are states
@@ -88,6 +93,12 @@ void write_eigen_report(const Scene& scene, const EigenReport& report, const std
 /// that would give more than kMaxOutputSamples samples.
 [[nodiscard]] std::uint64_t output_sample_count(double t_end, double interval,
                                                 const std::string& where = "output.interval");
+/// For a fixed-step integrator, the output interval must be a whole multiple of the step: a
+/// sample between two steps would interpolate the states, and the contact forces derived from
+/// interpolated states are not the model's (an error of a micrometre in a Hertz approach of
+/// fifty is a tenth of the wheel load). Throws std::invalid_argument ("<where>: ...") otherwise.
+void check_output_on_steps(double interval, const vehicle::IntegratorSettings& solver,
+                           const std::string& where = "output.interval");
 /// At most this many output samples per run (8 TB per signal): anything beyond is a typo.
 inline constexpr double kMaxOutputSamples = 1e12;
 

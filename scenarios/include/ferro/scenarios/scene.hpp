@@ -11,6 +11,7 @@
 
 #include "ferro/contact/model_options.hpp"
 #include "ferro/scenarios/track_config.hpp"
+#include "ferro/scenarios/yaml_reader.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/output_signals.hpp"
 #include "ferro/vehicle/suspended_wheelset.hpp"
@@ -100,9 +101,34 @@ struct Scene {
   AssessmentConfig assessment;
 };
 
+/// A value given by key in place of the file's: the dotted key path from the scene's root
+/// ("simulation.speed", "solver.integrator", "model.vehicle.wheel_rail.friction"; the path runs
+/// on into a part or a vehicle file given by file name) and the value as YAML text ("40",
+/// "cvode_bdf", "[1, 2]", "{shear_modulus: 8e10}").
+struct KeyOverride {
+  std::string key;
+  std::string value;
+};
+
 /// Loads and validates a scene. Throws YamlInputError (file:line:col: key: message) for any bad
 /// input, including values that fail the parameter structs' validate().
 [[nodiscard]] Scene load_scene(const std::string& path);
+/// The same with values replaced by key before reading. An error in an overridden value names
+/// the key, without a line, and says it was given as an override.
+[[nodiscard]] Scene load_scene(const std::string& path, const std::vector<KeyOverride>& overrides);
+/// An error located in a scene's files, moved to the override when its key is one of the
+/// overrides' (or below one): no line, "(given as an override)" added. Else `e` unchanged.
+[[nodiscard]] YamlInputError at_override(const YamlInputError& e, const std::string& scene_path,
+                                         const std::vector<KeyOverride>& overrides);
+
+/// A scene given as YAML text: `path` names it in messages and its folder is where relative
+/// file names are looked for.
+[[nodiscard]] Scene load_scene_text(const std::string& text, const std::string& path,
+                                    const std::vector<KeyOverride>& overrides = {});
+
+/// The value at a dotted key path of a scene (as KeyOverride::key, through parts and vehicle
+/// files given by file name) as written in its files; a null node when absent.
+[[nodiscard]] YAML::Node scene_value(const YamlFile& scene_file, const std::string& key);
 
 /// Every file the scene reads: the scene itself, its included parts and vehicle file, profiles,
 /// contact and K_ij tables, measured irregularities. Outputs never replace any of them.

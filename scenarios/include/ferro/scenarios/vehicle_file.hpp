@@ -32,6 +32,9 @@ inline constexpr int kVehicleSchemaVersion = 1;
 /// Loads a vehicle file (with `schema_version: 1`).
 [[nodiscard]] vehicle::VehicleConfig load_vehicle_file(const std::string& path,
                                                        std::string* category = nullptr);
+/// The same from a file already parsed (e.g. with values replaced by key).
+[[nodiscard]] vehicle::VehicleConfig read_vehicle_file(const YamlFile& file,
+                                                       std::string* category = nullptr);
 
 /// Reads wheel-rail keys into `spec`, changing only the keys present (so a scene's contact
 /// part can override the vehicle file's wheel_rail block). Does not call r.finish(): `extra`

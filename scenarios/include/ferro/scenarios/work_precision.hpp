@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "ferro/scenarios/parameters.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/vehicle/integrator.hpp"
 
@@ -42,6 +43,9 @@ struct WorkPrecisionOptions {
   /// Error that picks the best choice: "pointwise" or "cycle".
   std::string metric = "pointwise";
 };
+
+/// The options as parameters (see parameters.hpp).
+[[nodiscard]] Parameters parameters(WorkPrecisionOptions& options);
 
 /// Amplitude and frequency of a sampled oscillation: amplitude = half of (max - min), each
 /// extremum refined by the parabola through it and its two neighbours; frequency from the upward
@@ -88,5 +92,11 @@ struct WorkPrecisionReport {
 
 /// Writes the table as CSV (one row per run, the reference first).
 void write_work_precision_csv(const WorkPrecisionReport& report, const std::string& path);
+
+/// The table as `ferrodyn bench work-precision` prints it (Markdown rows), with the reference's
+/// cycles and the cheapest setting within options.target_error.
+[[nodiscard]] std::string work_precision_report(const Scene& scene,
+                                                const WorkPrecisionReport& report,
+                                                const WorkPrecisionOptions& options);
 
 }  // namespace ferro::scenarios

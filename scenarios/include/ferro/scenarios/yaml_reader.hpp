@@ -23,11 +23,16 @@ class YamlInputError : public std::invalid_argument {
   [[nodiscard]] const std::string& file() const { return file_; }
   [[nodiscard]] int line() const { return line_; }
   [[nodiscard]] const std::string& key() const { return key_; }
+  [[nodiscard]] int column() const { return column_; }
+  /// The message without its location.
+  [[nodiscard]] const std::string& message() const { return message_; }
 
  private:
   std::string file_;
   int line_;
+  int column_;
   std::string key_;
+  std::string message_;
 };
 
 /// A parsed YAML file: its path, its text (kept for the output's metadata) and its root node.

@@ -2,8 +2,9 @@
 // Sweeps of independent constant-speed runs (speeds x reduction factors): the steady
 // oscillation amplitude of each wheelset at each point, run over a pool of local threads; a
 // journal records each finished point durably so that an interrupted sweep resumes without
-// redoing it. Distribution over MPI ranks lives in the command line (rank 0 gathers and writes),
-// with the same per-point function, so serial, threaded and MPI sweeps give the same numbers.
+// redoing it. run_sweep deals the points to the ranks of an executor (sweep_executor.hpp; rank 0
+// gathers and writes) and to threads within each, with the same per-point function, so serial,
+// threaded and MPI sweeps give the same numbers.
 
 #include <atomic>
 #include <functional>
@@ -14,6 +15,8 @@
 
 #include "ferro/scenarios/analysis/limit_cycle.hpp"
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
+#include "ferro/scenarios/analysis/studies.hpp"
+#include "ferro/scenarios/analysis/sweep_executor.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 
 namespace ferro::scenarios::analysis {
@@ -86,5 +89,56 @@ void parallel_for(std::size_t n, const std::function<void(std::size_t)>& body, i
 /// text.
 void write_sweep(const Scene& scene, const std::vector<std::string>& wheelset_names,
                  const std::vector<SweepPointResult>& results, const std::string& path);
+
+/// A sweep as asked for: speeds x reduction factors, settled runs, threads, resumption.
+struct SweepRequest {
+  double speed_min = NAN;  ///< [m/s]
+  double speed_max = NAN;  ///< [m/s]
+  int points = 10;         ///< speeds from min to max, evenly spaced (1 when min = max)
+  std::vector<double> k = {1.0};     ///< reduction factors, one set of speeds each
+  std::string coefficient = "both";  ///< which factor k sets: both | k11 | k22
+  SettleRequest settle;              ///< its k11, k22: the factors k does not set
+  int jobs = 1;                      ///< worker threads per process
+  int max_new_points = -1;           ///< at most this many new points per process (-1: all)
+  bool restart = false;              ///< forget the journal's finished points
+  std::string output;   ///< HDF5 file written once every point is finished ("": none)
+  std::string journal;  ///< folder of finished points, removed when complete ("": none)
+};
+
+/// The request's values as parameters (see parameters.hpp): every field but output and journal.
+[[nodiscard]] Parameters parameters(SweepRequest& request);
+
+/// The points of a request, speeds fastest-varying, each factor validated. Throws
+/// std::invalid_argument naming the bad value.
+[[nodiscard]] std::vector<SweepPoint> sweep_points(const Scene& scene, const SweepRequest& request,
+                                                   Spelling spelling = Spelling::key);
+
+struct SweepCallbacks {
+  /// Before the first point: points of the sweep, points already in the journal, this rank's
+  /// points to compute now.
+  std::function<void(std::size_t total, std::size_t finished, std::size_t todo)> on_start;
+  /// After each point of this rank (serialised): the result and the count done so far.
+  std::function<void(const SweepPointResult&, std::size_t done)> on_done;
+  /// Polled before each point; true stops handing out points (finished ones stay recorded).
+  std::function<bool()> should_stop;
+};
+
+struct SweepOutcome {
+  bool root = true;        ///< rank 0: holds the merged results and wrote the output
+  bool complete = false;   ///< every point finished and no stop asked (rank 0)
+  std::size_t total = 0;   ///< points of the sweep
+  std::size_t finished = 0;                 ///< finished points known to rank 0
+  std::vector<SweepPointResult> results;    ///< rank 0, complete: every point by index
+  std::vector<std::string> wheelset_names;  ///< rank 0, complete: the amplitude columns
+  double wall_seconds = 0.0;  ///< this call [s]
+  double cpu_seconds = 0.0;   ///< rank 0, complete: CPU time over all points [s]
+};
+
+/// Runs the points of `request` not yet in its journal over `executor`'s ranks and
+/// `request.jobs` threads each; rank 0 merges, and once every point is finished writes
+/// `request.output` and removes the journal. Throws std::invalid_argument for a bad request.
+[[nodiscard]] SweepOutcome run_sweep(const Scene& scene, const SweepRequest& request,
+                                     SweepExecutor& executor, const SweepCallbacks& callbacks = {},
+                                     Spelling spelling = Spelling::key);
 
 }  // namespace ferro::scenarios::analysis

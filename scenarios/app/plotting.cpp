@@ -1,4 +1,4 @@
-#include "ferro/scenarios/plotting.hpp"
+#include "plotting.hpp"
 
 #include <fmt/format.h>
 #include <spawn.h>
@@ -7,14 +7,18 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
-#include <thread>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
+
+#include "cli.hpp"
+#include "terminal.hpp"
 
 extern char** environ;
 
-namespace ferro::scenarios {
+namespace ferro::cli {
 
 std::string python_program() {
   if (const char* env = std::getenv("FERRO_PYTHON"); env != nullptr && *env != '\0') return env;
@@ -73,4 +77,53 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
   return run_program(argv, should_stop);
 }
 
-}  // namespace ferro::scenarios
+std::string sibling(const std::string& file, const std::string& suffix) {
+  const std::filesystem::path p(file);
+  return (p.parent_path() / (p.stem().string() + suffix)).string();
+}
+
+int plot_file(const std::string& mode, const std::string& h5,
+              const std::vector<std::string>& signals, std::string dir,
+              const std::string& format) {
+  if (dir.empty()) dir = sibling(h5, "_plots");
+  std::vector<std::string> args = {mode, h5, "--out", dir, "--format", format};
+  if (!signals.empty()) {
+    args.emplace_back("--signals");
+    args.insert(args.end(), signals.begin(), signals.end());
+  }
+  return run_python_tool("ferroplot.py", args, [] { return InterruptGuard::stop_now(); });
+}
+
+int plot_after_report(const std::string& mode, const std::string& h5,
+                      const std::vector<std::string>& signals, const std::string& dir, int code) {
+  std::fflush(stdout);  // the report before the script's list of files
+  const std::string folder = dir.empty() ? sibling(h5, "_plots") : dir;
+  const int rc = plot_file(mode, h5, signals, folder);
+  if (rc == kProgramStopped) return 128 + InterruptGuard::signal_received();
+  if (rc == 0) {
+    fmt::print("  plots     {}/\n", folder);
+  } else if (rc == kPlotsNeedPython) {
+    fmt::print(stderr,
+               "ferrodyn: warning: no plots: python3 with matplotlib and h5py needed; the "
+               "results in {} are complete\n",
+               h5);
+  } else {
+    fmt::print(stderr,
+               "ferrodyn: warning: plotting failed (exit status {}, see above); the results in {} "
+               "are complete\n",
+               rc, h5);
+  }
+  return code;
+}
+
+void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
+                     const std::string& title) {
+  if (run_python_tool("plot_contact.py", {mode, csv, png, title}) != 0) {
+    throw std::runtime_error(fmt::format(
+        "could not draw {} ({} with matplotlib needed; set FERRO_PYTHON to choose another); the "
+        "CSV {} is written",
+        png, python_program(), csv));
+  }
+}
+
+}  // namespace ferro::cli
