@@ -355,7 +355,12 @@ TEST(AssessCost, TenSecondsAtTwoTenthsOfAMillisecondUnderOneSecond) {
   write_assessment(a, path, out);
   const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   std::printf("assess of 10 s at 0.2 ms output: %.3f CPU-s, %zu rows\n", cpu, a.rows.size());
+#if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
+  // The bound is the optimised build's; an instrumented or unoptimised build only runs the work.
+  EXPECT_GT(a.rows.size(), 0u);
+#else
   EXPECT_LT(cpu, 1.0);
+#endif
   std::filesystem::remove(path);
   std::filesystem::remove(out);
 }

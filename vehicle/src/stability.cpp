@@ -149,6 +149,8 @@ std::vector<Mode> linear_modes(const OdeSystem& system, double t, std::span<cons
   if (solver.info() != Eigen::Success) {
     throw std::runtime_error("linear_modes: eigenvalue computation did not converge");
   }
+  // eigenvectors() assembles the complex matrix from the real Schur form at every call: once.
+  const Eigen::MatrixXcd vectors = shaped ? solver.eigenvectors() : Eigen::MatrixXcd();
   std::vector<Mode> modes;
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::complex<double> lambda = solver.eigenvalues()[i];
@@ -164,7 +166,7 @@ std::vector<Mode> linear_modes(const OdeSystem& system, double t, std::span<cons
         const auto g = shapes.group[static_cast<std::size_t>(k)];
         if (g == DofGroup::none) continue;
         const std::complex<double> component =
-            std::sqrt(shapes.weight[static_cast<std::size_t>(k)]) * solver.eigenvectors()(k, i);
+            std::sqrt(shapes.weight[static_cast<std::size_t>(k)]) * vectors(k, i);
         m.energy_vector.push_back(component);
         const double e = std::norm(component);
         m.participation[static_cast<std::size_t>(g)] += e;
