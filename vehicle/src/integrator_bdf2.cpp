@@ -105,6 +105,7 @@ class Bdf2 final : public Integrator {
           jacobian_.set(col, col, 0.0);
       }
     }
+    jacobian_.order_by_column();  // the groups set the columns out of order
     ++jacobians_;
     jacobian_age_ = 0;
     factors_.clear();  // the Newton matrices must be refactored

@@ -1,5 +1,6 @@
 #include "output_blocks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <utility>
@@ -71,6 +72,11 @@ void OutputBlockMatrix::set(std::size_t i, std::size_t j, double value) {
   } else {
     c.push_back({row, col, value});
   }
+}
+
+void OutputBlockMatrix::order_by_column() {
+  std::stable_sort(c.begin(), c.end(),
+                   [](const BlockEntry& x, const BlockEntry& y) { return x.col < y.col; });
 }
 
 void OutputBlockMatrix::scale_add_identity(double g) {

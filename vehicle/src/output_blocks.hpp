@@ -50,6 +50,9 @@ struct OutputBlockMatrix {
   /// Element (i, j) of the whole matrix, by state indices. An output column reaching a dynamic
   /// row has no place in the block form: the caller must not set one (OutputBlocks::make).
   void set(std::size_t i, std::size_t j, double value);
+  /// C's entries by increasing column (the order in which the solve subtracts them), for a
+  /// caller that set them in another order.
+  void order_by_column();
   /// M = g M + I.
   void scale_add_identity(double g);
 };
