@@ -20,15 +20,15 @@ std::shared_ptr<OutputBlocks> partition(std::vector<char> is_output) {
   return b;
 }
 
+std::size_t at(Eigen::Index i) { return static_cast<std::size_t>(i); }
+
+}  // namespace
+
 bool pivots_ok(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
   if (lu.rows() == 0) return true;
   const double min_pivot = lu.matrixLU().diagonal().cwiseAbs().minCoeff();
   return min_pivot > 0.0 && std::isfinite(min_pivot);
 }
-
-std::size_t at(Eigen::Index i) { return static_cast<std::size_t>(i); }
-
-}  // namespace
 
 std::shared_ptr<const OutputBlocks> OutputBlocks::make(
     const OdeSystem& system, const std::vector<std::vector<int>>& pattern) {

@@ -57,6 +57,9 @@ struct OutputBlockMatrix {
   void scale_add_identity(double g);
 };
 
+/// False when a pivot of `lu` is zero or not finite (singular to working precision).
+[[nodiscard]] bool pivots_ok(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu);
+
 /// LU of an OutputBlockMatrix: partial-pivoting LU of A and of each connected group of D.
 class OutputBlockLu {
  public:

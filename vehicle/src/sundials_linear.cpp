@@ -62,11 +62,6 @@ struct EigenDenseLu {
   OutputBlockLu blocks;
 };
 
-bool pivots_ok(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
-  const double min_pivot = lu.matrixLU().diagonal().cwiseAbs().minCoeff();
-  return min_pivot > 0.0 && std::isfinite(min_pivot);
-}
-
 SUNLinearSolver eigen_dense_lu(SUNContext ctx) {
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (s == nullptr) throw std::runtime_error("SUNLinSolNewEmpty failed");
