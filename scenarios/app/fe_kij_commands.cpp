@@ -18,11 +18,17 @@
 namespace ferro::cli {
 namespace {
 
-int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
-  scenarios::FeKijStudy study(config_path, restart);
+struct FeKijArgs {
+  std::string config;
+  bool restart = false, overwrite = false;
+};
+
+int run_fe_kij(const FeKijArgs& a) {
+  const std::string& config_path = a.config;
+  scenarios::FeKijStudy study(config_path, a.restart);
   // The table is claimed before anything is computed: a path that would be refused is refused
   // now, not after hours of finite elements.
-  scenarios::OutputSet outputs({overwrite, {config_path}});
+  scenarios::OutputSet outputs({a.overwrite, {config_path}});
   scenarios::OutputFile* table_file = nullptr;
   try {
     table_file = &outputs.claim(study.output(), "output");
@@ -64,20 +70,16 @@ int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
 }  // namespace
 
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
-  auto config = std::make_shared<std::string>();
-  auto restart = std::make_shared<bool>(false);
+  auto a = std::make_shared<FeKijArgs>();
   CLI::App* cmd = app.add_subcommand(
       "fe-kij",
       "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load, "
       "interfacial-layer and rail yield-stress axes, with creep and derivative curves; resumes "
       "an interrupted run");
-  cmd->add_option("config", *config, "CONFIG.yaml")->required();
-  cmd->add_flag("--restart", *restart, "discard the finished points of a previous run");
-  auto overwrite = std::make_shared<bool>(false);
-  add_overwrite_flag(cmd, *overwrite);
-  cmd->callback([&handler, config, restart, overwrite] {
-    handler = [config, restart, overwrite] { return run_fe_kij(*config, *restart, *overwrite); };
-  });
+  cmd->add_option("config", a->config, "CONFIG.yaml")->required();
+  cmd->add_flag("--restart", a->restart, "discard the finished points of a previous run");
+  add_overwrite_flag(cmd, a->overwrite);
+  on_parsed(cmd, handler, a, run_fe_kij);
 }
 
 }  // namespace ferro::cli
