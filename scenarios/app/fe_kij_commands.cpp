@@ -5,11 +5,11 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <filesystem>
 #include <memory>
 #include <string>
 
 #include "cli.hpp"
+#include "ferro/scenarios/fe_kij_output.hpp"
 #include "ferro/scenarios/fe_kij_study.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "plotting.hpp"
@@ -26,17 +26,8 @@ struct FeKijArgs {
 int run_fe_kij(const FeKijArgs& a) {
   const std::string& config_path = a.config;
   scenarios::FeKijStudy study(config_path, a.restart);
-  // The table is claimed before anything is computed: a path that would be refused is refused
-  // now, not after hours of finite elements.
   scenarios::OutputSet outputs({a.overwrite, {config_path}});
-  scenarios::OutputFile* table_file = nullptr;
-  try {
-    table_file = &outputs.claim(study.output(), "output");
-  } catch (...) {
-    std::error_code ec;
-    if (study.resumed() == 0) std::filesystem::remove(study.work_dir(), ec);  // only when empty
-    throw;
-  }
+  scenarios::OutputFile* table_file = &scenarios::claim_fe_kij_table(study, outputs);
   fmt::print("fe-kij: {} configurations ({} already done in {})\n", study.points(),
              study.resumed(), study.work_dir());
   Progress progress(static_cast<double>(study.points()), stderr);

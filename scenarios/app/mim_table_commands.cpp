@@ -9,7 +9,7 @@
 
 #include "cli.hpp"
 #include "ferro/scenarios/mim_solve.hpp"
-#include "ferro/scenarios/mim_table_files.hpp"
+#include "ferro/scenarios/mim_files.hpp"
 
 namespace ferro::cli {
 

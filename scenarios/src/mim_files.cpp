@@ -1,14 +1,30 @@
-#include "ferro/scenarios/mim_table_files.hpp"
+#include "ferro/scenarios/mim_files.hpp"
 
 #include <fmt/format.h>
 
 #include <chrono>
 #include <stdexcept>
 
-#include "ferro/scenarios/mim_solve.hpp"
 #include "ferro/scenarios/output_file.hpp"
 
 namespace ferro::scenarios {
+
+MimSolveOutcome solve_mim_files(const MimRequest& request, const std::string& fields_path,
+                                bool overwrite) {
+  const auto in = mim_input(request, Spelling::option);
+  OutputSet outputs({overwrite, {}});
+  OutputFile* fields = fields_path.empty() ? nullptr : &outputs.claim(fields_path, "-o");
+  const auto t0 = std::chrono::steady_clock::now();
+  const contact::mim::MimResult result = contact::mim::solve_hertz_rolling(in);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  MimSolveOutcome outcome{mim_report(request, result, ms), result.converged};
+  if (fields != nullptr) {
+    contact::mim::write_hdf5(result, fields->write_path());
+    fields->commit();
+  }
+  return outcome;
+}
 
 void write_mim_table_files(const MimTableRequest& a,
                            const std::function<void(const std::string&)>& say) {

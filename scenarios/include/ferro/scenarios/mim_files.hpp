@@ -1,13 +1,28 @@
 #pragma once
-// `ferrodyn contact mim-table`: the tabulated-MIM HDF5 table of the "mim_table" model built and
-// written, with an optional CSV map of its errors against direct MIM solves.
+// The MIM verbs' work: `ferrodyn contact mim` (one solve, its report, its fields as HDF5) and
+// `ferrodyn contact mim-table` (the tabulated-MIM HDF5 table of the "mim_table" model built and
+// written, with an optional CSV map of its errors against direct MIM solves).
 
 #include <functional>
 #include <string>
 
 #include "ferro/contact/tangential/mim_table.hpp"
+#include "ferro/scenarios/mim_solve.hpp"
 
 namespace ferro::scenarios {
+
+/// One solve (solve_hertz_rolling) of a request: its report (mim_report, with the solve's wall
+/// time) and whether it converged.
+struct MimSolveOutcome {
+  std::string report;
+  bool converged = false;
+};
+
+/// Solves `request` (std::invalid_argument naming the option for bad input); with a
+/// `fields_path`, claimed before the solve (an existing file only with `overwrite`), writes the
+/// pressure, traction and slip fields there.
+[[nodiscard]] MimSolveOutcome solve_mim_files(const MimRequest& request,
+                                              const std::string& fields_path, bool overwrite);
 
 struct MimTableRequest {
   std::string out;       ///< HDF5 table to write (required)
