@@ -263,8 +263,7 @@ int sustain_rank(Oscillation o) {
 
 /// Throws std::invalid_argument for options run_until_settled cannot work with.
 void check_settle_options(const vehicle::OdeSystem& system, const SettleOptions& options) {
-  if (options.observed.empty())
-    throw std::invalid_argument("settle: no observed state");
+  if (options.observed.empty()) throw std::invalid_argument("settle: no observed state");
   for (auto i : options.observed)
     if (i >= system.size())
       throw std::invalid_argument(fmt::format("settle: observed state {} out of range", i));
@@ -359,10 +358,11 @@ void set_diverged(SettleResult& r, const std::vector<std::vector<double>>& serie
     for (double v : series[j]) peak = std::max(peak, std::abs(v));
     r.amplitude[j] = peak;
   }
-  r.holder = out_of_bounds ? left_bounds
-                           : static_cast<std::size_t>(
-                                 std::max_element(r.amplitude.begin(), r.amplitude.end()) -
-                                 r.amplitude.begin());
+  r.holder =
+      out_of_bounds
+          ? left_bounds
+          : static_cast<std::size_t>(std::max_element(r.amplitude.begin(), r.amplitude.end()) -
+                                     r.amplitude.begin());
   r.period = NAN;
 }
 
@@ -390,8 +390,8 @@ bool judge_segment(SettleResult& r, SettleHistory& history, const ObservedSeries
   history.previous_segment_amplitude = history.last_segment_amplitude;
   history.last_segment_amplitude = r.amplitude;
   // The largest oscillation holds the system's.
-  r.holder = static_cast<std::size_t>(
-      std::max_element(r.amplitude.begin(), r.amplitude.end()) - r.amplitude.begin());
+  r.holder = static_cast<std::size_t>(std::max_element(r.amplitude.begin(), r.amplitude.end()) -
+                                      r.amplitude.begin());
   const SteadyAmplitude& held = steady[r.holder];
   r.period = held.period;
   if (held.amplitude < options.zero_amplitude) {
@@ -401,15 +401,14 @@ bool judge_segment(SettleResult& r, SettleHistory& history, const ObservedSeries
   }
   // Settled: converged within this segment and consistent with the previous one.
   const double before = history.previous_segment_amplitude[r.holder];
-  const bool consistent = std::isnan(before) || std::abs(held.amplitude - before) <=
-                                                    10.0 * options.amplitude.rel_tol *
-                                                        held.amplitude;
+  const bool consistent =
+      std::isnan(before) ||
+      std::abs(held.amplitude - before) <= 10.0 * options.amplitude.rel_tol * held.amplitude;
   // The other observed states must have settled too (converged, or negligible beside the
   // holder), so that the amplitude of every one is that of the cycle, not of a transient.
   bool others_settled = true;
   for (std::size_t j = 0; j < m; ++j) {
-    const double negligible =
-        std::max(options.zero_amplitude, kNegligibleShare * held.amplitude);
+    const double negligible = std::max(options.zero_amplitude, kNegligibleShare * held.amplitude);
     if (j != r.holder && !steady[j].converged && !(steady[j].amplitude < negligible))
       others_settled = false;
   }
@@ -479,13 +478,14 @@ void decide_at_time_limit(SettleResult& r, const SettleHistory& history,
     const double cycle = r.fit.cycle_amplitude();
     const double scale = cycle / r.amplitude[holder];
     for (double& a : r.amplitude) a *= scale;
-    r.message += fmt::format("; {}amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)",
-                             who, cycle, r.fit.sigma, r.fit.sigma_error);
+    r.message +=
+        fmt::format("; {}amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)", who,
+                    cycle, r.fit.sigma, r.fit.sigma_error);
   } else if (r.fit.valid() && r.fit.conclusive) {
-    r.message += fmt::format("; {}amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)", who,
-                             r.outcome == Oscillation::kGrowing ? "unbounded growth"
-                                                                : "decay to rest",
-                             r.fit.sigma, r.fit.sigma_error);
+    r.message +=
+        fmt::format("; {}amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)", who,
+                    r.outcome == Oscillation::kGrowing ? "unbounded growth" : "decay to rest",
+                    r.fit.sigma, r.fit.sigma_error);
   } else {
     r.message += fmt::format("; {}{} by trend", who,
                              r.outcome == Oscillation::kGrowing ? "growing" : "decaying");
