@@ -4,6 +4,7 @@
 
 #include <complex>
 #include <filesystem>
+#include <optional>
 
 #include <pybind11/stl/filesystem.h>
 
@@ -11,6 +12,7 @@
 #include "ferro/scenarios/analysis/report.hpp"
 #include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
+#include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/overrides.hpp"
 #include "ferro/scenarios/report.hpp"
 #include "ferro/scenarios/run.hpp"
@@ -194,12 +196,21 @@ py::dict kij_study(const SceneSource& source, const py::kwargs& kw) {
   return d;
 }
 
-py::dict sweep(const SceneSource& source, const py::object& output, const py::kwargs& kw) {
+py::dict sweep(const SceneSource& source, const py::object& output, bool overwrite,
+               const py::kwargs& kw) {
   an::SweepRequest request;
   set_parameters(an::parameters(request), kw);
+  // As `ferrodyn sweep`: the output claimed before any point is computed (never an input of
+  // the scene, an existing file only with overwrite), written under a temporary name and given
+  // its name once the sweep is complete; finished points are journaled beside the final name.
+  std::optional<scenarios::OutputSet> outputs;
+  scenarios::OutputFile* file = nullptr;
   if (!output.is_none()) {
-    request.output = py::str(output);
-    request.journal = request.output + ".points";
+    const std::string path = py::str(output);
+    outputs.emplace(scenarios::OutputRules{overwrite, scenarios::scene_inputs(source.scene)});
+    file = &outputs->claim(path, "output");
+    request.output = file->write_path();
+    request.journal = path + ".points";
   }
   SignalWatch watch;
   an::SweepCallbacks callbacks;
@@ -209,6 +220,10 @@ py::dict sweep(const SceneSource& source, const py::object& output, const py::kw
     return an::run_sweep(source.scene, request, *executor, callbacks, scenarios::Spelling::key);
   });
   watch.raise_if_stopped(py::none());
+  if (file != nullptr && r.complete) {
+    file->commit();
+    request.output = file->path();
+  }
   py::dict d;
   const auto& p = r.results;
   d["speed"] = column(p, [](const auto& x) { return x.point.speed; });
@@ -376,15 +391,18 @@ void bind_analysis(py::module_& m) {
 
   an::SweepRequest sweep_request;
   static const std::string sweep_doc =
-      "sweep(scene, output=None, **request) -> dict\n\nIndependent constant-speed runs over "
-      "speeds x reduction factors on `jobs` threads (`ferrodyn sweep`; the same numbers as\n"
-      "the program's serial, threaded and MPI sweeps). output: HDF5 file (and its resumable\n"
-      "journal <output>.points/ until complete). Keys: speed [m/s], k11, k22, holder (index of\n"
+      "sweep(scene, output=None, overwrite=False, **request) -> dict\n\nIndependent "
+      "constant-speed runs over speeds x reduction factors on `jobs` threads (`ferrodyn sweep`;\n"
+      "the same numbers as the program's serial, threaded and MPI sweeps). output: HDF5 file\n"
+      "(written under a temporary name, renamed when the sweep completes; its resumable journal\n"
+      "<output>.points/ until then). overwrite: replace an existing output file (else it is\n"
+      "refused, as `ferrodyn sweep` without --overwrite). Keys: speed [m/s], k11, k22, holder (index of\n"
       "the wheelset holding the outcome), outcome,\n"
       "amplitude [m] (points x wheelsets), period [s], time [s], cpu_time [s], wheelsets,\n"
       "complete, wall_seconds, summary. Request:\n" +
       parameter_doc(an::parameters(sweep_request));
-  m.def("sweep", &sweep, py::arg("scene"), py::arg("output") = py::none(), sweep_doc.c_str());
+  m.def("sweep", &sweep, py::arg("scene"), py::arg("output") = py::none(),
+        py::arg("overwrite") = false, sweep_doc.c_str());
 
   an::AssessmentRequest assess_request;
   static const std::string assess_doc =

@@ -86,6 +86,30 @@ def test_sweep_on_threads_matches_the_program(scenes, tmp_path):
     assert r["outcome"][-1] == "diverged"
 
 
+def test_sweep_output_follows_the_output_contract(scenes, tmp_path):
+    # As `ferrodyn sweep`: the output holds the sweep once complete (no temporary file left), an
+    # existing file is refused without overwrite and kept intact, and an input is never written.
+    s = ferrodyn.Scene(scenes / HUNTING)
+    request = dict(speed_min=30.0, speed_max=40.0, points=2, jobs=1, **SETTLE)
+    out = tmp_path / "sweep.h5"
+    r = ferrodyn.analysis.sweep(s, output=out, **request)
+    assert r["complete"]
+    assert same_bits(r["speed"], ferrodyn.read(out)["/sweep/speed"])
+    assert not list(tmp_path.glob("*.part"))
+    before = out.read_bytes()
+    with pytest.raises(ValueError, match="exists"):
+        ferrodyn.analysis.sweep(s, output=out, **request)
+    assert out.read_bytes() == before
+    r = ferrodyn.analysis.sweep(s, output=out, overwrite=True, **request)
+    assert same_bits(r["speed"], ferrodyn.read(out)["/sweep/speed"])
+    scene_copy = tmp_path / HUNTING
+    scene_copy.write_bytes((scenes / HUNTING).read_bytes())
+    with pytest.raises(ValueError, match="input"):
+        ferrodyn.analysis.sweep(ferrodyn.Scene(scene_copy), output=scene_copy, overwrite=True,
+                                **request)
+    assert scene_copy.read_bytes() == (scenes / HUNTING).read_bytes()
+
+
 def test_assessment_matches_the_program(scenes, tmp_path):
     run = tmp_path / "curve.h5"
     cli("run", scenes / "manchester_curve_1200.yaml", "--t-end", "1", "-o", run, "--no-plots",
@@ -114,6 +138,9 @@ def test_assessment_matches_the_program(scenes, tmp_path):
         ferrodyn.analysis.assess(str(run), category="tram")
     with pytest.raises(ValueError, match="twist_test and no_twist_test"):
         ferrodyn.analysis.assess(str(run), twist_test=True, no_twist_test=True)
+    for angle in (0.0, -10.0, 90.0):  # Nadal's limit needs a flange angle in (0, 90) deg
+        with pytest.raises(ValueError, match="flange_angle_deg: allowed"):
+            ferrodyn.analysis.assess(str(run), flange_angle_deg=angle)
 
 
 def test_bad_request_names_the_keyword(scenes):

@@ -178,8 +178,8 @@ AssessmentOptions assessment_options(const AssessmentRequest& a, Spelling sp) {
       throw std::invalid_argument(fmt::format("{}: allowed [0, 2), got {}", spelled("mu", sp), a.mu));
     o.mu = a.mu;
   }
-  if (a.flange_angle_deg > 0.0) {
-    if (!(a.flange_angle_deg < 90.0))
+  if (!std::isnan(a.flange_angle_deg)) {
+    if (!(a.flange_angle_deg > 0.0 && a.flange_angle_deg < 90.0))
       throw std::invalid_argument(fmt::format("{}: allowed (0, 90), got {}",
                                               spelled("flange_angle_deg", sp), a.flange_angle_deg));
     o.flange_angle = a.flange_angle_deg * M_PI / 180.0;

@@ -106,7 +106,7 @@ struct KijStudy {
 /// The assessment's options as a user gives them (unset: the run's or the standard's value).
 struct AssessmentRequest {
   double mu = NAN;                 ///< friction coefficient in Nadal's limit [-], [0, 2); NaN: the run's
-  double flange_angle_deg = -1.0;  ///< [deg] in (0, 90); <= 0: each wheel's largest contact angle
+  double flange_angle_deg = NAN;  ///< [deg] in (0, 90); NaN: each wheel's largest contact angle
   double section_length = 0.0;     ///< > 0: statistics over windows of this length [m] instead
                                    ///< of the scene's sections
   double f0 = NAN;                 ///< instability frequency [Hz]; NaN: from the run's spectrum
