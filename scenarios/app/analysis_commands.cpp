@@ -14,9 +14,11 @@
 #include <optional>
 
 #include "cli.hpp"
+#include "ferro/scenarios/claimed_output.hpp"
 #include "ferro/scenarios/analysis/critical_speed.hpp"
 #include "ferro/scenarios/analysis/assessment.hpp"
 #include "ferro/scenarios/analysis/output.hpp"
+#include "ferro/scenarios/analysis/progress_text.hpp"
 #include "ferro/scenarios/analysis/report.hpp"
 #include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
@@ -27,7 +29,6 @@
 #include "plotting.hpp"
 #include "terminal.hpp"
 
-
 namespace ferro::cli {
 namespace {
 
@@ -37,31 +38,15 @@ namespace fc = ferro::contact;
 using scenarios::Scene;
 constexpr scenarios::Spelling kOption = scenarios::Spelling::option;
 
-// The output of an analysis, claimed before it computes (refused paths are refused at once):
-// written as <file>.part, given its name by commit(); the scene's (or run file's) inputs are
-// never written, an existing file only with --overwrite.
-struct AnalysisOutput {
-  scenarios::OutputSet set;
-  scenarios::OutputFile* file = nullptr;
-  AnalysisOutput(const std::string& path, const char* option, bool overwrite,
-                 std::vector<std::string> inputs, bool no_plots)
-      : set({overwrite, std::move(inputs)}) {
-    file = &set.claim(path, option);
-    if (!no_plots) check_plot_folder(sibling(file->path(), "_plots"), "plots");
-  }
-  [[nodiscard]] const std::string& path() const { return file->path(); }
-  [[nodiscard]] const std::string& write_path() const { return file->write_path(); }
-};
-
 // The input (scene or run file), output, plot and overwrite switches of an analysis verb, and
 // its request.
 struct VerbArgs {
   std::string input, output;
   bool no_plots = false, overwrite = false;
   /// Claims -o, else <stem of `beside`><suffix>, against `inputs`.
-  [[nodiscard]] AnalysisOutput claim(const std::string& beside, const char* suffix,
+  [[nodiscard]] scenarios::ClaimedOutput claim(const std::string& beside, const char* suffix,
                                      std::vector<std::string> inputs) const {
-    return AnalysisOutput(output.empty() ? sibling(beside, suffix) : output,
+    return scenarios::ClaimedOutput(output.empty() ? scenarios::sibling(beside, suffix) : output,
                           output.empty() ? "output" : "-o", overwrite, std::move(inputs),
                           no_plots);
   }
@@ -85,7 +70,7 @@ int do_assess(const AssessArgs& a) {
   if (!fs::exists(a.input))
     throw std::invalid_argument(fmt::format("assess: no such file '{}'", a.input));
   const an::AssessmentOptions o = an::assessment_options(a.request, kOption);
-  AnalysisOutput out = a.claim(a.input, "_assessment.h5", {a.input});
+  auto out = a.claim(a.input, "_assessment.h5", {a.input});
   const auto r = an::assess_run(a.input, o);
   fmt::print("{}", an::assessment_report(a.input, r, a.all_rows));
   an::write_assessment(r, a.input, out.write_path());
@@ -97,7 +82,7 @@ using RampArgs = Analysis<an::RampRequest>;
 
 int do_ramp(const RampArgs& a) {
   const Scene scene = scenarios::load_scene(a.input);
-  AnalysisOutput out = a.claim(scene.output.file, "_ramp.h5", scenarios::scene_inputs(scene));
+  auto out = a.claim(scene.output.file, "_ramp.h5", scenarios::scene_inputs(scene));
   const auto study = an::run_ramp(scene, a.request, kOption);
   fmt::print("{}", an::ramp_report(study, a.request));
   an::write_ramp(study.scene, study.result, study.options, study.observed, out.write_path());
@@ -117,17 +102,7 @@ using BranchArgs = Analysis<an::BranchRequest>;
 std::function<void(const an::BranchPoint&)> branch_progress(
     const fc::ReductionFactors& k, const std::vector<std::string>& names) {
   return [k, &names](const an::BranchPoint& p) {
-    const auto& fit = p.run.fit;
-    const std::string growth =
-        fit.valid() ? fmt::format(" (sigma = {:.3g} +- {:.2g} /s, beta = {:.3g} /(s mm^2))",
-                                  fit.sigma, fit.sigma_error, fit.beta * 1e-6)
-                    : std::string();
-    fmt::print(stderr,
-               "progress: K = ({}, {}) V = {:.4f} m/s{}: {} {:.4f} mm ({}) after {:.1f} s{}\n",
-               k.k11, k.k22, p.speed, p.bisection ? " (bisection)" : "",
-               an::to_string(p.run.outcome), p.run.amplitude[p.run.holder] * 1e3,
-               p.run.holder < names.size() ? names[p.run.holder] : std::string("?"), p.run.time,
-               growth);
+    fmt::print(stderr, "{}", an::branch_progress_line(k, names, p));
   };
 }
 
@@ -138,7 +113,7 @@ int do_branch(const BranchArgs& a) {
              scene.path, settle.k11, settle.k22);
   std::vector<std::string> names;
   const auto k = fc::ReductionFactors::following_k22(settle.k11, settle.k22);
-  AnalysisOutput out =
+  auto out =
       a.claim(scene.output.file, "_bifurcation.h5", scenarios::scene_inputs(scene));
   const auto row =
       an::run_bifurcation(scene, a.request, k, &names, branch_progress(k, names), kOption);
@@ -167,11 +142,11 @@ int do_eigen(const EigenArgs& a) {
   Scene scene = an::with_reduction(scenarios::load_scene(a.input),
                                    fc::ReductionFactors::following_k22(a.k11, a.k22));
   scenarios::apply_overrides(scene, a.range, kOption);
-  AnalysisOutput out = a.claim(scene.output.file, "_eig.h5", scenarios::scene_inputs(scene));
+  auto out = a.claim(scene.output.file, "_eig.h5", scenarios::scene_inputs(scene));
   const auto r = scenarios::run_eigen(scene);
   fmt::print("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
              scene.path, a.k11, a.k22);
-  print_eigen_report(scene, r, 16);
+  fmt::print("{}", scenarios::eigen_modes_report(scene, r, 16));
   scenarios::write_eigen_report(scene, r, out.write_path());
   out.file->commit();
   return a.finish(out.path());
@@ -181,12 +156,11 @@ using KijArgs = Analysis<an::KijStudyRequest>;
 
 int do_kij(const KijArgs& a) {
   const Scene scene = scenarios::load_scene(a.input);
-  AnalysisOutput out = a.claim(scene.output.file, "_kij.h5", scenarios::scene_inputs(scene));
+  auto out = a.claim(scene.output.file, "_kij.h5", scenarios::scene_inputs(scene));
   const auto study = an::run_kij_study(
       scene, a.request, [] { return InterruptGuard::stop_now(); },
       [](const an::KijRow& row, std::size_t done, std::size_t total) {
-        fmt::print(stderr, "progress: K11 = {}, K22 = {} done ({}/{})\n", row.k.k11, row.k.k22,
-                   done, total);
+        fmt::print(stderr, "{}", an::kij_progress_line(row, done, total));
       },
       kOption);
   if (InterruptGuard::signal_received() != 0) return 128 + InterruptGuard::signal_received();
@@ -210,8 +184,8 @@ int do_sweep_ranked(const SweepArgs& args, an::SweepExecutor& ex) {
   an::SweepRequest a = args.request;
   // Rank 0 writes the output: claimed before any point is computed, written as <file>.part.
   const std::string final_output =
-      args.output.empty() ? sibling(scene.output.file, "_sweep.h5") : args.output;
-  std::optional<AnalysisOutput> output;
+      args.output.empty() ? scenarios::sibling(scene.output.file, "_sweep.h5") : args.output;
+  std::optional<scenarios::ClaimedOutput> output;
   if (ex.rank() == 0) {
     output.emplace(final_output, args.output.empty() ? "output" : "-o", args.overwrite,
                    scenarios::scene_inputs(scene), args.no_plots);
@@ -223,31 +197,22 @@ int do_sweep_ranked(const SweepArgs& args, an::SweepExecutor& ex) {
   std::size_t todo = 0;
   cb.on_start = [&](std::size_t total, std::size_t finished, std::size_t mine) {
     todo = mine;
-    if (ex.rank() != 0) return;
-    fmt::print(stderr, "ferrodyn sweep: {} points ({} already finished in {}), {} rank(s) x {} "
-               "thread(s)\n",
-               total, finished, a.journal, ex.size(), a.jobs);
+    if (ex.rank() == 0)
+      fmt::print(stderr, "{}", an::sweep_start_line(total, finished, a.journal, ex.size(), a.jobs));
   };
   const auto wall0 = std::chrono::steady_clock::now();
   if (!args.quiet) {
     cb.on_done = [&](const an::SweepPointResult& r, std::size_t done) {
       const double el =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-      fmt::print(stderr, "[rank {} {:>4}/{:<4} {:6.1f} s] V = {:8.4f} m/s K = ({:.3f}, {:.3f}): {} "
-                 "{:.4f} mm (wheelset {})\n",
-                 ex.rank(), done, todo, el, r.point.speed, r.point.k.k11, r.point.k.k22,
-                 an::to_string(r.outcome),
-                 r.amplitude.empty() ? NAN : r.amplitude[r.holder] * 1e3, r.holder + 1);
+      fmt::print(stderr, "{}", an::sweep_point_line(ex.rank(), done, todo, el, r));
     };
   }
   const auto r = an::run_sweep(scene, a, ex, cb, kOption);
   const int sig = InterruptGuard::signal_received();
   if (!r.root) return sig != 0 ? 128 + sig : kExitOk;
   if (!r.complete) {
-    fmt::print(stderr,
-               "ferrodyn sweep: stopped with {} of {} points finished (recorded in {}); run the "
-               "same command again to resume\n",
-               r.finished, r.total, a.journal);
+    fmt::print(stderr, "{}", an::sweep_stopped_line(r, a.journal));
     return sig != 0 ? 128 + sig : kExitRunFailure;
   }
   output->file->commit();
@@ -281,11 +246,6 @@ void add_common(CLI::App* c, Args& a, const char* input, const char* input_help,
 }
 
 }  // namespace
-
-void print_eigen_report(const Scene& scene, const scenarios::EigenReport& r,
-                        std::size_t max_rows) {
-  fmt::print("{}", scenarios::eigen_modes_report(scene, r, max_rows));
-}
 
 void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
   const char* scene = "Scene YAML file";

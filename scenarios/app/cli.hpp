@@ -20,20 +20,11 @@ class Validator;
 
 namespace ferro::scenarios {
 struct Parameter;
-struct Scene;
-struct EigenReport;
 }
 
 namespace ferro::cli {
 
 using VerbHandler = std::function<int()>;
-
-/// The eigenvalue sweep as `eig` and `critical-speed eigen` print it: per speed (at most
-/// `max_rows`, evenly strided) the least damped hunting mode (damping ratio, frequency, shape)
-/// and the least damped mode of each other class apart; the Hopf speed (a hunting mode
-/// crossing zero); the least damped modes at the scene's own speed.
-void print_eigen_report(const scenarios::Scene& scene, const scenarios::EigenReport& report,
-                        std::size_t max_rows);
 
 /// Exit codes of the ferrodyn program.
 inline constexpr int kExitOk = 0;
@@ -63,9 +54,6 @@ void strict_values(CLI::App& app);
 /// A whole number in lo..hi.
 [[nodiscard]] CLI::Validator count_in(long lo, long hi);
 
-/// Throws std::invalid_argument ("<what>: cannot write the plots in ...") unless files can be
-/// created in the folder `dir` (made for the test and removed again when missing).
-void check_plot_folder(const std::string& dir, const std::string& what);
 /// Most worker threads a verb takes (-j).
 inline constexpr long kMaxJobs = 1024;
 /// Exit status of the plotting scripts when python3-matplotlib or python3-h5py is missing.

@@ -1,46 +1,13 @@
 // Flags shared by every verb and the strict reading of every option value (see cli.hpp).
-#include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <limits>
-#include <stdexcept>
 
 #include "cli.hpp"
+#include "ferro/scenarios/number_text.hpp"
 #include "ferro/scenarios/overrides.hpp"
 #include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::cli {
-namespace {
-
-// The number in `text`, or NaN when it is not one whole finite number.
-double strict_number(const std::string& text) {
-  if (text.empty()) return std::nan("");
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
-    return std::nan("");
-  return v;
-}
-
-std::string bound_text(double lo, double hi, bool lo_open, bool hi_open, const std::string& unit) {
-  const std::string u = unit.empty() ? "" : " " + unit;
-  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
-  if (has_lo && has_hi)
-    return fmt::format("in {}{:g}, {:g}{}{}", lo_open ? "(" : "[", lo, hi, hi_open ? ")" : "]", u);
-  if (has_lo) return fmt::format("{} {:g}{}", lo_open ? ">" : ">=", lo, u);
-  if (has_hi) return fmt::format("{} {:g}{}", hi_open ? "<" : "<=", hi, u);
-  return "a finite number";
-}
-
-}  // namespace
 
 CLI::Option* add_output_option(CLI::App* cmd, std::string& target, const std::string& help,
                                const std::vector<std::string>& old_names) {
@@ -60,58 +27,13 @@ void add_overwrite_flag(CLI::App* cmd, bool& target) {
 
 CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open,
                          const std::string& unit) {
-  const std::string allowed = bound_text(lo, hi, lo_open, hi_open, unit);
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        const double v = strict_number(text);
-        const bool ok = !std::isnan(v) && (lo_open ? v > lo : v >= lo) &&
-                        (hi_open ? v < hi : v <= hi);
-        return ok ? std::string() : fmt::format("must be {}, got '{}'", allowed, text);
-      },
-      allowed);
+  const scenarios::NumberRange range{lo, hi, lo_open, hi_open, unit};
+  return CLI::Validator([range](std::string& text) { return range.problem(text); }, range.text());
 }
 
 CLI::Validator count_in(long lo, long hi) {
-  const std::string allowed = hi == std::numeric_limits<long>::max()
-                                  ? fmt::format(">= {}", lo)
-                                  : fmt::format("in {}..{}", lo, hi);
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        char* end = nullptr;
-        errno = 0;
-        const long v = std::strtol(text.c_str(), &end, 10);
-        const bool ok = !text.empty() && end == text.c_str() + text.size() && errno == 0 &&
-                        v >= lo && v <= hi;
-        return ok ? std::string() : fmt::format("must be a whole number {}, got '{}'", allowed, text);
-      },
-      allowed);
-}
-
-void check_plot_folder(const std::string& dir, const std::string& what) {
-  namespace fs = std::filesystem;
-  const fs::path folder = fs::absolute(dir);
-  // Folders missing on the way are made for the probe and removed again.
-  std::vector<fs::path> missing;
-  std::error_code ec;
-  fs::path existing = folder;
-  while (!fs::exists(existing, ec) && existing != existing.parent_path()) {
-    missing.push_back(existing);
-    existing = existing.parent_path();
-  }
-  const auto fail = [&](const std::string& why) {
-    for (const auto& m : missing) rmdir(m.c_str());
-    throw std::invalid_argument(fmt::format("{}: cannot write the plots in '{}': {}", what, dir, why));
-  };
-  if (!fs::is_directory(existing, ec)) fail(fmt::format("'{}' is not a folder", existing.string()));
-  for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-    if (mkdir(it->c_str(), 0777) != 0) fail(std::strerror(errno));
-  }
-  std::string probe = (folder / ".ferrodyn-probe-XXXXXX").string();
-  const int fd = mkstemp(probe.data());
-  if (fd < 0) fail(std::strerror(errno));
-  close(fd);
-  unlink(probe.c_str());
-  for (const auto& m : missing) rmdir(m.c_str());
+  const scenarios::CountRange range{lo, hi};
+  return CLI::Validator([range](std::string& text) { return range.problem(text); }, range.text());
 }
 
 void strict_values(CLI::App& app) {

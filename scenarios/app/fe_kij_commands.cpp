@@ -5,11 +5,11 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <filesystem>
 #include <memory>
 #include <string>
 
 #include "cli.hpp"
+#include "ferro/scenarios/fe_kij_output.hpp"
 #include "ferro/scenarios/fe_kij_study.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "plotting.hpp"
@@ -18,19 +18,16 @@
 namespace ferro::cli {
 namespace {
 
-int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
-  scenarios::FeKijStudy study(config_path, restart);
-  // The table is claimed before anything is computed: a path that would be refused is refused
-  // now, not after hours of finite elements.
-  scenarios::OutputSet outputs({overwrite, {config_path}});
-  scenarios::OutputFile* table_file = nullptr;
-  try {
-    table_file = &outputs.claim(study.output(), "output");
-  } catch (...) {
-    std::error_code ec;
-    if (study.resumed() == 0) std::filesystem::remove(study.work_dir(), ec);  // only when empty
-    throw;
-  }
+struct FeKijArgs {
+  std::string config;
+  bool restart = false, overwrite = false;
+};
+
+int run_fe_kij(const FeKijArgs& a) {
+  const std::string& config_path = a.config;
+  scenarios::FeKijStudy study(config_path, a.restart);
+  scenarios::OutputSet outputs({a.overwrite, {config_path}});
+  scenarios::OutputFile* table_file = &scenarios::claim_fe_kij_table(study, outputs);
   fmt::print("fe-kij: {} configurations ({} already done in {})\n", study.points(),
              study.resumed(), study.work_dir());
   Progress progress(static_cast<double>(study.points()), stderr);
@@ -64,20 +61,16 @@ int run_fe_kij(const std::string& config_path, bool restart, bool overwrite) {
 }  // namespace
 
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
-  auto config = std::make_shared<std::string>();
-  auto restart = std::make_shared<bool>(false);
+  auto a = std::make_shared<FeKijArgs>();
   CLI::App* cmd = app.add_subcommand(
       "fe-kij",
       "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load, "
       "interfacial-layer and rail yield-stress axes, with creep and derivative curves; resumes "
       "an interrupted run");
-  cmd->add_option("config", *config, "CONFIG.yaml")->required();
-  cmd->add_flag("--restart", *restart, "discard the finished points of a previous run");
-  auto overwrite = std::make_shared<bool>(false);
-  add_overwrite_flag(cmd, *overwrite);
-  cmd->callback([&handler, config, restart, overwrite] {
-    handler = [config, restart, overwrite] { return run_fe_kij(*config, *restart, *overwrite); };
-  });
+  cmd->add_option("config", a->config, "CONFIG.yaml")->required();
+  cmd->add_flag("--restart", a->restart, "discard the finished points of a previous run");
+  add_overwrite_flag(cmd, a->overwrite);
+  on_parsed(cmd, handler, a, run_fe_kij);
 }
 
 }  // namespace ferro::cli

@@ -2,15 +2,13 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
 
 #include "cli.hpp"
-#include "ferro/scenarios/mim_solve.hpp"
-#include "ferro/scenarios/output_file.hpp"
+#include "ferro/scenarios/mim_files.hpp"
 
 namespace ferro::cli {
 namespace {
@@ -29,20 +27,10 @@ int run_mim(MimArgs args) {
   if (std::isnan(r.a) && !std::isnan(args.a_mm)) r.a = args.a_mm * 1.0e-3;
   if (std::isnan(r.b) && !std::isnan(args.b_mm)) r.b = args.b_mm * 1.0e-3;
   if (!std::isnan(args.young_gpa)) r.young = args.young_gpa * 1.0e9;
-  const auto in = scenarios::mim_input(r, scenarios::Spelling::option);
-  scenarios::OutputSet outputs({args.overwrite, {}});
-  scenarios::OutputFile* fields = args.out.empty() ? nullptr : &outputs.claim(args.out, "-o");
-  const auto t0 = std::chrono::steady_clock::now();
-  const contact::mim::MimResult result = contact::mim::solve_hertz_rolling(in);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  fmt::print("{}", scenarios::mim_report(r, result, ms));
-  if (fields != nullptr) {
-    contact::mim::write_hdf5(result, fields->write_path());
-    fields->commit();
-    fmt::print("fields written to {}\n", args.out);
-  }
-  return result.converged ? kExitOk : kExitRunFailure;
+  const auto outcome = scenarios::solve_mim_files(r, args.out, args.overwrite);
+  fmt::print("{}", outcome.report);
+  if (!args.out.empty()) fmt::print("fields written to {}\n", args.out);
+  return outcome.converged ? kExitOk : kExitRunFailure;
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "cli.hpp"
+#include "ferro/scenarios/claimed_output.hpp"
 #include "terminal.hpp"
 
 extern char** environ;
@@ -77,15 +78,10 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
   return run_program(argv, should_stop);
 }
 
-std::string sibling(const std::string& file, const std::string& suffix) {
-  const std::filesystem::path p(file);
-  return (p.parent_path() / (p.stem().string() + suffix)).string();
-}
-
 int plot_file(const std::string& mode, const std::string& h5,
               const std::vector<std::string>& signals, std::string dir,
               const std::string& format) {
-  if (dir.empty()) dir = sibling(h5, "_plots");
+  if (dir.empty()) dir = scenarios::sibling(h5, "_plots");
   std::vector<std::string> args = {mode, h5, "--out", dir, "--format", format};
   if (!signals.empty()) {
     args.emplace_back("--signals");
@@ -97,7 +93,7 @@ int plot_file(const std::string& mode, const std::string& h5,
 int plot_after_report(const std::string& mode, const std::string& h5,
                       const std::vector<std::string>& signals, const std::string& dir, int code) {
   std::fflush(stdout);  // the report before the script's list of files
-  const std::string folder = dir.empty() ? sibling(h5, "_plots") : dir;
+  const std::string folder = dir.empty() ? scenarios::sibling(h5, "_plots") : dir;
   const int rc = plot_file(mode, h5, signals, folder);
   if (rc == kProgramStopped) return 128 + InterruptGuard::signal_received();
   if (rc == 0) {

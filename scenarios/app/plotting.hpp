@@ -31,8 +31,6 @@ int run_program(const std::vector<std::string>& argv,
 int run_python_tool(const std::string& script, const std::vector<std::string>& args,
                     const std::function<bool()>& should_stop = {});
 
-/// `<stem><suffix>` in the folder of `file` (e.g. out/run.h5, "_plots" -> out/run_plots).
-[[nodiscard]] std::string sibling(const std::string& file, const std::string& suffix);
 
 /// Draws the pictures of a ferrodyn HDF5 file with ferroplot.py (mode timeseries, eigen or
 /// auto; `signals` empty: the script's choice) into `dir` (empty: <stem>_plots beside the file);

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "cli.hpp"
+#include "ferro/scenarios/claimed_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 #include "ferro/scenarios/output_file.hpp"
 #include "ferro/scenarios/overrides.hpp"
@@ -53,8 +54,8 @@ int do_run(const RunArgs& a) {
   opt.pace = a.pace;
   if (!a.csv.empty()) opt.csv = a.csv;
   const std::string output = a.output.empty() ? scene.output.file : a.output;
-  const std::string plot_dir = a.plot_dir.empty() ? sibling(output, "_plots") : a.plot_dir;
-  if (!a.no_plots) check_plot_folder(plot_dir, a.plot_dir.empty() ? "plots" : "--plot-dir");
+  const std::string plot_dir = a.plot_dir.empty() ? scenarios::sibling(output, "_plots") : a.plot_dir;
+  if (!a.no_plots) scenarios::check_plot_folder(plot_dir, a.plot_dir.empty() ? "plots" : "--plot-dir");
   for (const auto& w : scenarios::scene_warnings(scene))
     fmt::print(stderr, "ferrodyn: warning: {}\n", w);
   Progress progress(scene.simulation.t_end, stderr);
@@ -90,14 +91,14 @@ int do_eig(const EigArgs& a) {
   Scene scene = scenarios::load_scene(a.scene);
   scenarios::apply_overrides(scene, a.overrides, scenarios::Spelling::option);
   // The output is claimed before the sweep: a path that would be refused is refused now.
-  const std::string out = a.output.empty() ? sibling(scene.output.file, "_eig.h5") : a.output;
-  scenarios::OutputSet outputs({a.overwrite, scenarios::scene_inputs(scene)});
-  scenarios::OutputFile& file = outputs.claim(out, a.output.empty() ? "output" : "-o");
-  if (!a.no_plots) check_plot_folder(sibling(out, "_plots"), "plots");
+  const std::string out =
+      a.output.empty() ? scenarios::sibling(scene.output.file, "_eig.h5") : a.output;
+  scenarios::ClaimedOutput file(out, a.output.empty() ? "output" : "-o", a.overwrite,
+                                scenarios::scene_inputs(scene), a.no_plots);
   const auto r = scenarios::run_eigen(scene);
   fmt::print("{}", scenarios::eigen_sweep_report(scene, r));
   scenarios::write_eigen_report(scene, r, file.write_path());
-  file.commit();
+  file.file->commit();
   fmt::print("  output    {}\n", out);
   if (!a.no_plots) return plot_after_report("eigen", out);
   return kExitOk;
@@ -110,8 +111,8 @@ int do_plot(const PlotArgs& a) {
     throw std::invalid_argument(
         fmt::format("--format: unknown '{}'; allowed: png, svg, png,svg", a.format));
   }
-  const std::string dir = a.out_dir.empty() ? sibling(a.file, "_plots") : a.out_dir;
-  check_plot_folder(dir, a.out_dir.empty() ? "plots" : "-o");
+  const std::string dir = a.out_dir.empty() ? scenarios::sibling(a.file, "_plots") : a.out_dir;
+  scenarios::check_plot_folder(dir, a.out_dir.empty() ? "plots" : "-o");
   const int rc = plot_file("auto", a.file, a.signals, dir, a.format);
   if (rc == kProgramStopped) return 128 + InterruptGuard::signal_received();
   if (rc == 2) return kExitBadInput;

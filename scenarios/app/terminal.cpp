@@ -8,9 +8,6 @@
 #include <atomic>
 #include <thread>
 
-#include <algorithm>
-#include <filesystem>
-
 #include "ferro/scenarios/output_file.hpp"
 
 namespace ferro::cli {
@@ -55,49 +52,21 @@ void watchdog() {
   end_now(sig);
 }
 
-std::string format_seconds(double s) {
-  if (s < 60.0) return fmt::format("{:.1f} s", s);
-  return fmt::format("{}m{:02d}s", static_cast<int>(s / 60.0), static_cast<int>(s) % 60);
-}
 }  // namespace
 
 Progress::Progress(double t_end, std::FILE* out)
-    : t_end_(t_end),
-      out_(out),
-      tty_(isatty(fileno(out)) != 0),
-      start_(std::chrono::steady_clock::now()),
-      last_draw_(start_) {}
+    : out_(out), meter_(t_end, isatty(fileno(out)) != 0), start_(std::chrono::steady_clock::now()) {}
 
 void Progress::update(double t) {
-  const auto now = std::chrono::steady_clock::now();
-  const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double frac = std::clamp(t / t_end_, 0.0, 1.0);
-  const double eta = frac > 0.0 ? elapsed * (1.0 - frac) / frac : 0.0;
-  if (tty_) {
-    if (elapsed < 1.0 || std::chrono::duration<double>(now - last_draw_).count() < 0.1) return;
-    last_draw_ = now;
-    constexpr int kWidth = 30;
-    const int filled = static_cast<int>(frac * kWidth);
-    fmt::print(out_, "\r[{}{}] {:5.1f}%  t = {:.3g} / {:.3g} s  elapsed {}  ETA {}   ",
-               std::string(static_cast<std::size_t>(filled), '#'),
-               std::string(static_cast<std::size_t>(kWidth - filled), '.'), 100.0 * frac, t, t_end_,
-               format_seconds(elapsed), format_seconds(eta));
-    std::fflush(out_);
-    drawn_ = true;
-    return;
-  }
-  const int decile = static_cast<int>(frac * 10.0 + 1e-9);
-  if (elapsed >= 1.0 && decile > last_decile_ && decile < 10) {
-    last_decile_ = decile;
-    fmt::print(out_, "progress: {}% (t = {:.6g} s of {:.6g} s, elapsed {}, ETA {})\n", decile * 10,
-               t, t_end_, format_seconds(elapsed), format_seconds(eta));
-    std::fflush(out_);
-  }
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const std::string text = meter_.update(t, elapsed);
+  if (text.empty()) return;
+  fmt::print(out_, "{}", text);
+  std::fflush(out_);
 }
 
-void Progress::finish() {
-  if (tty_ && drawn_) fmt::print(out_, "\n");
-}
+void Progress::finish() { fmt::print(out_, "{}", meter_.finish()); }
 
 InterruptGuard::InterruptGuard() {
   g_signal = 0;

@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "ferro/scenarios/progress_meter.hpp"
+
 namespace ferro::cli {
 
-/// Progress of a run against simulated time. On a TTY: a bar with ETA redrawn in place, shown
-/// once the run has lasted a second. Otherwise: a plain log line at each 10 % step.
+/// Progress of a run against simulated time, printed on `out` (scenarios::ProgressMeter: a bar
+/// redrawn in place on a TTY, else a plain line at each 10 % step).
 class Progress {
  public:
   Progress(double t_end, std::FILE* out);
@@ -17,12 +19,9 @@ class Progress {
   void finish();
 
  private:
-  double t_end_;
   std::FILE* out_;
-  bool tty_;
-  std::chrono::steady_clock::time_point start_, last_draw_;
-  int last_decile_ = 0;
-  bool drawn_ = false;
+  scenarios::ProgressMeter meter_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 /// SIGINT and SIGTERM for the whole program, installed first thing in run_main. A stop request is

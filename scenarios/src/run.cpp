@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <exception>
 #include <filesystem>
 #include <optional>
 #include <thread>
@@ -245,6 +246,190 @@ void check_scene(const Scene& scene, const RunOptions& options) {
   if (options.write_output) outputs.check(plan.output_file, output_option(options));
 }
 
+namespace {
+
+/// Writes the opening of a run's HDF5 file: the scene's metadata and warnings, status
+/// "running", no samples.
+void write_run_header(H5File& file, const Scene& scene) {
+  write_metadata(file, scene, "time_simulation");
+  const auto warnings = scene_warnings(scene);
+  file.set_attribute("/", "warning_count", static_cast<long>(warnings.size()));
+  file.set_attribute("/", "warnings", fmt::format("{}", fmt::join(warnings, "\n")));
+  set_status(file, "running", "", 0.0);
+  file.set_attribute("/", "samples", 0L);
+}
+
+/// Opens the CSV of the asked signals and writes its header line.
+void open_csv(std::optional<io::TextWriter>& csv, const OutputFile& csv_out, const RunPlan& plan,
+              const std::vector<vehicle::SignalInfo>& channels) {
+  // The CSV leaves the HDF5 writer's reserve free, so the HDF5 file can always be closed.
+  csv.emplace(csv_out.write_path(), TimeSeriesWriter::kCloseReserve);
+  csv->write("time");
+  for (auto i : plan.csv_index) csv->print(",{}", channels[i].name);
+  csv->write("\n");
+}
+
+/// What a run does with each output sample: the derived signals beside the state, the HDF5
+/// writer, the CSV, the caller's callback, the summary's peaks and final values, pacing to
+/// wall-clock time and stop requests.
+struct SampleSink {
+  const vehicle::OdeSystem& system;
+  const RunPlan& plan;
+  const RunOptions& options;
+  RunSummary& summary;
+  TimeSeriesWriter* writer;  // null without an output file
+  io::TextWriter* csv;       // null without a CSV
+  std::chrono::steady_clock::time_point wall_start;
+  double& last_sample_time;  // without a file, what the caller has received
+  std::vector<double> row = std::vector<double>(summary.channels.size());
+  bool skip_first = false;  // each block after the first starts at the previous block's end
+  bool stopped_by_request = false;
+
+  [[nodiscard]] bool stop_requested() const { return options.should_stop && options.should_stop(); }
+
+  /// The observer: false stops the integration (a stop request).
+  bool operator()(double t, std::span<const double> x) {
+    if (skip_first) {
+      skip_first = false;
+      return true;
+    }
+    const std::size_t n_channels = row.size();
+    std::copy(x.begin(), x.end(), row.begin());
+    system.signals(t, x, std::span<double>(row).subspan(plan.state_count));
+    if (writer) writer->append(t, row);
+    ++summary.samples;
+    last_sample_time = t;
+    if (options.on_sample) options.on_sample(t, row);
+    for (std::size_t i = 0; i < n_channels; ++i)
+      summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
+    summary.final_values = row;
+    if (csv) {
+      csv->print("{:.10g}", t);
+      for (auto i : plan.csv_index) csv->print(",{:.10g}", row[i]);
+      csv->write("\n");
+    }
+    if (options.progress) options.progress(t);
+    if (options.pace > 0.0) {
+      pace_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(t / options.pace)),
+                 options.should_stop);
+    }
+    if (stop_requested()) {
+      stopped_by_request = true;
+      return false;
+    }
+    return true;
+  }
+};
+
+/// Between two outputs the integrator polls this before every right-hand side and after every
+/// step: a stop request ends the run at once, and samples waiting in the buffer reach the file
+/// at least every flush_seconds however long the solver takes to the next output. A write
+/// failure here cannot cross the integrator: it stops the run and is kept in `write_failure`.
+void watch_stops_and_flushes(vehicle::Integrator& integrator, SampleSink& sink,
+                             std::exception_ptr& write_failure) {
+  integrator.set_stop_request([&sink, &write_failure] {
+    try {
+      if (sink.writer) sink.writer->flush_if_due();
+    } catch (...) {
+      write_failure = std::current_exception();
+      return true;
+    }
+    if (sink.stop_requested()) {
+      sink.stopped_by_request = true;
+      return true;
+    }
+    return false;
+  });
+}
+
+/// Integrates from x0 through the run's n_times output times. The output times go to the
+/// integrator block by block, so memory does not grow with the number of samples; the
+/// integrator continues each block from the state the previous one reached. Ends at the first
+/// block that does not complete; rethrows a write failure caught between two outputs.
+vehicle::IntegrationResult integrate_in_blocks(vehicle::Integrator& integrator,
+                                               const vehicle::OdeSystem& system,
+                                               const std::vector<double>& x0, const Scene& scene,
+                                               std::uint64_t n_times, std::uint64_t n_regular,
+                                               SampleSink& sink,
+                                               const std::exception_ptr& write_failure) {
+  const double t_end = scene.simulation.t_end, interval = scene.output.interval;
+  const auto observer = [&sink](double t, std::span<const double> x) { return sink(t, x); };
+  constexpr std::uint64_t kBlock = 1u << 16;  // output times per block
+  vehicle::IntegrationResult result;
+  std::vector<double> x = x0;
+  for (std::uint64_t first = 0; first < n_times;) {
+    const std::uint64_t last = std::min(n_times - 1, first + kBlock);
+    const auto times = output_block(first, last, n_regular, t_end, interval);
+    sink.skip_first = first > 0;
+    auto part = integrator.integrate(system, x, times, observer);
+    result.steps += part.steps;
+    result.rhs_evaluations += part.rhs_evaluations;
+    result.status = part.status;
+    result.t_reached = part.t_reached;
+    result.message = part.message;
+    result.state = std::move(part.state);
+    if (write_failure) std::rethrow_exception(write_failure);
+    if (result.status != vehicle::IntegrationResult::Status::kCompleted || last + 1 >= n_times)
+      break;
+    x = result.state;
+    first = last;
+  }
+  return result;
+}
+
+/// The summary of an integration that ended (completed, stopped or failed); after a solver
+/// failure, the state where the solver stopped is kept in the file beside the samples.
+void record_result(RunSummary& summary, const vehicle::IntegrationResult& result,
+                   const SampleSink& sink, const RunOptions& options, H5File* file) {
+  summary.status = result.status;
+  summary.status_text = vehicle::to_string(result.status);
+  // The file's t_reached is its last sample; the solver's own time (a stop or a failure
+  // between two outputs) goes into the message.
+  summary.t_reached = sink.writer ? sink.writer->last_written_time() : sink.last_sample_time;
+  summary.steps = result.steps;
+  summary.rhs_evaluations = result.rhs_evaluations;
+  summary.message = result.message;
+  if (sink.stopped_by_request ||
+      result.status == vehicle::IntegrationResult::Status::kInterrupted) {
+    summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
+  }
+  if (file && result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
+    file->write_vector("/failure/state", result.state, "SI (see /signals units)",
+                       "state where the solver stopped, at time t, in state order");
+    file->set_attribute("/failure/state", "t", result.t_reached);
+  }
+}
+
+/// Records a failure in the file (status "error" and its message), closes it and gives it its
+/// name; throws nothing (on e.g. a full disk the last flush stands).
+void record_error(H5File* file, OutputFile* h5, const char* what, double t_reached) {
+  try {
+    if (file) set_status(*file, "error", what, t_reached);
+  } catch (const std::exception&) {
+  }
+  try {
+    if (file) {
+      file->close();
+      h5->commit();
+    }
+  } catch (const std::exception&) {
+  }
+}
+
+/// Writes the closing attributes of a finished run, closes the file and gives every output its
+/// name.
+void close_run_file(H5File& file, const RunSummary& summary, OutputSet& outputs) {
+  file.set_attribute("/", "wall_time_s", summary.wall_seconds);
+  file.set_attribute("/", "steps", summary.steps);
+  file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
+  set_status(file, summary.status_text, summary.message, summary.t_reached);
+  file.close();
+  outputs.commit_all();
+}
+
+}  // namespace
+
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   // Everything that can be refused is refused before any file is touched.
   const RunPlan plan = plan_run(scene, options);
@@ -252,7 +437,6 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   RunSummary summary;
   summary.channels = plan.channels;
   summary.state_count = plan.state_count;
-  const std::size_t n_states = plan.state_count;
   const std::size_t n_channels = summary.channels.size();
   summary.peak_abs.assign(n_channels, 0.0);
   summary.final_values.assign(n_channels, 0.0);
@@ -275,151 +459,39 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
     summary.output_file = h5->path();
     summary.csv_file = plan.csv_file;
     file.emplace(H5File::create(h5->write_path()));
-    write_metadata(*file, scene, "time_simulation");
-    const auto warnings = scene_warnings(scene);
-    file->set_attribute("/", "warning_count", static_cast<long>(warnings.size()));
-    file->set_attribute("/", "warnings", fmt::format("{}", fmt::join(warnings, "\n")));
-    set_status(*file, "running", "", 0.0);
-    file->set_attribute("/", "samples", 0L);
+    write_run_header(*file, scene);
   }
 
   // From here every failure is recorded in the file, which is then renamed to its name.
   const auto wall_start = std::chrono::steady_clock::now();
-  bool stopped_by_request = false;
-  const auto stop_requested = [&] { return options.should_stop && options.should_stop(); };
   std::optional<TimeSeriesWriter> writer;
   double last_sample_time = 0.0;  // without a file, what the caller has received
   try {
     std::optional<io::TextWriter> csv;
-    if (csv_out != nullptr) {
-      // The CSV leaves the HDF5 writer's reserve free, so the HDF5 file can always be closed.
-      csv.emplace(csv_out->write_path(), TimeSeriesWriter::kCloseReserve);
-      csv->write("time");
-      for (auto i : plan.csv_index) csv->print(",{}", summary.channels[i].name);
-      csv->write("\n");
-    }
+    if (csv_out != nullptr) open_csv(csv, *csv_out, plan, summary.channels);
     if (file) writer.emplace(*file, summary.channels, scene.output.flush_seconds);
     const std::vector<double> x0 = initial_state(scene, system);
-    std::vector<double> row(n_channels);
-    bool skip_first = false;  // each block after the first starts at the previous block's end
-    const auto observer = [&](double t, std::span<const double> x) {
-      if (skip_first) {
-        skip_first = false;
-        return true;
-      }
-      std::copy(x.begin(), x.end(), row.begin());
-      system.signals(t, x, std::span<double>(row).subspan(n_states));
-      if (writer) writer->append(t, row);
-      ++summary.samples;
-      last_sample_time = t;
-      if (options.on_sample) options.on_sample(t, row);
-      for (std::size_t i = 0; i < n_channels; ++i)
-        summary.peak_abs[i] = std::max(summary.peak_abs[i], std::abs(row[i]));
-      summary.final_values = row;
-      if (csv) {
-        csv->print("{:.10g}", t);
-        for (auto i : plan.csv_index) csv->print(",{:.10g}", row[i]);
-        csv->write("\n");
-      }
-      if (options.progress) options.progress(t);
-      if (options.pace > 0.0) {
-        pace_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                    std::chrono::duration<double>(t / options.pace)),
-                   options.should_stop);
-      }
-      if (stop_requested()) {
-        stopped_by_request = true;
-        return false;
-      }
-      return true;
-    };
-    // Between two outputs the integrator polls this before every right-hand side and after
-    // every step: a stop request ends the run at once, and samples waiting in the buffer reach
-    // the file at least every flush_seconds however long the solver takes to the next output.
-    // A write failure here cannot cross the integrator: it stops the run and is thrown after.
+    TimeSeriesWriter* const sample_writer = writer ? &*writer : nullptr;
+    io::TextWriter* const sample_csv = csv ? &*csv : nullptr;
+    SampleSink sink{system, plan, options, summary, sample_writer, sample_csv, wall_start,
+                    last_sample_time};
     std::exception_ptr write_failure;
-    plan.integrator->set_stop_request([&] {
-      try {
-        if (writer) writer->flush_if_due();
-      } catch (...) {
-        write_failure = std::current_exception();
-        return true;
-      }
-      if (stop_requested()) {
-        stopped_by_request = true;
-        return true;
-      }
-      return false;
-    });
-    // The output times go to the integrator block by block, so memory does not grow with the
-    // number of samples; the integrator continues each block from the state the previous one
-    // reached.
-    constexpr std::uint64_t kBlock = 1u << 16;  // output times per block
-    vehicle::IntegrationResult result;
-    std::vector<double> x = x0;
-    for (std::uint64_t first = 0; first < n_times;) {
-      const std::uint64_t last = std::min(n_times - 1, first + kBlock);
-      const auto times = output_block(first, last, n_regular, t_end, interval);
-      skip_first = first > 0;
-      auto part = plan.integrator->integrate(system, x, times, observer);
-      result.steps += part.steps;
-      result.rhs_evaluations += part.rhs_evaluations;
-      result.status = part.status;
-      result.t_reached = part.t_reached;
-      result.message = part.message;
-      result.state = std::move(part.state);
-      if (write_failure) std::rethrow_exception(write_failure);
-      if (result.status != vehicle::IntegrationResult::Status::kCompleted || last + 1 >= n_times)
-        break;
-      x = result.state;
-      first = last;
-    }
+    watch_stops_and_flushes(*plan.integrator, sink, write_failure);
+    const vehicle::IntegrationResult result = integrate_in_blocks(
+        *plan.integrator, system, x0, scene, n_times, n_regular, sink, write_failure);
     if (writer) writer->flush();
     if (csv) csv->close();
-    summary.status = result.status;
-    summary.status_text = vehicle::to_string(result.status);
-    // The file's t_reached is its last sample; the solver's own time (a stop or a failure
-    // between two outputs) goes into the message.
-    summary.t_reached = writer ? writer->last_written_time() : last_sample_time;
-    summary.steps = result.steps;
-    summary.rhs_evaluations = result.rhs_evaluations;
-    summary.message = result.message;
-    if (stopped_by_request || result.status == vehicle::IntegrationResult::Status::kInterrupted) {
-      summary.message = fmt::format("{} at t = {:.9g} s", options.stop_reason, result.t_reached);
-    }
-    if (file && result.status == vehicle::IntegrationResult::Status::kSolverFailure) {
-      // Keep the state where the solver stopped beside the samples.
-      file->write_vector("/failure/state", result.state, "SI (see /signals units)",
-                         "state where the solver stopped, at time t, in state order");
-      file->set_attribute("/failure/state", "t", result.t_reached);
-    }
+    record_result(summary, result, sink, options, file ? &*file : nullptr);
   } catch (const std::exception& e) {
     // Record the failure in the file, close it and give it its name; the original error is what
     // the caller sees.
     summary.t_reached = writer ? writer->last_written_time() : last_sample_time;
-    try {
-      if (file) set_status(*file, "error", e.what(), summary.t_reached);
-    } catch (const std::exception&) {  // e.g. a full disk: the last flush stands
-    }
-    try {
-      if (file) {
-        file->close();
-        h5->commit();
-      }
-    } catch (const std::exception&) {
-    }
+    record_error(file ? &*file : nullptr, h5, e.what(), summary.t_reached);
     throw;
   }
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  if (file) {
-    file->set_attribute("/", "wall_time_s", summary.wall_seconds);
-    file->set_attribute("/", "steps", summary.steps);
-    file->set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
-    set_status(*file, summary.status_text, summary.message, summary.t_reached);
-    file->close();
-    outputs.commit_all();
-  }
+  if (file) close_run_file(*file, summary, outputs);
   return summary;
 }
 

@@ -36,17 +36,17 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
-#include <span>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "integrator_impl.hpp"
+#include "output_blocks.hpp"
 
 namespace ferro::vehicle::detail {
 namespace {
@@ -84,6 +84,7 @@ class Bdf2 final : public Integrator {
     constexpr double kUnitRoundoff = 2.220446049250313e-16;
     Vector f0(n_), f1(n_), yp = y;
     rhs(t, y, f0);
+    jacobian_.set_zero();
     for (const std::vector<int>& group : groups_) {
       for (const int j : group) {
         yp[j] = y[j] + std::sqrt(kUnitRoundoff * std::max(1e-5, std::abs(y[j])));
@@ -92,29 +93,31 @@ class Bdf2 final : public Integrator {
       for (const int j : group) {
         const double inc = yp[j] - y[j];  // the increment actually represented
         yp[j] = y[j];
-        jacobian_.col(j).setZero();
+        const auto col = static_cast<std::size_t>(j);
         if (pattern_.empty()) {
-          jacobian_.col(j) = (f1 - f0) / inc;
-        } else {
-          for (const int i : pattern_[static_cast<std::size_t>(j)]) {
-            jacobian_(i, j) = (f1[i] - f0[i]) / inc;
-          }
+          for (std::size_t i = 0; i < n_; ++i) jacobian_.set(i, col, (f1[i] - f0[i]) / inc);
+          continue;
         }
+        const std::vector<int>& rows = pattern_[col];
+        for (const int i : rows) jacobian_.set(static_cast<std::size_t>(i), col, (f1[i] - f0[i]) / inc);
+        // An output state's diagonal, always in the block D.
+        if (blocks_->is_output[col] != 0 && std::find(rows.begin(), rows.end(), j) == rows.end())
+          jacobian_.set(col, col, 0.0);
       }
     }
+    jacobian_.order_by_column();  // the groups set the columns out of order
     ++jacobians_;
     jacobian_age_ = 0;
     factors_.clear();  // the Newton matrices must be refactored
   }
 
-  /// The factored Newton matrix I - gamma_h J of the current Jacobian, solved by blocks when
-  /// the output states feed nothing back (J block lower-triangular): the other states first,
-  /// then the output states from theirs.
+  /// The factored Newton matrix I - gamma_h J of the current Jacobian, in the output-block form
+  /// (output_blocks.hpp) when the output states feed nothing back: the other states first, then
+  /// the output states from theirs.
   struct Factor {
     double gamma_h = 0.0;
-    Eigen::PartialPivLU<Eigen::MatrixXd> states;   ///< I - gamma_h J over the states
-    Eigen::PartialPivLU<Eigen::MatrixXd> outputs;  ///< over the output states (block case)
-    Eigen::SparseMatrix<double> coupling;          ///< -gamma_h J(outputs, states) (block case)
+    OutputBlockMatrix matrix;
+    OutputBlockLu lu;
   };
 
   /// A step alternates between a few values of gamma_h (BDF2's 2h/3, the implicit-Euler halves
@@ -127,40 +130,17 @@ class Bdf2 final : public Integrator {
     if (factors_.size() >= kKept) factors_.erase(factors_.begin());
     Factor f;
     f.gamma_h = gamma_h;
-    if (output_index_.empty()) {
-      const auto n = static_cast<Eigen::Index>(n_);
-      f.states.compute(Eigen::MatrixXd::Identity(n, n) - gamma_h * jacobian_);
-    } else {
-      const auto ns = static_cast<Eigen::Index>(state_index_.size());
-      const auto no = static_cast<Eigen::Index>(output_index_.size());
-      f.states.compute(Eigen::MatrixXd::Identity(ns, ns) -
-                       gamma_h * jacobian_(state_index_, state_index_));
-      f.outputs.compute(Eigen::MatrixXd::Identity(no, no) -
-                        gamma_h * jacobian_(output_index_, output_index_));
-      // The outputs' dependence on the states, by the pattern's entries (a few per row).
-      std::vector<Eigen::Triplet<double>> entries;
-      for (std::size_t k = 0; k < state_index_.size(); ++k) {
-        const auto j = state_index_[k];
-        for (const int i : pattern_[static_cast<std::size_t>(j)]) {
-          const Eigen::Index slot = output_slot_[static_cast<std::size_t>(i)];
-          if (slot >= 0) entries.emplace_back(slot, static_cast<Eigen::Index>(k), -gamma_h * jacobian_(i, j));
-        }
-      }
-      f.coupling.resize(no, ns);
-      f.coupling.setFromTriplets(entries.begin(), entries.end());
-    }
+    f.matrix = jacobian_;
+    f.matrix.scale_add_identity(-gamma_h);
+    f.lu.compute(f.matrix);  // a singular matrix shows as a non-finite correction
     factors_.push_back(std::move(f));
     return factors_.back();
   }
 
   /// (I - gamma_h J)^-1 b.
   [[nodiscard]] Vector solve(const Factor& f, const Vector& b) const {
-    if (output_index_.empty()) return f.states.solve(b);
-    const Vector ds = f.states.solve(Vector(b(state_index_)));
-    const Vector dout = f.outputs.solve(Vector(b(output_index_) - f.coupling * ds));
     Vector d(n_);
-    d(state_index_) = ds;
-    d(output_index_) = dout;
+    f.lu.solve(f.matrix, b.data(), d.data());
     return d;
   }
 
@@ -214,6 +194,10 @@ class Bdf2 final : public Integrator {
   /// Euler; with a stale Jacobian refreshed once, then split in two implicit-Euler halves.
   void step(double t, double h, const Vector& y_n, const Vector* y_nm1, const Vector* y_nm2,
             Vector& y, int depth);
+  /// Sizes, tolerances, Jacobian pattern and output blocks of `system`; counters zeroed.
+  void prepare(const OdeSystem& system);
+  /// `result` with the run's right-hand-side, Jacobian and Newton-iteration counts.
+  [[nodiscard]] IntegrationResult counted(IntegrationResult result) const;
 
   IntegratorSettings s_;
   const OdeSystem* system_ = nullptr;
@@ -222,11 +206,10 @@ class Bdf2 final : public Integrator {
   Vector atol_;  ///< atol per state (the system's tolerance scales)
   std::size_t tested_ = 0;  ///< states in the convergence test (all but the output states)
   std::vector<std::vector<int>> pattern_, groups_;  ///< Jacobian sparsity and column groups
-  Eigen::MatrixXd jacobian_;
+  /// The output states and the others when the outputs feed nothing back, else all dynamic.
+  std::shared_ptr<const OutputBlocks> blocks_;
+  OutputBlockMatrix jacobian_;
   std::vector<Factor> factors_;
-  /// The output states and the others, when the outputs feed nothing back (else both empty).
-  std::vector<Eigen::Index> state_index_, output_index_;
-  std::vector<Eigen::Index> output_slot_;  ///< per state: its index among the outputs, or -1
   long jacobian_age_ = 0, jacobians_ = 0, rhs_count_ = 0, splits_ = 0, iterations_ = 0;
   bool slow_ = false;
 };
@@ -257,14 +240,10 @@ void Bdf2::step(double t, double h, const Vector& y_n, const Vector* y_nm1, cons
   step(t, 0.5 * h, middle, nullptr, nullptr, y, depth + 1);
 }
 
-IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const double> x0,
-                                  const std::vector<double>& times, const Observer& observer) {
+void Bdf2::prepare(const OdeSystem& system) {
   system_ = &system;
-  const StepMonitor monitor(system, stop_);
-  monitor_ = &monitor;
   n_ = system.size();
   const auto n = static_cast<Eigen::Index>(n_);
-  jacobian_.resize(n, n);
   atol_ = Vector::Constant(n, s_.atol);
   pattern_ = system.jacobian_pattern();
   if (pattern_.size() != n_) pattern_.clear();
@@ -278,26 +257,37 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   for (const std::size_t i : outputs)
     atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
   tested_ = std::max<std::size_t>(1, n_ - outputs.size());
-  state_index_.clear();
-  output_index_.clear();
+  blocks_ = pattern_.empty() ? nullptr : OutputBlocks::make(system, pattern_);
+  if (blocks_ == nullptr) blocks_ = OutputBlocks::all_dynamic(n_);
+  jacobian_ = OutputBlockMatrix(blocks_);
   factors_.clear();
-  if (!outputs.empty() && !pattern_.empty()) {
-    std::vector<char> is_output(n_, 0);
-    for (const std::size_t i : outputs) is_output[i] = 1;
-    // Block-triangular only if no output column reaches a row of the other states.
-    bool feeds_back = false;
-    for (const std::size_t j : outputs) {
-      for (const int i : pattern_[j]) feeds_back = feeds_back || !is_output[static_cast<std::size_t>(i)];
-    }
-    if (!feeds_back) {
-      output_slot_.assign(n_, -1);
-      for (std::size_t i = 0; i < n_; ++i) {
-        if (is_output[i] != 0) output_slot_[i] = static_cast<Eigen::Index>(output_index_.size());
-        (is_output[i] ? output_index_ : state_index_).push_back(static_cast<Eigen::Index>(i));
-      }
-    }
-  }
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
+}
+
+IntegrationResult Bdf2::counted(IntegrationResult result) const {
+  result.rhs_evaluations = rhs_count_;
+  result.jacobians = jacobians_;
+  result.newton_iterations = iterations_;
+  return result;
+}
+
+/// The state at t in (t_n, t_np1], t_np1 = t_n + h: the step's end y_np1, or the quadratic
+/// through the last three points (the line through the last two on the first step, k = 0).
+Eigen::VectorXd interpolate(double t, double t_n, double t_np1, double h, long k,
+                            const Eigen::VectorXd& y_nm1, const Eigen::VectorXd& y_n,
+                            const Eigen::VectorXd& y_np1) {
+  if (std::abs(t - t_np1) <= 1e-12 * h) return y_np1;
+  if (k == 0) return y_n + (t - t_n) / h * (y_np1 - y_n);
+  const double u = (t - t_n) / h;  // in (0, 1): nodes at -1, 0, 1
+  return 0.5 * u * (u - 1.0) * y_nm1 + (1.0 - u * u) * y_n + 0.5 * u * (u + 1.0) * y_np1;
+}
+
+IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const double> x0,
+                                  const std::vector<double>& times, const Observer& observer) {
+  const StepMonitor monitor(system, stop_);
+  monitor_ = &monitor;
+  prepare(system);
+  const auto n = static_cast<Eigen::Index>(n_);
   IntegrationResult result;
   const double h = s_.fixed_step;
   const double t0 = times.front();
@@ -309,10 +299,17 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
   };
   if (!report(t0, y_n)) {
     result.status = IntegrationResult::Status::kInterrupted;
-    return result;
+    return counted(result);
   }
   std::size_t next = 1;
   long k = 0;  // steps taken: y_n is at t0 + k h
+  // Ends the run with a failure at the last completed step (y_n).
+  const auto fail = [&](const std::string& message) {
+    result.status = IntegrationResult::Status::kSolverFailure;
+    result.message = message;
+    result.t_reached = t0 + static_cast<double>(k) * h;
+    result.state.assign(y_n.data(), y_n.data() + n);
+  };
   try {
     refresh_jacobian(t0, y_n);
     while (next < times.size()) {
@@ -334,30 +331,14 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
                                      h, t_np1, result.t_reached, cause);
         result.t_reached = t_np1;
         result.state.assign(y_np1.data(), y_np1.data() + n);
-        result.rhs_evaluations = rhs_count_;
-        result.jacobians = jacobians_;
-        result.newton_iterations = iterations_;
-        return result;
+        return counted(result);
       }
-      // Outputs in (t_n, t_np1]: the step's end, or the quadratic through the last three
-      // points (the line through the last two on the first step).
-      while (next < times.size() && times[next] <= t_np1 + 1e-12 * h) {
-        const double t = times[next];
-        Vector x(n);
-        if (std::abs(t - t_np1) <= 1e-12 * h) {
-          x = y_np1;
-        } else if (k == 0) {
-          x = y_n + (t - t_n) / h * (y_np1 - y_n);
-        } else {
-          const double u = (t - t_n) / h;  // in (0, 1): nodes at -1, 0, 1
-          x = 0.5 * u * (u - 1.0) * y_nm1 + (1.0 - u * u) * y_n + 0.5 * u * (u + 1.0) * y_np1;
-        }
-        if (!report(t, x)) {
+      // Outputs in (t_n, t_np1].
+      for (; next < times.size() && times[next] <= t_np1 + 1e-12 * h; ++next) {
+        if (!report(times[next], interpolate(times[next], t_n, t_np1, h, k, y_nm1, y_n, y_np1))) {
           result.status = IntegrationResult::Status::kInterrupted;
-          result.rhs_evaluations = rhs_count_;
-          return result;
+          return counted(result);
         }
-        ++next;
       }
       std::swap(y_nm2, y_nm1);
       std::swap(y_nm1, y_n);
@@ -371,24 +352,14 @@ IntegrationResult Bdf2::integrate(const OdeSystem& system, std::span<const doubl
     result.t_reached = t0 + static_cast<double>(k) * h;
     result.state.assign(y_n.data(), y_n.data() + n);
   } catch (const std::exception& e) {
-    result.status = IntegrationResult::Status::kSolverFailure;
-    result.message = fmt::format("bdf2 (fixed step {} s) at t = {:.9g} s (last output t = {:.9g} s): {}",
-                                 h, t0 + static_cast<double>(k) * h, result.t_reached, e.what());
-    result.t_reached = t0 + static_cast<double>(k) * h;
-    result.state.assign(y_n.data(), y_n.data() + n);
+    fail(fmt::format("bdf2 (fixed step {} s) at t = {:.9g} s (last output t = {:.9g} s): {}", h,
+                     t0 + static_cast<double>(k) * h, result.t_reached, e.what()));
   } catch (const Recoverable&) {
-    result.status = IntegrationResult::Status::kSolverFailure;
-    result.message = fmt::format(
-        "bdf2 (fixed step {} s): the right-hand side refused the state at t = {:.9g} s where the "
-        "Jacobian is formed",
-        h, t0 + static_cast<double>(k) * h);
-    result.t_reached = t0 + static_cast<double>(k) * h;
-    result.state.assign(y_n.data(), y_n.data() + n);
+    fail(fmt::format("bdf2 (fixed step {} s): the right-hand side refused the state at t = "
+                     "{:.9g} s where the Jacobian is formed",
+                     h, t0 + static_cast<double>(k) * h));
   }
-  result.rhs_evaluations = rhs_count_;
-  result.jacobians = jacobians_;
-  result.newton_iterations = iterations_;
-  return result;
+  return counted(result);
 }
 
 }  // namespace

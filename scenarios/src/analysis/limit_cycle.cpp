@@ -261,12 +261,9 @@ int sustain_rank(Oscillation o) {
   return 0;
 }
 
-}  // namespace
-
-SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const double> x0,
-                               const SettleOptions& options) {
-  if (options.observed.empty())
-    throw std::invalid_argument("settle: no observed state");
+/// Throws std::invalid_argument for options run_until_settled cannot work with.
+void check_settle_options(const vehicle::OdeSystem& system, const SettleOptions& options) {
+  if (options.observed.empty()) throw std::invalid_argument("settle: no observed state");
   for (auto i : options.observed)
     if (i >= system.size())
       throw std::invalid_argument(fmt::format("settle: observed state {} out of range", i));
@@ -276,133 +273,159 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
     throw std::invalid_argument(
         "settle: need segment > 0, max_time >= segment, output_interval > 0 and "
         "0 < zero_amplitude < max_amplitude");
-  SettleResult r;
-  r.final_state.assign(x0.begin(), x0.end());
-  const std::size_t m = options.observed.size();
-  auto integrator = vehicle::make_integrator(options.solver);
+}
+
+/// Samples of the observed states: times and, per observed state, its values.
+struct ObservedSeries {
+  std::vector<double> times;
+  std::vector<std::vector<double>> series;
+};
+
+/// What the segments so far leave to the next one and to the decision at the time limit.
+struct SettleHistory {
+  explicit SettleHistory(std::size_t m)
+      : previous_segment_amplitude(m, NAN), last_segment_amplitude(m, NAN), last_period(m, NAN) {}
   // Per observed state: its amplitude over the segment before the last, and over the last.
-  std::vector<double> previous_segment_amplitude(m, NAN), last_segment_amplitude(m, NAN);
-  std::vector<double> last_period(m, NAN);
-  std::vector<double> last_times;
-  std::vector<std::vector<double>> last_series;
-  std::vector<double> window_times;               // last two segments, for the fits
-  std::vector<std::vector<double>> window_series;
-  for (double t0 = 0.0; t0 < options.max_time - 1e-12; t0 += options.segment) {
-    const double t1 = std::min(t0 + options.segment, options.max_time);
-    const auto grid = vehicle::output_grid(t0, t1, options.output_interval);
-    // The amplitude is measured over this segment and the one before (so a segment needs only
-    // N periods); the previous segment's last sample is this one's first.
-    std::vector<double> times = std::move(last_times);
-    std::vector<std::vector<double>> series = std::move(last_series);
-    series.resize(m);
-    if (!times.empty()) {
-      times.pop_back();
-      for (auto& sj : series) sj.pop_back();
-    }
-    const std::size_t fresh = times.size();
-    std::size_t left_bounds = m;  // the observed state that left [-max, max], m: none
-    const auto observer = [&](double t, std::span<const double> x) {
-      times.push_back(t);
-      for (std::size_t j = 0; j < m; ++j) series[j].push_back(x[options.observed[j]]);
-      for (std::size_t j = 0; j < m; ++j) {
-        const double v = x[options.observed[j]];
-        if (!(std::abs(v) <= options.max_amplitude)) {
-          left_bounds = j;
-          return false;
-        }
-      }
-      return true;
-    };
-    const auto res = integrator->integrate(system, r.final_state, grid, observer);
-    r.rhs_evaluations += res.rhs_evaluations;
-    r.time = res.t_reached;
-    r.final_state = res.state;
-    const bool out_of_bounds = left_bounds < m;
-    if (!out_of_bounds && res.status == vehicle::IntegrationResult::Status::kSolverFailure &&
-        t0 == 0.0) {
-      // A failure before any observed state has swung once across zero and back is no
-      // oscillation: the start itself cannot be integrated.
-      int sign_changes = 0;
-      for (const auto& s : series) {
-        int changes = 0;
-        for (std::size_t i = 1; i < s.size(); ++i)
-          if ((s[i] > 0.0) != (s[i - 1] > 0.0)) ++changes;
-        sign_changes = std::max(sign_changes, changes);
-      }
-      if (sign_changes < 2) {
-        throw std::runtime_error(fmt::format(
-            "the run failed at its start, before one oscillation (t = {:.3g} s: {}); the "
-            "initial state cannot be integrated (a disturbance that puts a wheel into the rail?)",
-            res.t_reached, res.message));
-      }
-    }
-    if (out_of_bounds || res.status == vehicle::IntegrationResult::Status::kSolverFailure) {
-      r.outcome = Oscillation::kDiverged;
-      r.message = out_of_bounds ? fmt::format("observed state {} above {} at t = {:.4g} s",
-                                              left_bounds + 1, options.max_amplitude,
-                                              res.t_reached)
-                                : res.message;
-      r.amplitude.assign(m, NAN);
-      for (std::size_t j = 0; j < m; ++j) {
-        double peak = 0.0;
-        for (double v : series[j]) peak = std::max(peak, std::abs(v));
-        r.amplitude[j] = peak;
-      }
-      r.holder = out_of_bounds ? left_bounds
-                               : static_cast<std::size_t>(
-                                     std::max_element(r.amplitude.begin(), r.amplitude.end()) -
-                                     r.amplitude.begin());
-      r.period = NAN;
-      return r;
-    }
-    window_times = times;
-    window_series = series;
-    last_times.assign(times.begin() + static_cast<long>(fresh), times.end());
-    last_series.assign(m, {});
-    for (std::size_t j = 0; j < m; ++j)
-      last_series[j].assign(series[j].begin() + static_cast<long>(fresh), series[j].end());
-    r.amplitude.assign(m, 0.0);
-    std::vector<SteadyAmplitude> steady(m);
+  std::vector<double> previous_segment_amplitude, last_segment_amplitude;
+  std::vector<double> last_period;
+  ObservedSeries last;    ///< the last segment's own samples
+  ObservedSeries window;  ///< last two segments, for the fits
+};
+
+/// One segment integrated from r.final_state over [t0, t1], the observed states sampled into
+/// `samples` (which holds the previous segment's samples on entry); `left_bounds` is the
+/// observed state that left [-max_amplitude, max_amplitude], or m when none did.
+vehicle::IntegrationResult integrate_segment(vehicle::Integrator& integrator,
+                                             const vehicle::OdeSystem& system,
+                                             const SettleOptions& options, double t0, double t1,
+                                             SettleResult& r, ObservedSeries& samples,
+                                             std::size_t& left_bounds) {
+  const std::size_t m = options.observed.size();
+  const auto grid = vehicle::output_grid(t0, t1, options.output_interval);
+  left_bounds = m;
+  const auto observer = [&](double t, std::span<const double> x) {
+    samples.times.push_back(t);
+    for (std::size_t j = 0; j < m; ++j) samples.series[j].push_back(x[options.observed[j]]);
     for (std::size_t j = 0; j < m; ++j) {
-      steady[j] = steady_amplitude(times, series[j], options.amplitude);
-      r.amplitude[j] = steady[j].amplitude;
-      last_period[j] = steady[j].period;
+      const double v = x[options.observed[j]];
+      if (!(std::abs(v) <= options.max_amplitude)) {
+        left_bounds = j;
+        return false;
+      }
     }
-    previous_segment_amplitude = last_segment_amplitude;
-    last_segment_amplitude = r.amplitude;
-    // The largest oscillation holds the system's.
-    r.holder = static_cast<std::size_t>(
-        std::max_element(r.amplitude.begin(), r.amplitude.end()) - r.amplitude.begin());
-    const SteadyAmplitude& held = steady[r.holder];
-    r.period = held.period;
-    if (held.amplitude < options.zero_amplitude) {
-      r.outcome = Oscillation::kDecayed;
-      r.amplitude.assign(m, 0.0);
-      return r;
-    }
-    // Settled: converged within this segment and consistent with the previous one.
-    const double before = previous_segment_amplitude[r.holder];
-    const bool consistent = std::isnan(before) || std::abs(held.amplitude - before) <=
-                                                      10.0 * options.amplitude.rel_tol *
-                                                          held.amplitude;
-    // The other observed states must have settled too (converged, or negligible beside the
-    // holder), so that the amplitude of every one is that of the cycle, not of a transient.
-    bool others_settled = true;
-    for (std::size_t j = 0; j < m; ++j) {
-      const double negligible =
-          std::max(options.zero_amplitude, kNegligibleShare * held.amplitude);
-      if (j != r.holder && !steady[j].converged && !(steady[j].amplitude < negligible))
-        others_settled = false;
-    }
-    if (held.converged && consistent && others_settled && t0 > 0.0) {
-      r.outcome = Oscillation::kSteady;
-      return r;
-    }
+    return true;
+  };
+  auto res = integrator.integrate(system, r.final_state, grid, observer);
+  r.rhs_evaluations += res.rhs_evaluations;
+  r.time = res.t_reached;
+  r.final_state = res.state;
+  return res;
+}
+
+/// A failure before any observed state has swung once across zero and back is no oscillation:
+/// the start itself cannot be integrated (std::runtime_error).
+void throw_if_failed_at_start(const std::vector<std::vector<double>>& series,
+                              const vehicle::IntegrationResult& res) {
+  int sign_changes = 0;
+  for (const auto& s : series) {
+    int changes = 0;
+    for (std::size_t i = 1; i < s.size(); ++i)
+      if ((s[i] > 0.0) != (s[i - 1] > 0.0)) ++changes;
+    sign_changes = std::max(sign_changes, changes);
   }
-  // Time limit: the amplitude equation fitted to each observed state's last two segments
-  // decides where that state is heading (when it cannot tell the sign of the growth, the trend
-  // does); the system takes the most sustained of them.
-  r.message = fmt::format("not settled after {} s", options.max_time);
+  if (sign_changes < 2) {
+    throw std::runtime_error(fmt::format(
+        "the run failed at its start, before one oscillation (t = {:.3g} s: {}); the "
+        "initial state cannot be integrated (a disturbance that puts a wheel into the rail?)",
+        res.t_reached, res.message));
+  }
+}
+
+/// The outcome of a run that left the amplitude bounds (`left_bounds` < m) or whose solver
+/// failed: diverged, with each observed state's peak as its amplitude.
+void set_diverged(SettleResult& r, const std::vector<std::vector<double>>& series,
+                  std::size_t left_bounds, const vehicle::IntegrationResult& res,
+                  const SettleOptions& options) {
+  const std::size_t m = series.size();
+  const bool out_of_bounds = left_bounds < m;
+  r.outcome = Oscillation::kDiverged;
+  r.message = out_of_bounds ? fmt::format("observed state {} above {} at t = {:.4g} s",
+                                          left_bounds + 1, options.max_amplitude, res.t_reached)
+                            : res.message;
+  r.amplitude.assign(m, NAN);
+  for (std::size_t j = 0; j < m; ++j) {
+    double peak = 0.0;
+    for (double v : series[j]) peak = std::max(peak, std::abs(v));
+    r.amplitude[j] = peak;
+  }
+  r.holder =
+      out_of_bounds
+          ? left_bounds
+          : static_cast<std::size_t>(std::max_element(r.amplitude.begin(), r.amplitude.end()) -
+                                     r.amplitude.begin());
+  r.period = NAN;
+}
+
+/// Measures the amplitudes of a segment that stayed in bounds (`samples`: it and the one
+/// before; its own samples start at `fresh`), keeps them in `history`, and decides whether the
+/// run has decayed or settled (true, with r's outcome set) or goes on (false).
+bool judge_segment(SettleResult& r, SettleHistory& history, const ObservedSeries& samples,
+                   std::size_t fresh, double t0, const SettleOptions& options) {
+  const std::size_t m = options.observed.size();
+  const auto& times = samples.times;
+  const auto& series = samples.series;
+  history.window.times = times;
+  history.window.series = series;
+  history.last.times.assign(times.begin() + static_cast<long>(fresh), times.end());
+  history.last.series.assign(m, {});
+  for (std::size_t j = 0; j < m; ++j)
+    history.last.series[j].assign(series[j].begin() + static_cast<long>(fresh), series[j].end());
+  r.amplitude.assign(m, 0.0);
+  std::vector<SteadyAmplitude> steady(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    steady[j] = steady_amplitude(times, series[j], options.amplitude);
+    r.amplitude[j] = steady[j].amplitude;
+    history.last_period[j] = steady[j].period;
+  }
+  history.previous_segment_amplitude = history.last_segment_amplitude;
+  history.last_segment_amplitude = r.amplitude;
+  // The largest oscillation holds the system's.
+  r.holder = static_cast<std::size_t>(std::max_element(r.amplitude.begin(), r.amplitude.end()) -
+                                      r.amplitude.begin());
+  const SteadyAmplitude& held = steady[r.holder];
+  r.period = held.period;
+  if (held.amplitude < options.zero_amplitude) {
+    r.outcome = Oscillation::kDecayed;
+    r.amplitude.assign(m, 0.0);
+    return true;
+  }
+  // Settled: converged within this segment and consistent with the previous one.
+  const double before = history.previous_segment_amplitude[r.holder];
+  const bool consistent =
+      std::isnan(before) ||
+      std::abs(held.amplitude - before) <= 10.0 * options.amplitude.rel_tol * held.amplitude;
+  // The other observed states must have settled too (converged, or negligible beside the
+  // holder), so that the amplitude of every one is that of the cycle, not of a transient.
+  bool others_settled = true;
+  for (std::size_t j = 0; j < m; ++j) {
+    const double negligible = std::max(options.zero_amplitude, kNegligibleShare * held.amplitude);
+    if (j != r.holder && !steady[j].converged && !(steady[j].amplitude < negligible))
+      others_settled = false;
+  }
+  if (held.converged && consistent && others_settled && t0 > 0.0) {
+    r.outcome = Oscillation::kSteady;
+    return true;
+  }
+  return false;
+}
+
+/// Where each observed state is heading at the time limit: the amplitude equation fitted to its
+/// last two segments (into r.fits) decides, or, when it cannot tell the sign of the growth, the
+/// trend; a state at rest or negligible beside the largest does not decide (decayed).
+std::vector<Oscillation> headings_at_time_limit(SettleResult& r, const SettleHistory& history,
+                                                const SettleOptions& options) {
+  const std::size_t m = options.observed.size();
+  const auto& last_segment_amplitude = history.last_segment_amplitude;
   r.fits.assign(m, AmplitudeEquation{});
   std::vector<Oscillation> heading(m, Oscillation::kDecaying);
   const double largest =
@@ -415,21 +438,31 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
       heading[j] = Oscillation::kDecayed;
       continue;
     }
-    AmplitudeEquation& fit = r.fits[j] = fit_amplitude_equation(window_times, window_series[j]);
+    AmplitudeEquation& fit = r.fits[j] =
+        fit_amplitude_equation(history.window.times, history.window.series[j]);
     if (fit.valid() && fit.conclusive) {
       heading[j] = !std::isnan(fit.cycle_amplitude()) ? Oscillation::kApproaching
                    : fit.sustained()                  ? Oscillation::kGrowing
                                                       : Oscillation::kDecaying;
     } else {
-      const double b = previous_segment_amplitude[j];
+      const double b = history.previous_segment_amplitude[j];
       heading[j] = !std::isnan(b) && a > b ? Oscillation::kGrowing : Oscillation::kDecaying;
     }
   }
-  // The most sustained heading; among equals, the largest predicted cycle (approaching) or the
-  // largest amplitude (otherwise).
+  return heading;
+}
+
+/// The outcome of a run ended by the time limit: the system takes the most sustained heading of
+/// its observed states; among equals, the largest predicted cycle (approaching) or the largest
+/// amplitude (otherwise). The message says what decided.
+void decide_at_time_limit(SettleResult& r, const SettleHistory& history,
+                          const SettleOptions& options) {
+  const std::size_t m = options.observed.size();
+  r.message = fmt::format("not settled after {} s", options.max_time);
+  const std::vector<Oscillation> heading = headings_at_time_limit(r, history, options);
   const auto size_of = [&](std::size_t j) {
     return heading[j] == Oscillation::kApproaching ? r.fits[j].cycle_amplitude()
-                                                   : last_segment_amplitude[j];
+                                                   : history.last_segment_amplitude[j];
   };
   std::size_t holder = 0;
   for (std::size_t j = 1; j < m; ++j) {
@@ -437,7 +470,7 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
     if (a > b || (a == b && size_of(j) > size_of(holder))) holder = j;
   }
   r.holder = holder;
-  r.period = last_period[holder];
+  r.period = history.last_period[holder];
   r.outcome = heading[holder] == Oscillation::kDecayed ? Oscillation::kDecaying : heading[holder];
   r.fit = r.fits[holder];
   const std::string who = m > 1 ? fmt::format("observed state {}: ", holder + 1) : std::string();
@@ -445,17 +478,54 @@ SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const
     const double cycle = r.fit.cycle_amplitude();
     const double scale = cycle / r.amplitude[holder];
     for (double& a : r.amplitude) a *= scale;
-    r.message += fmt::format("; {}amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)",
-                             who, cycle, r.fit.sigma, r.fit.sigma_error);
+    r.message +=
+        fmt::format("; {}amplitude equation: cycle of {:.4g} (sigma = {:.3g} +- {:.2g} /s)", who,
+                    cycle, r.fit.sigma, r.fit.sigma_error);
   } else if (r.fit.valid() && r.fit.conclusive) {
-    r.message += fmt::format("; {}amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)", who,
-                             r.outcome == Oscillation::kGrowing ? "unbounded growth"
-                                                                : "decay to rest",
-                             r.fit.sigma, r.fit.sigma_error);
+    r.message +=
+        fmt::format("; {}amplitude equation: {} (sigma = {:.3g} +- {:.2g} /s)", who,
+                    r.outcome == Oscillation::kGrowing ? "unbounded growth" : "decay to rest",
+                    r.fit.sigma, r.fit.sigma_error);
   } else {
     r.message += fmt::format("; {}{} by trend", who,
                              r.outcome == Oscillation::kGrowing ? "growing" : "decaying");
   }
+}
+
+}  // namespace
+
+SettleResult run_until_settled(const vehicle::OdeSystem& system, std::span<const double> x0,
+                               const SettleOptions& options) {
+  check_settle_options(system, options);
+  SettleResult r;
+  r.final_state.assign(x0.begin(), x0.end());
+  const std::size_t m = options.observed.size();
+  auto integrator = vehicle::make_integrator(options.solver);
+  SettleHistory history(m);
+  for (double t0 = 0.0; t0 < options.max_time - 1e-12; t0 += options.segment) {
+    const double t1 = std::min(t0 + options.segment, options.max_time);
+    // The amplitude is measured over this segment and the one before (so a segment needs only
+    // N periods); the previous segment's last sample is this one's first.
+    ObservedSeries samples = std::move(history.last);
+    samples.series.resize(m);
+    if (!samples.times.empty()) {
+      samples.times.pop_back();
+      for (auto& sj : samples.series) sj.pop_back();
+    }
+    const std::size_t fresh = samples.times.size();
+    std::size_t left_bounds = m;
+    const auto res =
+        integrate_segment(*integrator, system, options, t0, t1, r, samples, left_bounds);
+    const bool out_of_bounds = left_bounds < m;
+    const bool failed = res.status == vehicle::IntegrationResult::Status::kSolverFailure;
+    if (!out_of_bounds && failed && t0 == 0.0) throw_if_failed_at_start(samples.series, res);
+    if (out_of_bounds || failed) {
+      set_diverged(r, samples.series, left_bounds, res, options);
+      return r;
+    }
+    if (judge_segment(r, history, samples, fresh, t0, options)) return r;
+  }
+  decide_at_time_limit(r, history, options);
   return r;
 }
 
