@@ -55,24 +55,26 @@ struct CaseArgs {
   bool no_png = false;
 };
 
-int do_curve(const CaseArgs& a) {
-  const scenarios::CurveFiles f = scenarios::write_creep_curve_files(a.case_file, a.out);
-  fmt::print("{}\n{}\n", f.csv, f.h5);
+// Prints the written files and draws the picture of a curve or patch case.
+template <class Files>
+int report_case_files(const CaseArgs& a, const char* plot_kind, const Files& f,
+                      const std::string& first, const std::string& second) {
+  fmt::print("{}\n{}\n", first, second);
   if (!a.no_png) {
-    run_plot_script("curves", f.csv, f.png, f.title);
+    run_plot_script(plot_kind, f.csv, f.png, f.title);
     fmt::print("{}\n", f.png);
   }
   return kExitOk;
 }
 
+int do_curve(const CaseArgs& a) {
+  const scenarios::CurveFiles f = scenarios::write_creep_curve_files(a.case_file, a.out);
+  return report_case_files(a, "curves", f, f.csv, f.h5);
+}
+
 int do_patch(const CaseArgs& a) {
   const scenarios::PatchFiles f = scenarios::write_patch_files(a.case_file, a.out);
-  fmt::print("{}\n{}\n", f.summary_json, f.csv);
-  if (!a.no_png) {
-    run_plot_script("patch", f.csv, f.png, f.title);
-    fmt::print("{}\n", f.png);
-  }
-  return kExitOk;
+  return report_case_files(a, "patch", f, f.summary_json, f.csv);
 }
 
 void add_eval_command(CLI::App* contact, VerbHandler& handler) {

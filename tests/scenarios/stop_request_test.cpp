@@ -129,7 +129,17 @@ TEST(StopRequest, a_signal_in_the_first_milliseconds_leaves_an_interrupted_file)
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
     p.signal(SIGTERM);
     EXPECT_EQ(p.wait_for(60.0), 143) << delay_ms << " ms: " << p.output();
-    expect_interrupted_output(out);
+    // The program's handler ends it, never the signal's default action: the launcher starts it
+    // with the stop signals blocked.
+    EXPECT_FALSE(p.killed_by_signal()) << delay_ms << " ms: " << p.output();
+    // Stopped once integrating: the file holds what was computed. Stopped while it still
+    // prepares (a loaded machine, a sanitizer build): no file, no temporary file (docs/OUTPUT.md).
+    if (fs::exists(out)) {
+      expect_interrupted_output(out);
+    } else {
+      for (const auto& e : fs::directory_iterator(dir))
+        EXPECT_EQ(e.path().extension(), ".h5") << delay_ms << " ms: " << e.path();
+    }
   }
 }
 

@@ -98,6 +98,7 @@ class LimitedProcess {
     int status = 0;
     waitpid(pid_, &status, 0);
     pid_ = -1;
+    killed_ = WIFSIGNALED(status);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
   /// wait(), but a program still running after `seconds` is killed (SIGKILL: 137).
@@ -113,16 +114,21 @@ class LimitedProcess {
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     pid_ = -1;
+    killed_ = WIFSIGNALED(status);
     std::string line;
     while (read_line(line)) {
     }
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
+  /// After wait() or wait_for(): the program was ended by a signal's default action (it did not
+  /// exit by itself, e.g. through a handler's _exit(128 + signal)).
+  [[nodiscard]] bool killed_by_signal() const { return killed_; }
   /// Everything read so far.
   [[nodiscard]] const std::string& output() const { return output_; }
 
  private:
   pid_t pid_ = -1;
+  bool killed_ = false;
   FILE* out_ = nullptr;
   std::string output_;
 };
