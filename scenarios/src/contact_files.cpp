@@ -1,6 +1,9 @@
 #include "ferro/scenarios/contact_files.hpp"
+#include "ferro/scenarios/number_text.hpp"
 
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include <filesystem>
 #include <memory>
@@ -40,11 +43,10 @@ fc::ModelOptions parse_model_options(const std::vector<std::string>& items) {
 void use_kij_table(EvalInput& input, const std::string& path, const std::vector<std::string>& at) {
   input.table = std::make_shared<const fc::KijTable>(fc::KijTable::read_hdf5(path));
   for (const auto& kv : parse_model_options(at)) {
-    try {
-      input.table_point[kv.first] = std::stod(kv.second);
-    } catch (const std::exception&) {
+    const double v = strict_number(kv.second);
+    if (std::isnan(v))
       throw std::invalid_argument(fmt::format("--kij-at {}: not a number", kv.first));
-    }
+    input.table_point[kv.first] = v;
   }
 }
 

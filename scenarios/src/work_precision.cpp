@@ -1,5 +1,6 @@
 // Work-precision study: see work_precision.hpp.
 #include "ferro/scenarios/work_precision.hpp"
+#include "ferro/scenarios/number_text.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -33,9 +34,8 @@ vehicle::IntegratorSettings parse_entry(const Scene& scene, const std::string& f
   std::string entry = full_entry;
   if (const auto at = entry.find('@'); at != std::string::npos) {
     const std::string step = entry.substr(at + 1);
-    char* end = nullptr;
-    const double h = std::strtod(step.c_str(), &end);
-    if (step.empty() || end == nullptr || *end != '\0' || !(h > 0.0)) {
+    const double h = strict_number(step);
+    if (!(h > 0.0)) {
       throw std::invalid_argument(fmt::format(
           "--integrators: '{}': expected method@step with a step > 0 s (e.g. arkode_erk@5e-4)",
           full_entry));
