@@ -102,7 +102,14 @@ class Bdf2 final : public Integrator {
           continue;
         }
         const std::vector<int>& rows = pattern_[col];
-        for (const int i : rows) jacobian_.set(static_cast<std::size_t>(i), col, (f1[i] - f0[i]) / inc);
+        for (const int i : rows) {
+          const double v = (f1[i] - f0[i]) / inc;
+          const auto row = static_cast<std::size_t>(i);
+          // An output row keeps its non-zeros alone (most of a filter's couplings are exact
+          // zeros: only its first section reads the model); the dynamic block keeps its pattern.
+          if (v == 0.0 && row != col && blocks_->is_output[row] != 0) continue;
+          jacobian_.set(row, col, v);
+        }
         // An output state's diagonal, always in the block D.
         if (blocks_->is_output[col] != 0 && std::find(rows.begin(), rows.end(), j) == rows.end())
           jacobian_.set(col, col, 0.0);
