@@ -157,13 +157,6 @@ class Bdf2 final : public Integrator {
     return *f;
   }
 
-  /// (I - gamma_h J)^-1 b.
-  [[nodiscard]] Vector solve(const Factor& f, const Vector& b) const {
-    Vector d(n_);
-    f.lu.solve(f.matrix, b.data(), d.data());
-    return d;
-  }
-
   [[nodiscard]] double wrms(const Vector& d, const Vector& y) const {
     double sum = 0.0;
     for (Eigen::Index i = 0; i < d.size(); ++i) {
@@ -179,7 +172,7 @@ class Bdf2 final : public Integrator {
     // converge within the iterations allowed, and a split step costs a refactorisation).
     constexpr double kRdiv = 2.0;
     const Factor& matrix = factor(gamma_h);
-    Vector f(n_), r(n_), d(n_);
+    Vector &f = f_, &r = r_, &d = d_;  // the run's work vectors
     double previous = 0.0, rho = 0.0;
     for (int it = 0; it < 8; ++it) {
       try {
@@ -189,7 +182,8 @@ class Bdf2 final : public Integrator {
       }
       ++iterations_;
       r = y - psi - gamma_h * f;
-      d = solve(matrix, -r);
+      minus_r_ = -r;
+      matrix.lu.solve(matrix.matrix, minus_r_.data(), d.data());
       if (!d.allFinite()) return false;
       y += d;
       const double norm = wrms(d, y);
@@ -231,6 +225,7 @@ class Bdf2 final : public Integrator {
   OutputBlockMatrix jacobian_;
   std::vector<Factor> factors_;
   std::size_t next_slot_ = 0;  ///< the slot a new factor takes when all hold current ones
+  Vector f_, r_, d_, minus_r_;  ///< Newton's work vectors, sized once per run
   long jacobian_age_ = 0, jacobians_ = 0, rhs_count_ = 0, splits_ = 0, iterations_ = 0;
   bool slow_ = false;
 };
@@ -283,6 +278,10 @@ void Bdf2::prepare(const OdeSystem& system) {
   blocks_ = pattern_.empty() ? nullptr : OutputBlocks::make(system, pattern_, true);
   if (blocks_ == nullptr) blocks_ = OutputBlocks::all_dynamic(n_, pattern_);
   jacobian_ = OutputBlockMatrix(blocks_);
+  f_.resize(n);
+  r_.resize(n);
+  d_.resize(n);
+  minus_r_.resize(n);
   constexpr std::size_t kKept = 6;
   factors_ = std::vector<Factor>(kKept);
   next_slot_ = 0;
