@@ -195,6 +195,92 @@ TEST(tangential_reduction_factors, scale_initial_slopes_exactly) {
   }
 }
 
+// Toumi (2016) section 4.2.4: VOCO's forces (152)-(153) with C_ijr = K_ij C_ij (156), saturated by
+// CHOPAYA (155), F_t/(mu F_n) = 1 - exp(-xi_t) on the reduced creepages of the reduced
+// coefficients. Oracle: those formulas written out here (the uniform K and the thesis's two
+// factor pairs, K23 = K22), at creepages from the linear range to full slip, spin included;
+// so K lowers the initial slope only and the Coulomb limit mu F_n stays. With a uniform K the
+// force at creepage xi equals the unreduced force at K xi.
+TEST(tangential_reduction_factors, chopaya_thesis_definition) {
+  constexpr double kExact = 1e-12;  // relative to mu F_n: the same arithmetic in another order
+  const ThesisCase s;
+  const auto model = fc::make_tangential_model("chopaya");
+  const fc::LinearCreepStiffness lin =
+      fc::linear_creep_stiffness(s.problem({}), fc::CoefficientSource::kKalkerTable);
+  const double ab = lin.a * lin.b, gab = lin.shear_modulus * ab;
+  const double limit = s.mu * s.patch.normal_force;
+  const double spin = std::sin(std::atan(0.1)) / 0.46;  // the 1/10 cone's spin [1/m]
+  const std::vector<fc::Creepage> creepages = {
+      {1e-5, 0.0, 0.0},    {0.0, -4e-4, 0.0}, {0.0, 0.0, spin},  {2e-4, 3e-4, -spin},
+      {-1e-3, 2e-3, spin}, {0.02, 0.0, 0.0},  {0.0, -0.05, 0.3}, {0.3, 0.4, 0.0}};
+  for (const fc::ReductionFactors k :
+       {fc::ReductionFactors::uniform(0.5), fc::ReductionFactors::following_k22(0.72, 0.56),
+        fc::ReductionFactors::following_k22(0.63, 0.46)}) {
+    for (const fc::Creepage& c : creepages) {
+      const double fx_lin = -gab * k.k11 * lin.c.c11 * c.longitudinal;
+      const double fy_lin =
+          -gab * k.k22 * lin.c.c22 * c.lateral - gab * std::sqrt(ab) * k.k23 * lin.c.c23 * c.spin;
+      const double xi_t = std::hypot(fx_lin, fy_lin) / limit;
+      const double factor = (1.0 - std::exp(-xi_t)) / xi_t;
+      const fc::TangentialSolution f = model->solve(s.problem(c, k));
+      EXPECT_NEAR(f.force_x / limit, factor * fx_lin / limit, kExact)
+          << k.k11 << "/" << k.k22 << " xi_x " << c.longitudinal;
+      EXPECT_NEAR(f.force_y / limit, factor * fy_lin / limit, kExact)
+          << k.k11 << "/" << k.k22 << " xi_y " << c.lateral << " phi " << c.spin;
+    }
+  }
+  // Full slip: mu F_n whatever K; uniform K: F(K, xi) = F(1, K xi).
+  const fc::ReductionFactors half = fc::ReductionFactors::uniform(0.5);
+  for (const fc::Creepage& c : creepages) {
+    const fc::TangentialSolution reduced = model->solve(s.problem(c, half));
+    const fc::TangentialSolution scaled =
+        model->solve(s.problem({0.5 * c.longitudinal, 0.5 * c.lateral, 0.5 * c.spin}));
+    EXPECT_NEAR(reduced.force_x / limit, scaled.force_x / limit, kExact);
+    EXPECT_NEAR(reduced.force_y / limit, scaled.force_y / limit, kExact);
+  }
+  const fc::TangentialSolution slip = model->solve(s.problem({0.3, 0.4, 0.0}, half));
+  EXPECT_NEAR(std::hypot(slip.force_x, slip.force_y) / limit, 1.0, 1e-9);
+}
+
+// The hunting speed sees the creep stiffness about the running state, and on the 1/10 cone that
+// state carries the spin's lateral force F_0 = G (ab)^1.5 K C23 phi_0 on every wheel. CHOPAYA's
+// tangent there, from differentiating (155) about t_0 = F_0/(mu F_n): along F_0 (lateral)
+// G ab K C22 exp(-t_0), across it (longitudinal) G ab K C11 (1 - exp(-t_0))/t_0. t_0 itself
+// scales with K, so the stiffness about the running state falls less than K: the ratio of the
+// lateral tangents at K = 0.5 and 1 is 0.5 exp(t_0(1)/2). Oracle: the closed forms; central
+// differences of step 1e-8 in creepage (xi_t steps ~1e-4), truncation ~1e-8 relative.
+TEST(tangential_reduction_factors, chopaya_tangent_about_the_spin_preload) {
+  constexpr double kTol = 1e-6;
+  const ThesisCase s;
+  const auto model = fc::make_tangential_model("chopaya");
+  const fc::LinearCreepStiffness lin =
+      fc::linear_creep_stiffness(s.problem({}), fc::CoefficientSource::kKalkerTable);
+  const double ab = lin.a * lin.b, gab = lin.shear_modulus * ab;
+  const double limit = s.mu * s.patch.normal_force;
+  const double spin = std::sin(std::atan(0.1)) / 0.46;
+  const double t0_unreduced = gab * std::sqrt(ab) * lin.c.c23 * spin / limit;
+  ASSERT_GT(t0_unreduced, 0.1);  // a preload worth the name (0.27 on this case)
+  double lateral_tangent_at_1 = 0.0;
+  for (const double k : {1.0, 0.5}) {
+    const fc::ReductionFactors r = fc::ReductionFactors::uniform(k);
+    const double t0 = k * t0_unreduced;
+    const double h = 1e-8;
+    const auto f = [&](double xi_x, double xi_y) {
+      return model->solve(s.problem({xi_x, xi_y, spin}, r));
+    };
+    const double dfx = (f(h, 0.0).force_x - f(-h, 0.0).force_x) / (2.0 * h);
+    const double dfy = (f(0.0, h).force_y - f(0.0, -h).force_y) / (2.0 * h);
+    const double secant = (1.0 - std::exp(-t0)) / t0;
+    const double tangent = std::exp(-t0);
+    EXPECT_NEAR(dfx / (-gab * k * lin.c.c11 * secant), 1.0, kTol) << "K " << k;
+    EXPECT_NEAR(dfy / (-gab * k * lin.c.c22 * tangent), 1.0, kTol) << "K " << k;
+    if (k == 1.0) lateral_tangent_at_1 = dfy;
+    if (k == 0.5) {
+      EXPECT_NEAR(dfy / lateral_tangent_at_1, 0.5 * std::exp(t0_unreduced / 2.0), kTol);
+    }
+  }
+}
+
 // Kalker's simplified theory with parabolic pressure, pure longitudinal creepage: on a strip of
 // half-length l the traction bound is mu p = C (l^2 - x^2) with C = 2 mu F_n/(pi a^3 b) the same
 // for every strip, the adhesion traction is s (l - x) with s = xi_x / L1, and slip starts at
