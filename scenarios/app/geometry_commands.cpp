@@ -99,8 +99,8 @@ void add_geometry_commands(CLI::App& app, VerbHandler& handler) {
   add_hidden_alias(geo, "--out-dir", pa->out_dir);
   geo->add_flag("--no-plot", pa->no_plot)->group("");
   CLI::App* search = add_search_command(geo, handler);
-  geo->callback([&handler, search, pair_cmd, pa] {
-    if (search->parsed() || pair_cmd->parsed()) return;
+  geo->callback([&handler, search, cmd = pair_cmd, pa = pa] {
+    if (search->parsed() || cmd->parsed()) return;
     if (pa->yaml.empty()) {
       throw CLI::ValidationError("geometry", "give the 'pair' or the 'search' subcommand");
     }
