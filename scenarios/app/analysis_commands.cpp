@@ -189,10 +189,10 @@ int do_sweep(const SweepArgs& a) {
 template <class Args>
 void add_common(CLI::App* c, Args& a, const char* input, const char* input_help,
                 const char* output_default) {
-  c->add_option(input, a.input, input_help)->required();
   add_output_option(c, a.output, std::string("HDF5 output (default: ") + output_default + ")");
   add_no_plots_flag(c, a.no_plots);
   add_overwrite_flag(c, a.overwrite);
+  c->add_option(input, a.input, input_help)->required();  // its checks after the options'
 }
 
 }  // namespace
@@ -203,10 +203,10 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler) {
       &app, handler, do_assess, "assess",
       "Assessment of a run as EN 14363 / UIC 518 / EN 12299 define it: running safety, track "
       "loading, stability, ride; table, HDF5 and plots along the track");
+  add_parameters(as, an::parameters(d->request));  // checked before the run file's existence
   add_common(as, *d, "run", "HDF5 output of `ferrodyn run` (vehicle scene)",
              "<run>_assessment.h5");
   as->get_option("run")->check(CLI::ExistingFile);
-  add_parameters(as, an::parameters(d->request));
   as->add_flag("--all", d->all_rows, "Print every section's row (default: the worst per item)");
 
   auto* cs = app.add_subcommand("critical-speed", "Critical speed: ramp, bifurcation, eigen");
