@@ -20,8 +20,11 @@
 // points; converged when the weighted RMS norm of the correction (weights 1 / (rtol |y_i| +
 // atol_i), atol_i = atol times the system's tolerance scale of state i) falls below 0.1 (1 - rho)
 // / rho given the observed contraction rho, or below 0.01 when the corrected iterate's residual
-// is already within the tolerance. The system's output states stay out of both tests: linear with
-// a constant Jacobian, Newton solves them exactly for the iterate of the other states. A Newton that diverges (a correction more than twice the
+// is already within the tolerance. The system's output states stay out of both tests: linear
+// with a constant Jacobian, Newton solves them exactly for the iterate of the other states. The
+// Newton matrix is factored by a sparse LU on the system's Jacobian pattern (output_blocks.hpp),
+// its fill-reducing column ordering found on the first factorisation of each kept factor slot
+// and reused for the run. A Newton that diverges (a correction more than twice the
 // previous one) or takes more than 8 iterations is restarted with a fresh Jacobian, then the
 // step is taken as two implicit-Euler halves (recursively, down to h / 2^20). Outputs between two
 // steps come from the quadratic
@@ -99,7 +102,14 @@ class Bdf2 final : public Integrator {
           continue;
         }
         const std::vector<int>& rows = pattern_[col];
-        for (const int i : rows) jacobian_.set(static_cast<std::size_t>(i), col, (f1[i] - f0[i]) / inc);
+        for (const int i : rows) {
+          const double v = (f1[i] - f0[i]) / inc;
+          const auto row = static_cast<std::size_t>(i);
+          // An output row keeps its non-zeros alone (most of a filter's couplings are exact
+          // zeros: only its first section reads the model); the dynamic block keeps its pattern.
+          if (v == 0.0 && row != col && blocks_->is_output[row] != 0) continue;
+          jacobian_.set(row, col, v);
+        }
         // An output state's diagonal, always in the block D.
         if (blocks_->is_output[col] != 0 && std::find(rows.begin(), rows.end(), j) == rows.end())
           jacobian_.set(col, col, 0.0);
@@ -108,7 +118,7 @@ class Bdf2 final : public Integrator {
     jacobian_.order_by_column();  // the groups set the columns out of order
     ++jacobians_;
     jacobian_age_ = 0;
-    factors_.clear();  // the Newton matrices must be refactored
+    for (Factor& f : factors_) f.current = false;  // the Newton matrices must be refactored
   }
 
   /// The factored Newton matrix I - gamma_h J of the current Jacobian, in the output-block form
@@ -116,32 +126,35 @@ class Bdf2 final : public Integrator {
   /// the output states from theirs.
   struct Factor {
     double gamma_h = 0.0;
+    bool current = false;  ///< factored from the current Jacobian
     OutputBlockMatrix matrix;
-    OutputBlockLu lu;
+    OutputBlockLu lu;  ///< keeps its sparse ordering from one factorisation to the next
   };
 
   /// A step alternates between a few values of gamma_h (BDF2's 2h/3, the implicit-Euler halves
-  /// of a split step): each is factored once per Jacobian and kept.
+  /// of a split step): each is factored once per Jacobian and kept, in a fixed set of slots
+  /// reused for the next Jacobians (the oldest factor gives its slot to a new one).
   const Factor& factor(double gamma_h) {
-    constexpr std::size_t kKept = 6;
     for (const Factor& f : factors_) {
-      if (f.gamma_h == gamma_h) return f;
+      if (f.current && f.gamma_h == gamma_h) return f;
     }
-    if (factors_.size() >= kKept) factors_.erase(factors_.begin());
-    Factor f;
-    f.gamma_h = gamma_h;
-    f.matrix = jacobian_;
-    f.matrix.scale_add_identity(-gamma_h);
-    f.lu.compute(f.matrix);  // a singular matrix shows as a non-finite correction
-    factors_.push_back(std::move(f));
-    return factors_.back();
-  }
-
-  /// (I - gamma_h J)^-1 b.
-  [[nodiscard]] Vector solve(const Factor& f, const Vector& b) const {
-    Vector d(n_);
-    f.lu.solve(f.matrix, b.data(), d.data());
-    return d;
+    Factor* f = nullptr;
+    for (Factor& g : factors_) {
+      if (!g.current) {
+        f = &g;
+        break;
+      }
+    }
+    if (f == nullptr) {
+      f = &factors_[next_slot_];
+      next_slot_ = (next_slot_ + 1) % factors_.size();
+    }
+    f->gamma_h = gamma_h;
+    f->current = true;
+    f->matrix = jacobian_;
+    f->matrix.scale_add_identity(-gamma_h);
+    f->lu.compute(f->matrix);  // a singular matrix shows as a non-finite correction
+    return *f;
   }
 
   [[nodiscard]] double wrms(const Vector& d, const Vector& y) const {
@@ -159,7 +172,7 @@ class Bdf2 final : public Integrator {
     // converge within the iterations allowed, and a split step costs a refactorisation).
     constexpr double kRdiv = 2.0;
     const Factor& matrix = factor(gamma_h);
-    Vector f(n_), r(n_), d(n_);
+    Vector &f = f_, &r = r_, &d = d_;  // the run's work vectors
     double previous = 0.0, rho = 0.0;
     for (int it = 0; it < 8; ++it) {
       try {
@@ -169,7 +182,8 @@ class Bdf2 final : public Integrator {
       }
       ++iterations_;
       r = y - psi - gamma_h * f;
-      d = solve(matrix, -r);
+      minus_r_ = -r;
+      matrix.lu.solve(matrix.matrix, minus_r_.data(), d.data());
       if (!d.allFinite()) return false;
       y += d;
       const double norm = wrms(d, y);
@@ -210,6 +224,8 @@ class Bdf2 final : public Integrator {
   std::shared_ptr<const OutputBlocks> blocks_;
   OutputBlockMatrix jacobian_;
   std::vector<Factor> factors_;
+  std::size_t next_slot_ = 0;  ///< the slot a new factor takes when all hold current ones
+  Vector f_, r_, d_, minus_r_;  ///< Newton's work vectors, sized once per run
   long jacobian_age_ = 0, jacobians_ = 0, rhs_count_ = 0, splits_ = 0, iterations_ = 0;
   bool slow_ = false;
 };
@@ -257,10 +273,18 @@ void Bdf2::prepare(const OdeSystem& system) {
   for (const std::size_t i : outputs)
     atol_[static_cast<Eigen::Index>(i)] = std::numeric_limits<double>::infinity();
   tested_ = std::max<std::size_t>(1, n_ - outputs.size());
-  blocks_ = pattern_.empty() ? nullptr : OutputBlocks::make(system, pattern_);
-  if (blocks_ == nullptr) blocks_ = OutputBlocks::all_dynamic(n_);
+  // The dynamic block by a sparse LU when the pattern is known (a vehicle's bodies couple to
+  // their neighbours only), else dense.
+  blocks_ = pattern_.empty() ? nullptr : OutputBlocks::make(system, pattern_, true);
+  if (blocks_ == nullptr) blocks_ = OutputBlocks::all_dynamic(n_, pattern_);
   jacobian_ = OutputBlockMatrix(blocks_);
-  factors_.clear();
+  f_.resize(n);
+  r_.resize(n);
+  d_.resize(n);
+  minus_r_.resize(n);
+  constexpr std::size_t kKept = 6;
+  factors_ = std::vector<Factor>(kKept);
+  next_slot_ = 0;
   rhs_count_ = jacobians_ = splits_ = iterations_ = 0;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 
 namespace ferro::vehicle::detail {
@@ -22,6 +23,21 @@ std::shared_ptr<OutputBlocks> partition(std::vector<char> is_output) {
 
 std::size_t at(Eigen::Index i) { return static_cast<std::size_t>(i); }
 
+/// A's non-zeros in dynamic slots: the pattern's dynamic rows of each dynamic column, and the
+/// diagonal.
+void set_dynamic_pattern(OutputBlocks& b, const std::vector<std::vector<int>>& pattern) {
+  b.dynamic_pattern.assign(b.dynamic.size(), {});
+  for (std::size_t c = 0; c < b.dynamic.size(); ++c) {
+    auto& rows = b.dynamic_pattern[c];
+    rows.push_back(static_cast<Eigen::Index>(c));
+    for (const int i : pattern[at(b.dynamic[c])]) {
+      if (b.is_output[static_cast<std::size_t>(i)] == 0) rows.push_back(b.slot[static_cast<std::size_t>(i)]);
+    }
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  }
+}
+
 }  // namespace
 
 bool pivots_ok(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
@@ -31,7 +47,7 @@ bool pivots_ok(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
 }
 
 std::shared_ptr<const OutputBlocks> OutputBlocks::make(
-    const OdeSystem& system, const std::vector<std::vector<int>>& pattern) {
+    const OdeSystem& system, const std::vector<std::vector<int>>& pattern, bool sparse) {
   const auto outputs = system.output_states();
   if (outputs.empty()) return nullptr;
   std::vector<char> is_output(system.size(), 0);
@@ -44,11 +60,16 @@ std::shared_ptr<const OutputBlocks> OutputBlocks::make(
       }
     }
   }
-  return partition(std::move(is_output));
+  auto b = partition(std::move(is_output));
+  if (sparse && pattern.size() == system.size()) set_dynamic_pattern(*b, pattern);
+  return b;
 }
 
-std::shared_ptr<const OutputBlocks> OutputBlocks::all_dynamic(std::size_t n) {
-  return partition(std::vector<char>(n, 0));
+std::shared_ptr<const OutputBlocks> OutputBlocks::all_dynamic(
+    std::size_t n, const std::vector<std::vector<int>>& pattern) {
+  auto b = partition(std::vector<char>(n, 0));
+  if (pattern.size() == n) set_dynamic_pattern(*b, pattern);
+  return b;
 }
 
 OutputBlockMatrix::OutputBlockMatrix(std::shared_ptr<const OutputBlocks> b) : blocks(std::move(b)) {
@@ -87,8 +108,38 @@ void OutputBlockMatrix::scale_add_identity(double g) {
 }
 
 bool OutputBlockLu::compute(const OutputBlockMatrix& m) {
-  dynamic_.compute(m.a);
-  if (!pivots_ok(dynamic_)) return false;
+  const auto& pattern = m.blocks->dynamic_pattern;
+  if (pattern.empty()) {
+    dynamic_.compute(m.a);
+    if (!pivots_ok(dynamic_)) return false;
+  } else {
+    const auto nd = static_cast<Eigen::Index>(pattern.size());
+    if (sparse_ == nullptr) {
+      std::vector<Eigen::Triplet<double, int>> entries;
+      for (Eigen::Index c = 0; c < nd; ++c) {
+        for (const Eigen::Index r : pattern[at(c)])
+          entries.emplace_back(static_cast<int>(r), static_cast<int>(c), 1.0);
+      }
+      sparse_matrix_.resize(nd, nd);
+      sparse_matrix_.setFromTriplets(entries.begin(), entries.end());
+      sparse_matrix_.makeCompressed();
+      sparse_ = std::make_unique<Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>>>();
+    }
+    // The values of A at its non-zeros (compressed storage: rows increasing per column).
+    double* values = sparse_matrix_.valuePtr();
+    const int* inner = sparse_matrix_.innerIndexPtr();
+    const int* outer = sparse_matrix_.outerIndexPtr();
+    for (Eigen::Index c = 0; c < nd; ++c) {
+      for (int k = outer[c]; k < outer[c + 1]; ++k) values[k] = m.a(inner[k], c);
+    }
+    if (!sparse_analysed_) {
+      sparse_->analyzePattern(sparse_matrix_);
+      sparse_analysed_ = true;
+    }
+    sparse_->factorize(sparse_matrix_);
+    sparse_ok_ = sparse_->info() == Eigen::Success;
+    if (!sparse_ok_) return false;
+  }
   // The groups of output slots D's entries connect (union-find), in slot order.
   const std::size_t no = m.blocks->output.size();
   std::vector<Eigen::Index> parent(no);
@@ -127,20 +178,26 @@ bool OutputBlockLu::compute(const OutputBlockMatrix& m) {
 
 void OutputBlockLu::solve(const OutputBlockMatrix& m, const double* b, double* x) const {
   const OutputBlocks& st = *m.blocks;
-  Eigen::VectorXd bd(static_cast<Eigen::Index>(st.dynamic.size()));
-  for (std::size_t i = 0; i < st.dynamic.size(); ++i) bd[static_cast<Eigen::Index>(i)] = b[st.dynamic[i]];
-  const Eigen::VectorXd xd = dynamic_.solve(bd);
-  for (std::size_t i = 0; i < st.dynamic.size(); ++i) x[st.dynamic[i]] = xd[static_cast<Eigen::Index>(i)];
+  bd_.resize(static_cast<Eigen::Index>(st.dynamic.size()));
+  for (std::size_t i = 0; i < st.dynamic.size(); ++i) bd_[static_cast<Eigen::Index>(i)] = b[st.dynamic[i]];
+  if (st.dynamic_pattern.empty()) {
+    xd_.noalias() = dynamic_.solve(bd_);
+  } else if (sparse_ok_) {
+    xd_ = sparse_->solve(bd_);
+  } else {  // a singular matrix: a non-finite solution
+    xd_.setConstant(bd_.size(), std::numeric_limits<double>::quiet_NaN());
+  }
+  for (std::size_t i = 0; i < st.dynamic.size(); ++i) x[st.dynamic[i]] = xd_[static_cast<Eigen::Index>(i)];
   if (st.output.empty()) return;
   // b_o - C x_d, the entries subtracted one by one in their order (columns increasing).
-  Eigen::VectorXd bo(static_cast<Eigen::Index>(st.output.size()));
-  for (std::size_t i = 0; i < st.output.size(); ++i) bo[static_cast<Eigen::Index>(i)] = b[st.output[i]];
-  for (const auto& e : m.c) bo[e.row] -= e.value * xd[e.col];
+  bo_.resize(static_cast<Eigen::Index>(st.output.size()));
+  for (std::size_t i = 0; i < st.output.size(); ++i) bo_[static_cast<Eigen::Index>(i)] = b[st.output[i]];
+  for (const auto& e : m.c) bo_[e.row] -= e.value * xd_[e.col];
   for (const auto& g : groups_) {
-    Eigen::VectorXd bg(static_cast<Eigen::Index>(g.slots.size()));
-    for (std::size_t i = 0; i < g.slots.size(); ++i) bg[static_cast<Eigen::Index>(i)] = bo[g.slots[i]];
-    const Eigen::VectorXd xg = g.lu.solve(bg);
-    for (std::size_t i = 0; i < g.slots.size(); ++i) x[st.output[at(g.slots[i])]] = xg[static_cast<Eigen::Index>(i)];
+    bg_.resize(static_cast<Eigen::Index>(g.slots.size()));
+    for (std::size_t i = 0; i < g.slots.size(); ++i) bg_[static_cast<Eigen::Index>(i)] = bo_[g.slots[i]];
+    xg_.noalias() = g.lu.solve(bg_);
+    for (std::size_t i = 0; i < g.slots.size(); ++i) x[st.output[at(g.slots[i])]] = xg_[static_cast<Eigen::Index>(i)];
   }
 }
 
