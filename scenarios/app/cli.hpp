@@ -8,14 +8,13 @@
 
 #include <functional>
 #include <memory>
-#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI {
 class App;
 class Option;
-class Validator;
 }
 
 namespace ferro::scenarios {
@@ -45,36 +44,35 @@ void add_overwrite_flag(CLI::App* cmd, bool& target);
 
 // Strict option values. strict_values() gives every option of `app` and its subcommands the
 // checks that hold for all: a number option takes one whole finite number (no "nan", "inf",
-// "", "1x"), a text option a non-empty text. Options whose values have a range add it with
-// number_in() / count_in(); the message names the option, the allowed range and the value.
+// "", "1x"), a text option a non-empty text. A parameter's range (parameters.hpp) is checked by
+// its option (add_parameters); the message names the option, the allowed range and the value.
 void strict_values(CLI::App& app);
-/// A finite number within lo..hi (an infinite end: no bound on that side), ends open or closed.
-[[nodiscard]] CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open,
-                                       const std::string& unit);
-/// A whole number in lo..hi.
-[[nodiscard]] CLI::Validator count_in(long lo, long hi);
 
-/// Most worker threads a verb takes (-j).
-inline constexpr long kMaxJobs = 1024;
 /// Exit status of the plotting scripts when python3-matplotlib or python3-h5py is missing.
 inline constexpr int kPlotsNeedPython = 3;
 
 /// One option per parameter (scenarios/parameters.hpp): --key ('-' for '_'; -j for jobs), its
-/// help with the unit, the default shown when it has one; a switch on by default is --no-key.
+/// help with the unit, the default shown when it has one, the check of its range, its former
+/// key as a hidden option; a switch on by default is --no-key.
 void add_parameters(CLI::App* cmd, const std::vector<scenarios::Parameter>& parameters);
-/// A hidden alias of an option that takes a value.
-template <class T>
-void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target);
+/// A hidden alias (a former spelling) of an option that takes a text.
+void add_hidden_alias(CLI::App* cmd, const std::string& old_name, std::string& target);
 /// Once `cmd` is parsed, `handler` is set to run `verb(*args)`.
 template <class Args, class Verb>
 void on_parsed(CLI::App* cmd, VerbHandler& handler, std::shared_ptr<Args> args, Verb verb);
+/// A verb: the subcommand `name` of `parent` and its arguments (default Args, for the caller to
+/// bind to options); once it is parsed, `handler` runs `verb(*args)`.
+template <class Args, class Verb>
+std::pair<CLI::App*, std::shared_ptr<Args>> add_verb(CLI::App* parent, VerbHandler& handler,
+                                                     Verb verb, const std::string& name,
+                                                     const std::string& help);
 
 /// Parses argv, runs the chosen verb, returns the process exit code.
 int run_main(int argc, char** argv);
 
 // Verb groups. Each adds its subcommands to `app` and, from the subcommand's callback, sets
 // `handler` to the work to do once parsing has finished.
-void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, eig, plot, validate
+void add_scene_commands(CLI::App& app, VerbHandler& handler);    // run, plot, validate
 void add_contact_commands(CLI::App& app, VerbHandler& handler);  // contact eval, curve, patch
 void add_geometry_commands(CLI::App& app, VerbHandler& handler); // geometry search, pair
 /// After add_contact_commands: contact mim (and the hidden top-level mim).
@@ -85,7 +83,7 @@ void add_mim_table_commands(CLI::App& app, VerbHandler& handler);
 void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler);
 void add_bench_commands(CLI::App& app, VerbHandler& handler);    // bench contact
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler);   // fe-kij
-/// assess, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
+/// assess, eig, critical-speed {ramp, bifurcation, eigen}, kij-study, sweep
 void add_analysis_commands(CLI::App& app, VerbHandler& handler);
 
 }  // namespace ferro::cli
@@ -93,12 +91,17 @@ void add_analysis_commands(CLI::App& app, VerbHandler& handler);
 #include <CLI/CLI.hpp>
 
 namespace ferro::cli {
-template <class T>
-void add_hidden_alias(CLI::App* cmd, const std::string& old_name, T& target) {
-  cmd->add_option(old_name, target)->group("");
-}
 template <class Args, class Verb>
 void on_parsed(CLI::App* cmd, VerbHandler& handler, std::shared_ptr<Args> args, Verb verb) {
   cmd->callback([&handler, args, verb] { handler = [args, verb] { return verb(*args); }; });
+}
+template <class Args, class Verb>
+std::pair<CLI::App*, std::shared_ptr<Args>> add_verb(CLI::App* parent, VerbHandler& handler,
+                                                     Verb verb, const std::string& name,
+                                                     const std::string& help) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = parent->add_subcommand(name, help);
+  on_parsed(cmd, handler, args, verb);
+  return {cmd, args};
 }
 }  // namespace ferro::cli

@@ -1,6 +1,5 @@
 // Flags shared by every verb and the strict reading of every option value (see cli.hpp).
 #include <CLI/CLI.hpp>
-#include <limits>
 
 #include "cli.hpp"
 #include "ferro/scenarios/number_text.hpp"
@@ -8,6 +7,10 @@
 #include "ferro/scenarios/parameters.hpp"
 
 namespace ferro::cli {
+
+void add_hidden_alias(CLI::App* cmd, const std::string& old_name, std::string& target) {
+  cmd->add_option(old_name, target)->group("");
+}
 
 CLI::Option* add_output_option(CLI::App* cmd, std::string& target, const std::string& help,
                                const std::vector<std::string>& old_names) {
@@ -25,22 +28,35 @@ void add_overwrite_flag(CLI::App* cmd, bool& target) {
   cmd->add_flag("--overwrite", target, "Replace output files that exist already");
 }
 
-CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open,
-                         const std::string& unit) {
-  const scenarios::NumberRange range{lo, hi, lo_open, hi_open, unit};
+namespace {
+template <class Range>
+CLI::Validator values_in(const Range& range) {
   return CLI::Validator([range](std::string& text) { return range.problem(text); }, range.text());
 }
 
-CLI::Validator count_in(long lo, long hi) {
-  const scenarios::CountRange range{lo, hi};
-  return CLI::Validator([range](std::string& text) { return range.problem(text); }, range.text());
+// The parameter's former key as a hidden option setting its value times to_si; given together
+// with the parameter's own option it is bad input.
+void add_former_key(CLI::App* cmd, const scenarios::Parameter& p, CLI::Option* option) {
+  double* const* target = std::get_if<double*>(&p.target);
+  if (target == nullptr) throw std::logic_error("former key of a parameter that is not a number");
+  const std::string name = scenarios::spelled(p.former->key, scenarios::Spelling::option);
+  cmd->add_option_function<double>(
+         name,
+         [value = *target, to_si = p.former->to_si, option, name](const double& v) {
+           if (option->count() > 0)
+             throw CLI::ValidationError(option->get_name(), "given twice (also as " + name + ")");
+           *value = v * to_si;
+         })
+      ->group("");
 }
+}  // namespace
 
 void strict_values(CLI::App& app) {
-  const double inf = std::numeric_limits<double>::infinity();
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();
-    if (type == "FLOAT") option->check(number_in(-inf, inf, true, true, ""));
+    if (type == "FLOAT")
+      option->check(values_in(scenarios::NumberRange{-scenarios::kNoBound, scenarios::kNoBound,
+                                                      true, true, ""}));
     if (type == "TEXT") {
       option->check(CLI::Validator(
           [](std::string& text) {
@@ -80,6 +96,9 @@ void add_parameters(CLI::App* cmd, const std::vector<scenarios::Parameter>& para
         std::holds_alternative<std::vector<std::string>*>(p.target))
       o->delimiter(',');
     if (p.has_default) o->capture_default_str();
+    if (p.range) o->check(values_in(*p.range));
+    if (p.count) o->check(values_in(*p.count));
+    if (p.former) add_former_key(cmd, p, o);
   }
 }
 

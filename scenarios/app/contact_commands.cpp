@@ -12,40 +12,19 @@
 #include <vector>
 
 #include "cli.hpp"
-#include "ferro/contact/tangential/tangential_model.hpp"
-#include "ferro/scenarios/contact_eval.hpp"
 #include "ferro/scenarios/contact_files.hpp"
-#include "ferro/scenarios/overrides.hpp"
 #include "plotting.hpp"
 
 namespace ferro::cli {
 namespace {
 
-namespace fc = ferro::contact;
-
-using scenarios::EvalInput;
-
 struct EvalArgs {
-  EvalInput in;
-  std::vector<std::string> options, kij_at;
-  std::string kij_table;
+  scenarios::EvalRequest request;
   bool batch = false;
 };
 
 int do_eval(const EvalArgs& a) {
-  const fc::ModelOptions options = scenarios::parse_model_options(a.options);
-  EvalInput input = a.in;
-  if (!a.kij_table.empty()) scenarios::use_kij_table(input, a.kij_table, a.kij_at);
-  const fc::CoefficientSource source = fc::coefficient_source_from_name(
-      fc::option_string(options, "coefficients", "kalker_table"));
-  if (a.batch) {
-    scenarios::evaluate_contact_batch(std::cin, "--batch: stdin", input, options, source,
-                                      std::cout);
-    return kExitOk;
-  }
-  const auto model = fc::make_tangential_model(
-      input.model, scenarios::with_environment_options(input.model, options));
-  fmt::print("{}\n", scenarios::eval_json(input, scenarios::evaluate_contact(input, *model, source)));
+  scenarios::run_contact_eval(a.request, a.batch, std::cin, "--batch: stdin", std::cout);
   return kExitOk;
 }
 
@@ -61,7 +40,7 @@ int report_case_files(const CaseArgs& a, const char* plot_kind, const Files& f,
                       const std::string& first, const std::string& second) {
   fmt::print("{}\n{}\n", first, second);
   if (!a.no_png) {
-    run_plot_script(plot_kind, f.csv, f.png, f.title);
+    draw("plot_contact.py", {plot_kind, f.csv, f.png, f.title}, "the CSV " + f.csv + " is written");
     fmt::print("{}\n", f.png);
   }
   return kExitOk;
@@ -78,24 +57,21 @@ int do_patch(const CaseArgs& a) {
 }
 
 void add_eval_command(CLI::App* contact, VerbHandler& handler) {
-  auto a = std::make_shared<EvalArgs>();
-  CLI::App* eval = contact->add_subcommand(
-      "eval",
+  auto [eval, a] = add_verb<EvalArgs>(
+      contact, handler, do_eval, "eval",
       "Solve a Hertzian case; prints forces on the wheel (from the rail) as JSON, SI units");
-  add_parameters(eval, scenarios::parameters(a->in));
-  add_hidden_alias(eval, "--phi", a->in.phi);
-  eval->add_option("--option", a->options,
+  add_parameters(eval, scenarios::parameters(a->request.input));
+  eval->add_option("--option", a->request.options,
                    "model option key=value (repeatable), e.g. mx=40, "
                    "flexibility=weighted, coefficients=voco_fit, k_a=0.7");
-  eval->add_option("--kij-table", a->kij_table,
+  eval->add_option("--kij-table", a->request.kij_table,
                    "HDF5 K_ij table (docs/KIJ_TABLE.md); overrides --kXX");
-  eval->add_option("--kij-at", a->kij_at,
+  eval->add_option("--kij-at", a->request.kij_at,
                    "table coordinate axis=value (repeatable); normal_force and peak_pressure "
                    "default to the patch's");
   eval->add_flag("--batch", a->batch,
                  "read cases as CSV (header = option names with '_') on stdin, "
                  "write one CSV row per case");
-  on_parsed(eval, handler, a, do_eval);
 }
 
 }  // namespace
@@ -106,22 +82,20 @@ void add_contact_commands(CLI::App& app, VerbHandler& handler) {
   contact->require_subcommand(1);
   add_eval_command(contact, handler);
 
-  auto c = std::make_shared<CaseArgs>();
-  CLI::App* curve = contact->add_subcommand(
-      "curve", "Creep curves of every model of a case: CSV, HDF5 and one PNG overlay");
+  auto [curve, c] = add_verb<CaseArgs>(
+      contact, handler, do_curve, "curve",
+      "Creep curves of every model of a case: CSV, HDF5 and one PNG overlay");
   curve->add_option("case", c->case_file, "contact case YAML (scenarios/cases/contact/)")
       ->required();
   add_output_option(curve, c->out, "output folder", {"--out"})->capture_default_str();
   add_no_plots_flag(curve, c->no_png, {"--no-png"});
-  on_parsed(curve, handler, c, do_curve);
 
-  auto p = std::make_shared<CaseArgs>();
-  CLI::App* patch = contact->add_subcommand(
-      "patch", "Patch picture of a case: pressure, traction vectors, adhesion/slip (CSV + PNG)");
+  auto [patch, p] = add_verb<CaseArgs>(
+      contact, handler, do_patch, "patch",
+      "Patch picture of a case: pressure, traction vectors, adhesion/slip (CSV + PNG)");
   patch->add_option("case", p->case_file, "contact case YAML")->required();
   add_output_option(patch, p->out, "output folder", {"--out"})->capture_default_str();
   add_no_plots_flag(patch, p->no_png, {"--no-png"});
-  on_parsed(patch, handler, p, do_patch);
 }
 
 }  // namespace ferro::cli

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -24,35 +23,27 @@ struct FeKijArgs {
 };
 
 int run_fe_kij(const FeKijArgs& a) {
-  const std::string& config_path = a.config;
-  scenarios::FeKijStudy study(config_path, a.restart);
-  scenarios::OutputSet outputs({a.overwrite, {config_path}});
+  scenarios::FeKijStudy study(a.config, a.restart);
+  scenarios::OutputSet outputs({a.overwrite, {a.config}});
   scenarios::OutputFile* table_file = &scenarios::claim_fe_kij_table(study, outputs);
-  fmt::print("fe-kij: {} configurations ({} already done in {})\n", study.points(),
-             study.resumed(), study.work_dir());
-  Progress progress(static_cast<double>(study.points()), stderr);
+  fmt::print("{}", scenarios::fe_kij_start_text(study));
+  auto progress = stderr_meter(static_cast<double>(study.points()));
   scenarios::FeKijRunOptions options;
   options.should_stop = [] { return InterruptGuard::stop_now(); };
   options.table_path = table_file->write_path();
   options.progress = [&](std::size_t done, std::size_t) {
-    progress.update(static_cast<double>(done));
+    show_progress(progress.update(static_cast<double>(done)));
   };
   const scenarios::FeKijReport r = study.run(options);
-  progress.finish();
+  show_progress(progress.finish());
   if (r.interrupted) {
-    fmt::print(stderr, "fe-kij: interrupted; {} finished points kept in {} (run again to resume)\n",
-               r.finished, study.work_dir());
+    fmt::print(stderr, "{}", scenarios::fe_kij_end_text(study, r));
     return 128 + InterruptGuard::signal_received();
   }
   table_file->commit();
-  fmt::print("fe-kij: wrote {} ({} configurations; this run {:.2f} s CPU, {:.1f} s wall)\n",
-             study.output(), study.points(), r.cpu_seconds, r.wall_seconds);
+  fmt::print("{}", scenarios::fe_kij_end_text(study, r));
   if (study.wants_curve_plots()) {
-    const int rc = run_python_tool("plot_kij_curves.py", {study.work_dir()});
-    if (rc != 0) {
-      fmt::print(stderr, "fe-kij: plotting failed (exit {}); the table and curve CSVs are written\n", rc);
-      return kExitRunFailure;
-    }
+    draw("plot_kij_curves.py", {study.work_dir()}, "the table and curve CSVs are written");
     fmt::print("fe-kij: creep and derivative curves plotted in {}\n", study.work_dir());
   }
   return kExitOk;
@@ -61,16 +52,14 @@ int run_fe_kij(const FeKijArgs& a) {
 }  // namespace
 
 void add_fe_kij_commands(CLI::App& app, VerbHandler& handler) {
-  auto a = std::make_shared<FeKijArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "fe-kij",
+  auto [cmd, a] = add_verb<FeKijArgs>(
+      &app, handler, run_fe_kij, "fe-kij",
       "K_ij reduction-factor table (layout docs/KIJ_TABLE.md v2) over wheel load, "
       "interfacial-layer and rail yield-stress axes, with creep and derivative curves; resumes "
       "an interrupted run");
   cmd->add_option("config", a->config, "CONFIG.yaml")->required();
   cmd->add_flag("--restart", a->restart, "discard the finished points of a previous run");
   add_overwrite_flag(cmd, a->overwrite);
-  on_parsed(cmd, handler, a, run_fe_kij);
 }
 
 }  // namespace ferro::cli

@@ -1,6 +1,7 @@
 #include "plotting.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -79,9 +80,8 @@ int run_python_tool(const std::string& script, const std::vector<std::string>& a
 }
 
 int plot_file(const std::string& mode, const std::string& h5,
-              const std::vector<std::string>& signals, std::string dir,
+              const std::vector<std::string>& signals, const std::string& dir,
               const std::string& format) {
-  if (dir.empty()) dir = scenarios::sibling(h5, "_plots");
   std::vector<std::string> args = {mode, h5, "--out", dir, "--format", format};
   if (!signals.empty()) {
     args.emplace_back("--signals");
@@ -112,14 +112,11 @@ int plot_after_report(const std::string& mode, const std::string& h5,
   return code;
 }
 
-void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
-                     const std::string& title) {
-  if (run_python_tool("plot_contact.py", {mode, csv, png, title}) != 0) {
-    throw std::runtime_error(fmt::format(
-        "could not draw {} ({} with matplotlib needed; set FERRO_PYTHON to choose another); the "
-        "CSV {} is written",
-        png, python_program(), csv));
-  }
+void draw(const std::string& script, const std::vector<std::string>& args,
+          const std::string& written) {
+  if (run_python_tool(script, args) == 0) return;
+  throw std::runtime_error(fmt::format("plotting failed ({} tools/{} {}); {}", python_program(),
+                                       script, fmt::join(args, " "), written));
 }
 
 }  // namespace ferro::cli

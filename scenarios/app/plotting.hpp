@@ -31,12 +31,18 @@ int run_program(const std::vector<std::string>& argv,
 int run_python_tool(const std::string& script, const std::vector<std::string>& args,
                     const std::function<bool()>& should_stop = {});
 
+/// Draws a verb's pictures with run_python_tool. Throws std::runtime_error ("plotting failed
+/// (<python> tools/<script> <args>); <written>") unless the script succeeds; `written` says
+/// which of the verb's data files are complete.
+void draw(const std::string& script, const std::vector<std::string>& args,
+          const std::string& written);
+
 
 /// Draws the pictures of a ferrodyn HDF5 file with ferroplot.py (mode timeseries, eigen or
-/// auto; `signals` empty: the script's choice) into `dir` (empty: <stem>_plots beside the file);
-/// returns the script's exit status, kProgramStopped when a stop request ended it.
+/// auto; `signals` empty: the script's choice) into the folder `dir`; returns the script's exit
+/// status, kProgramStopped when a stop request ended it.
 int plot_file(const std::string& mode, const std::string& h5,
-              const std::vector<std::string>& signals = {}, std::string dir = {},
+              const std::vector<std::string>& signals, const std::string& dir,
               const std::string& format = "png,svg");
 
 /// After a verb's report: plot_file, then "  plots     DIR/" on stdout, or a warning on stderr
@@ -45,10 +51,5 @@ int plot_file(const std::string& mode, const std::string& h5,
 int plot_after_report(const std::string& mode, const std::string& h5,
                       const std::vector<std::string>& signals = {}, const std::string& dir = {},
                       int code = 0);
-
-/// Runs tools/plot_contact.py (mode "curves" or "patch"). Throws std::runtime_error naming the
-/// interpreter when it fails.
-void run_plot_script(const std::string& mode, const std::string& csv, const std::string& png,
-                     const std::string& title);
 
 }  // namespace ferro::cli

@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <thread>
 
 #include "ferro/scenarios/output_file.hpp"
@@ -54,19 +56,15 @@ void watchdog() {
 
 }  // namespace
 
-Progress::Progress(double t_end, std::FILE* out)
-    : out_(out), meter_(t_end, isatty(fileno(out)) != 0), start_(std::chrono::steady_clock::now()) {}
-
-void Progress::update(double t) {
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const std::string text = meter_.update(t, elapsed);
-  if (text.empty()) return;
-  fmt::print(out_, "{}", text);
-  std::fflush(out_);
+scenarios::ProgressMeter stderr_meter(double t_end) {
+  return {t_end, isatty(fileno(stderr)) != 0};
 }
 
-void Progress::finish() { fmt::print(out_, "{}", meter_.finish()); }
+void show_progress(const std::string& text) {
+  if (text.empty()) return;
+  fmt::print(stderr, "{}", text);
+  std::fflush(stderr);
+}
 
 InterruptGuard::InterruptGuard() {
   g_signal = 0;

@@ -1,28 +1,17 @@
 #pragma once
 // Terminal helpers of the command line: progress display and SIGINT/SIGTERM capture.
-#include <chrono>
 #include <csignal>
-#include <cstdio>
 #include <string>
-#include <vector>
 
 #include "ferro/scenarios/progress_meter.hpp"
 
 namespace ferro::cli {
 
-/// Progress of a run against simulated time, printed on `out` (scenarios::ProgressMeter: a bar
-/// redrawn in place on a TTY, else a plain line at each 10 % step).
-class Progress {
- public:
-  Progress(double t_end, std::FILE* out);
-  void update(double t);
-  void finish();
-
- private:
-  std::FILE* out_;
-  scenarios::ProgressMeter meter_;
-  std::chrono::steady_clock::time_point start_;
-};
+/// A progress meter for stderr (a bar redrawn in place on a terminal, else a plain line at each
+/// 10 % step), starting now; its text goes to show_progress().
+[[nodiscard]] scenarios::ProgressMeter stderr_meter(double t_end);
+/// Prints a meter's text on stderr at once (nothing for an empty text).
+void show_progress(const std::string& text);
 
 /// SIGINT and SIGTERM for the whole program, installed first thing in run_main. A stop request is
 /// honoured within kStopGrace seconds wherever the program is:

@@ -27,21 +27,15 @@ int run_wheelset_contact(const WheelsetArgs& a) {
   const auto files = scenarios::write_wheelset_contact_files(a.yaml, a.out, a.only, a.overwrite);
   fmt::print("{}", files.report);
   fmt::print("wrote {}, {}\n", files.h5, files.csv);
-  if (!a.no_plots && run_python_tool("wheelset_contact_plot.py", {files.h5}) != 0) {
-    fmt::print(stderr,
-               "plotting failed ({} tools/wheelset_contact_plot.py {}); the table is written\n",
-               python_program(), files.h5);
-    return kExitRunFailure;
-  }
+  if (!a.no_plots) draw("wheelset_contact_plot.py", {files.h5}, "the table is written");
   return kExitOk;
 }
 
 }  // namespace
 
 void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler) {
-  auto a = std::make_shared<WheelsetArgs>();
-  CLI::App* cmd = app.get_subcommand("contact")->add_subcommand(
-      "wheelset",
+  auto [cmd, a] = add_verb<WheelsetArgs>(
+      app.get_subcommand("contact"), handler, run_wheelset_contact, "wheelset",
       "Full contact of prescribed wheelset positions (pair file with cases, Manchester A-2.2 "
       "format): patches at their penetration-weighted centres, MIM normal and rolling contact, "
       "height solved for the wheel load with friction in the vertical balance");
@@ -55,7 +49,6 @@ void add_wheelset_contact_commands(CLI::App& app, VerbHandler& handler) {
   cmd->add_option("--cases", a->only, "only these case ids (default: every case)")->delimiter(',');
   add_no_plots_flag(cmd, a->no_plots);
   add_overwrite_flag(cmd, a->overwrite);
-  on_parsed(cmd, handler, a, run_wheelset_contact);
 }
 
 }  // namespace ferro::cli

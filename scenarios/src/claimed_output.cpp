@@ -52,4 +52,16 @@ ClaimedOutput::ClaimedOutput(const std::string& path, const char* option, bool o
   if (!no_plots) check_plot_folder(sibling(file->path(), "_plots"), "plots");
 }
 
+ClaimedOutput ClaimedOutput::given_or(const std::string& given, const std::string& fallback,
+                                      bool overwrite, std::vector<std::string> inputs,
+                                      bool no_plots) {
+  return {given.empty() ? fallback : given, given.empty() ? "output" : "-o", overwrite,
+          std::move(inputs), no_plots};
+}
+
+const std::string& ClaimedOutput::commit() {
+  file->commit();
+  return file->path();
+}
+
 }  // namespace ferro::scenarios

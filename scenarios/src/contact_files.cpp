@@ -13,6 +13,7 @@
 #include "ferro/contact/kij/kij_table.hpp"
 #include "ferro/scenarios/contact_analysis.hpp"
 #include "ferro/scenarios/contact_case.hpp"
+#include "ferro/scenarios/overrides.hpp"
 
 namespace ferro::scenarios {
 namespace {
@@ -68,6 +69,22 @@ std::string eval_json(const EvalInput& in, const EvalOutput& out) {
   j["units"] = "SI (m, N, Pa, N m)";
   j["convention"] = "forces and moment on the wheel from the rail";
   return j.dump(2);
+}
+
+void run_contact_eval(const EvalRequest& request, bool batch, std::istream& in,
+                      const std::string& in_name, std::ostream& out) {
+  const fc::ModelOptions options = parse_model_options(request.options);
+  EvalInput input = request.input;
+  if (!request.kij_table.empty()) use_kij_table(input, request.kij_table, request.kij_at);
+  const fc::CoefficientSource source = fc::coefficient_source_from_name(
+      fc::option_string(options, "coefficients", "kalker_table"));
+  if (batch) {
+    evaluate_contact_batch(in, in_name, input, options, source, out);
+    return;
+  }
+  const auto model =
+      fc::make_tangential_model(input.model, with_environment_options(input.model, options));
+  out << eval_json(input, evaluate_contact(input, *model, source)) << "\n";
 }
 
 CurveFiles write_creep_curve_files(const std::string& case_path, const std::string& out_dir) {

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
+#include <thread>
 
 #include "ferro/scenarios/output_file.hpp"
 
@@ -24,6 +26,12 @@ MimSolveOutcome solve_mim_files(const MimRequest& request, const std::string& fi
     fields->commit();
   }
   return outcome;
+}
+
+contact::MimTableSpec machine_table_spec() {
+  contact::MimTableSpec spec = contact::MimTableSpec::default_spec();
+  spec.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return spec;
 }
 
 void write_mim_table_files(const MimTableRequest& a,

@@ -112,21 +112,30 @@ contact::ModelOptions with_environment_options(const std::string& model,
 
 Parameters parameters(RunOverrides& o) {
   return {
-      {"t_end", "s", "end time (simulation.t_end)", &o.t_end, false},
-      {"speed", "m/s", "forward speed (simulation.speed)", &o.speed, false},
+      Parameter{"t_end", "s", "end time (simulation.t_end)", &o.t_end, false}.within(
+          {0.0, kNoBound, true, true, "s"}),
+      Parameter{"speed", "m/s", "forward speed (simulation.speed)", &o.speed, false}.within(
+          {0.0, kNoBound, false, true, "m/s"}),
       {"integrator", "", "integration method (solver.integrator)", &o.integrator, false},
-      {"fixed_step", "s",
-       "fixed step of arkode_erk, arkode_dirk, odeint_bs3, bdf2; 0: adaptive steps "
-       "(solver.fixed_step)",
-       &o.fixed_step, false},
-      {"rtol", "-", "relative tolerance (solver.rtol)", &o.rtol, false},
-      {"atol", "SI state units", "absolute tolerance (solver.atol)", &o.atol, false},
+      Parameter{"fixed_step", "s",
+                "fixed step of arkode_erk, arkode_dirk, odeint_bs3, bdf2; 0: adaptive steps "
+                "(solver.fixed_step)",
+                &o.fixed_step, false}
+          .within({0.0, kNoBound, false, true, "s"}),
+      Parameter{"rtol", "-", "relative tolerance (solver.rtol)", &o.rtol, false}.within(
+          {0.0, 1.0, true, true, ""}),
+      Parameter{"atol", "SI state units", "absolute tolerance (solver.atol)", &o.atol, false}
+          .within({0.0, kNoBound, true, true, ""}),
       {"tangential", "", "tangential contact model (vehicle scenes)", &o.tangential, false},
       {"normal", "", "normal contact model: hertz, semi_hertz (vehicle scenes)", &o.normal,
        false},
-      {"speed_min", "m/s", "lowest speed of the eigenvalue sweep", &o.speed_min, false},
-      {"speed_max", "m/s", "highest speed of the eigenvalue sweep", &o.speed_max, false},
-      {"points", "", "speeds in the eigenvalue sweep", &o.points, false},
+      Parameter{"speed_min", "m/s", "lowest speed of the eigenvalue sweep", &o.speed_min, false}
+          .within({0.0, kNoBound, true, true, "m/s"}),
+      Parameter{"speed_max", "m/s", "highest speed of the eigenvalue sweep", &o.speed_max,
+                false}
+          .within({0.0, kNoBound, true, true, "m/s"}),
+      Parameter{"points", "", "speeds in the eigenvalue sweep", &o.points, false}.counting(
+          {2, kMaxEigenPoints}),
   };
 }
 

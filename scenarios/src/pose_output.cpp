@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -70,6 +71,22 @@ void write_pose_batch(const fc::WheelRailPair& pair, const std::string& in_path,
     claimed->commit();
   }
   standard_output.flush();
+}
+
+void search_poses(const SearchPairOptions& options, const PoseInput& pose,
+                  const std::string& batch, const std::string& out_path, bool overwrite,
+                  std::ostream& standard_output, Spelling spelling) {
+  const std::string height = spelled("height", spelling), load = spelled("load", spelling);
+  if (!std::isnan(pose.height) && !std::isnan(pose.load))
+    throw std::invalid_argument(fmt::format("{}: give {} or {}, not both", height, height, load));
+  const double estar = pose_search_modulus(options.shear_modulus, options.poisson);
+  const contact::WheelRailPair pair =
+      make_search_pair(options, spelled("inclination", spelling));
+  if (batch.empty()) {
+    standard_output << pose_result_json(pair, solve_pose(pair, pose, estar));
+  } else {
+    write_pose_batch(pair, batch, out_path, pose, estar, overwrite, standard_output);
+  }
 }
 
 }  // namespace ferro::scenarios

@@ -13,6 +13,10 @@ std::string format_seconds(double s) {
 
 ProgressMeter::ProgressMeter(double t_end, bool redraw) : t_end_(t_end), redraw_(redraw) {}
 
+std::string ProgressMeter::update(double t) {
+  return update(t, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+}
+
 std::string ProgressMeter::update(double t, double elapsed) {
   const double frac = std::clamp(t / t_end_, 0.0, 1.0);
   const double eta = frac > 0.0 ? elapsed * (1.0 - frac) / frac : 0.0;

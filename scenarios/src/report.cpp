@@ -13,6 +13,14 @@
 
 namespace ferro::scenarios {
 
+std::string valid_scene_line(const std::string& path, const Scene& s) {
+  return fmt::format(
+      "{}: valid scene '{}' (schema {}): model {}, track {}, integrator {}, t_end {} s, V = {} "
+      "m/s\n",
+      path, s.name, s.schema_version, s.model.type, s.track.type, s.solver.method,
+      s.simulation.t_end, s.simulation.speed);
+}
+
 std::string run_report(const Scene& scene, const RunSummary& s) {
   std::string text;
   auto out = std::back_inserter(text);

@@ -202,6 +202,8 @@ RunPlan plan_run_unlocated(const Scene& scene, const RunOptions& options) {
     }
   }
   (void)output_sample_count(scene.simulation.t_end, scene.output.interval);
+  if (!(options.pace >= 0.0))
+    throw std::invalid_argument(fmt::format("pace: must be >= 0, got {}", options.pace));
   plan.integrator = vehicle::make_integrator(scene.solver);
   const auto csv_names = resolve_csv(options.csv.value_or(scene.output.csv), plan.channels,
                                      options.csv ? "--csv" : "output.csv");
@@ -430,6 +432,14 @@ void close_run_file(H5File& file, const RunSummary& summary, OutputSet& outputs)
 
 }  // namespace
 
+Parameters parameters(RunOptions& o) {
+  return {Parameter{"pace", "",
+                    "Simulated seconds per wall-clock second (0: as fast as possible; 1: real "
+                    "time)",
+                    &o.pace}
+              .within({0.0, kNoBound, false, true, ""})};
+}
+
 RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   // Everything that can be refused is refused before any file is touched.
   const RunPlan plan = plan_run(scene, options);
@@ -437,6 +447,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& options) {
   RunSummary summary;
   summary.channels = plan.channels;
   summary.state_count = plan.state_count;
+  summary.plots = scene.output.plots;  // default: every state
+  if (summary.plots.empty()) {
+    for (std::size_t i = 0; i < plan.state_count; ++i)
+      summary.plots.push_back(plan.channels[i].name);
+  }
   const std::size_t n_channels = summary.channels.size();
   summary.peak_abs.assign(n_channels, 0.0);
   summary.final_values.assign(n_channels, 0.0);

@@ -262,7 +262,7 @@ void check_bump_stop_table(MapReader& r, const SuspensionElementSpec& s, const s
 
 const std::vector<std::string>& wheel_rail_keys() {
   static const std::vector<std::string> keys = {
-      "geometry",     "wheel_profile", "rail_profile",       "imported_table", "table_file",
+      "geometry",     "wheel_profile", "rail_profile",       "imported_table", "table_file", "table_yaw",
       "track_gauge",  "flange_back_distance", "flange_back_y", "rail_inclination", "conicity",
       "contact_half_distance", "conical_curvature_a", "conical_curvature_b", "friction", "shear_modulus", "poisson",
       "normal",       "tangential",    "tangential_options", "reduction",
@@ -290,6 +290,15 @@ void read_wheel_rail(MapReader& r, vehicle::WheelRailSpec& w) {
   w.flange_back_distance = r.number_or("flange_back_distance", w.flange_back_distance);
   w.flange_back_y = r.number_or("flange_back_y", w.flange_back_y);
   w.rail_inclination = r.number_or("rail_inclination", w.rail_inclination);
+  if (r.has("table_yaw")) {
+    // The table's yaw axis, symmetric about 0 [rad].
+    MapReader t = r.map("table_yaw");
+    w.table_yaw_max = t.number("max");
+    w.table_yaw_step = t.number("step");
+    t.finish();
+  } else {
+    r.allow("table_yaw");
+  }
   if (r.has("wheel_conical_tread")) {
     // The thesis' S1002 with a 1/10 conical tread: the tread beyond join_y becomes a cone.
     MapReader t = r.map("wheel_conical_tread");

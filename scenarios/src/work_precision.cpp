@@ -248,8 +248,17 @@ void measure_errors(WorkPrecisionPoint& p, const Trajectory& run, const Trajecto
 
 }  // namespace
 
-WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+void check_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
   check_options(options);
+  if (options.settle > 0.0) {
+    const std::string problem =
+        track_extent_problem(scene, options.settle + scene.simulation.t_end);
+    if (!problem.empty()) throw std::invalid_argument(fmt::format("--settle: {}", problem));
+  }
+}
+
+WorkPrecisionReport run_work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
+  check_work_precision(scene, options);
   // Every entry is checked before any run.
   std::vector<vehicle::IntegratorSettings> settings;
   std::vector<std::string> labels;

@@ -73,6 +73,19 @@ TEST(make_contact_source, every_kind_and_the_table_cache) {
   const auto& t = dynamic_cast<const fc::MultiPointContactTable&>(*rebuilt);
   EXPECT_EQ(t.node_count(), 11u);
   EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 11u);
+  // A yaw axis, then another one: each is another table, the cache is rebuilt each time; back
+  // without it, rebuilt again.
+  tab.table.yaw_min = -0.010;
+  tab.table.yaw_max = 0.010;
+  tab.table.yaw_step = 0.005;
+  (void)fc::make_contact_source(tab);
+  EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 55u);
+  tab.table.yaw_step = 0.010;
+  (void)fc::make_contact_source(tab);
+  EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 33u);
+  tab.table.yaw_min = tab.table.yaw_max = 0.0;
+  (void)fc::make_contact_source(tab);
+  EXPECT_EQ(fc::MultiPointContactTable::load_hdf5(tab.table_file).node_count(), 11u);
   // A cache in an older layout (format_version 1, 15 columns) is rebuilt, not an error; a file
   // that is not a table at all is still refused by name.
   {

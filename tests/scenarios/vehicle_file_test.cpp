@@ -354,6 +354,14 @@ TEST(VehicleFile, located_errors_name_line_key_and_allowed_values) {
       {"  rail_inclination: 0.0 ", "  wheel_conical_tread: {conicity: 0.1}\n"
        "  rail_inclination: 0.0 ", "wheel_rail.wheel_conical_tread.join_y",
        "missing required key 'join_y'"},
+      {"  rail_inclination: 0.0 ", "  table_yaw: {max: 0.025, step: 0.004}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.table_yaw.step", "must be a whole number"},
+      {"  rail_inclination: 0.0 ", "  table_yaw: {max: 0.5, step: 0.005}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.table_yaw.max", "must lie in (0, 0.1] rad"},
+      {"  rail_inclination: 0.0 ", "  table_yaw: {max: 0.025}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.table_yaw", "missing required key 'step'"},
+      {"  rail_inclination: 0.0 ", "  table_yaw: {max: 0.025, step: -0.005}\n"
+       "  rail_inclination: 0.0 ", "wheel_rail.table_yaw.step", "must lie in (0, max = 0.025] rad"},
       {"  nominal_rolling_radius: 0.46", "  nominal_rolling_radius: 0.46\n  dofs: [y, yaw, spn]",
        "wheelset.dofs", "did you mean 'spin'?"},
   };

@@ -34,6 +34,11 @@ std::shared_ptr<const contact::ContactGeometrySource> make_geometry_source(
     cs.pair.nominal_radius = spec.nominal_radius;
     cs.pair.rail_inclination = spec.rail_inclination;
     cs.table_file = resolve(spec.table_file);
+    if (spec.table_yaw_max > 0.0) {
+      cs.table.yaw_min = -spec.table_yaw_max;
+      cs.table.yaw_max = spec.table_yaw_max;
+      cs.table.yaw_step = spec.table_yaw_step;
+    }
     if (std::isfinite(spec.wheel_tread_conicity)) {
       cs.wheel_tread_conicity = spec.wheel_tread_conicity;
       cs.wheel_tread_join_y = spec.wheel_tread_join_y;

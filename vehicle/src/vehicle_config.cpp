@@ -131,6 +131,31 @@ void SuspensionElementSpec::validate(const std::string& where, int n_bodies) con
   }
 }
 
+namespace {
+
+// The table's yaw axis: symmetric about 0, 0 a node, at most kMaxTableYaw (the angles of attack
+// of railway wheelsets stay below ~0.03 rad even in 100 m curves).
+void validate_table_yaw(const WheelRailSpec& w, const std::string& where) {
+  constexpr double kMaxTableYaw = 0.1;  // [rad]
+  require(w.geometry == "table", where, "table_yaw",
+          fmt::format("applies to geometry table, not '{}'", w.geometry));
+  require(std::isfinite(w.table_yaw_max) && w.table_yaw_max > 0.0 &&
+              w.table_yaw_max <= kMaxTableYaw,
+          where, "table_yaw.max",
+          fmt::format("must lie in (0, {}] rad, got {}", kMaxTableYaw, w.table_yaw_max));
+  require(std::isfinite(w.table_yaw_step) && w.table_yaw_step > 0.0 &&
+              w.table_yaw_step <= w.table_yaw_max,
+          where, "table_yaw.step",
+          fmt::format("must lie in (0, max = {}] rad, got {}", w.table_yaw_max,
+                      w.table_yaw_step));
+  const double steps = w.table_yaw_max / w.table_yaw_step;
+  require(std::abs(steps - std::round(steps)) <= 1e-6 * steps, where, "table_yaw.step",
+          fmt::format("max / step = {} must be a whole number (yaw 0 is a node of the axis)",
+                      steps));
+}
+
+}  // namespace
+
 void WheelRailSpec::validate_geometry(const std::string& where) const {
   require(geometry == "table" || geometry == "search" || geometry == "imported" ||
               geometry == "conical",
@@ -144,6 +169,7 @@ void WheelRailSpec::validate_geometry(const std::string& where) const {
             "required for geometry 'imported': the CSV contact table");
   }
   if (geometry == "conical") validate_conical(*this, where);
+  if (table_yaw_max != 0.0 || table_yaw_step != 0.0) validate_table_yaw(*this, where);
   if (geometry != "table" && geometry != "search") {
     require(std::isnan(wheel_tread_conicity), where, "wheel_conical_tread",
             fmt::format("applies to geometry table or search, not '{}'", geometry));

@@ -265,6 +265,12 @@ void MultiPointContactTable::finish() {
   groups_.clear();
   std::vector<int> parent;
   std::vector<int> corner_of;
+  struct Link {
+    double cost;  // distance in wheel_y [m]
+    int a, b;     // flattened candidate indices
+  };
+  std::vector<Link> links;
+  std::vector<unsigned> corner_mask;
   std::vector<int> global;
   for (int ck = 0; ck < cells[2]; ++ck) {
     for (int cj = 0; cj < cells[1]; ++cj) {
@@ -327,7 +333,7 @@ void MultiPointContactTable::finish() {
             const double m = std::abs(nodes_[global[u[i - 1]]].wheel_y -
                                       nodes_[global[v[j - 1]]].wheel_y);
             if (cost[i][j] == cost[i - 1][j - 1] + m) {
-              parent[find(u[i - 1])] = find(v[j - 1]);
+              links.push_back({m, u[i - 1], v[j - 1]});
               --i;
               --j;
             } else if (cost[i][j] == cost[i - 1][j] + kBranchMatch) {
@@ -337,6 +343,7 @@ void MultiPointContactTable::finish() {
             }
           }
         };
+        links.clear();
         for (int c1 = 0; c1 < n_corners; ++c1) {
           for (int b = 0; b < d; ++b) {
             if (c1 & (1 << b)) continue;
@@ -344,11 +351,21 @@ void MultiPointContactTable::finish() {
             align(c1, c1 | (1 << b), Side::right);
           }
         }
-        // One group per root; a root holding two candidates at one corner is split into
-        // single-candidate groups (ambiguous branch).
-        const std::size_t base = groups_.size();
+        // The links close into branches, the closest first; a link that would give a branch two
+        // candidates at one corner is left out (the edges of a cell may disagree, more so with
+        // a third axis), so every branch keeps the links it agrees with.
+        std::stable_sort(links.begin(), links.end(),
+                         [](const Link& x, const Link& y) { return x.cost < y.cost; });
+        corner_mask.resize(parent.size());
+        for (std::size_t p = 0; p < parent.size(); ++p) corner_mask[p] = 1u << corner_of[p];
+        for (const Link& l : links) {
+          const int ra = find(l.a), rb = find(l.b);
+          if (ra == rb || (corner_mask[ra] & corner_mask[rb]) != 0u) continue;
+          parent[ra] = rb;
+          corner_mask[rb] |= corner_mask[ra];
+        }
+        // One group per root (at most one candidate per corner, by construction).
         std::vector<int> root_group(parent.size(), -1);
-        std::vector<bool> conflict(parent.size(), false);
         for (std::size_t p = 0; p < parent.size(); ++p) {
           const int r = find(static_cast<int>(p));
           if (root_group[r] < 0) {
@@ -357,29 +374,8 @@ void MultiPointContactTable::finish() {
             g.side = nodes_[global[p]].side;
             groups_.push_back(g);
           }
-          Group& g = groups_[static_cast<std::size_t>(root_group[r])];
-          if (g.corner[corner_of[p]] >= 0) conflict[r] = true;
-          g.corner[corner_of[p]] = global[p];
+          groups_[static_cast<std::size_t>(root_group[r])].corner[corner_of[p]] = global[p];
         }
-        for (std::size_t r = 0; r < parent.size(); ++r) {
-          if (!conflict[r]) continue;
-          groups_[static_cast<std::size_t>(root_group[r])].corner.fill(-1);
-          for (std::size_t p = 0; p < parent.size(); ++p) {
-            if (find(static_cast<int>(p)) != static_cast<int>(r)) continue;
-            Group g;
-            g.side = nodes_[global[p]].side;
-            g.corner[corner_of[p]] = global[p];
-            groups_.push_back(g);
-          }
-        }
-        // Drop emptied groups.
-        groups_.erase(std::remove_if(groups_.begin() + static_cast<std::ptrdiff_t>(base),
-                                     groups_.end(),
-                                     [](const Group& g) {
-                                       return std::all_of(g.corner.begin(), g.corner.end(),
-                                                          [](int v) { return v < 0; });
-                                     }),
-                      groups_.end());
         const std::size_t cell =
             (static_cast<std::size_t>(ck) * cells[1] + cj) * cells[0] + ci;
         cell_offset_[cell + 1] = groups_.size();

@@ -140,6 +140,11 @@ std::string ramp_report(const RampStudy& study, const RampRequest& request) {
   return text;
 }
 
+std::string branch_heading(const Scene& scene, const BranchRequest& request) {
+  return fmt::format("ferrodyn critical-speed bifurcation: {} ({}), K11 = {}, K22 = {}\n",
+                     scene.name, scene.path, request.settle.k11, request.settle.k22);
+}
+
 std::string branch_report(const KijRow& row, const std::vector<std::string>& names) {
   std::string text;
   auto out = std::back_inserter(text);

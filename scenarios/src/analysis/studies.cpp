@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "ferro/scenarios/analysis/sweep.hpp"
+#include "ferro/scenarios/report.hpp"
 #include "ferro/scenarios/run.hpp"
 #include "ferro/scenarios/vehicle_file.hpp"
 
@@ -145,10 +146,7 @@ KijStudy run_kij_study(const Scene& scene, const KijStudyRequest& a,
     throw std::invalid_argument(
         fmt::format("{}: give at least one reduction factor", spelled("k", sp)));
   const auto ks =
-      study_reductions(a.k, a.coefficient,
-                       contact::ReductionFactors::following_k22(a.branch.settle.k11,
-                                                                a.branch.settle.k22),
-                       sp);
+      study_reductions(a.k, a.coefficient, a.branch.settle.reduction(), sp);
   (void)branch_options(scene, a.branch, sp);  // validate before starting
   if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
   KijStudy study;
@@ -261,7 +259,8 @@ Parameters parameters(KijStudyRequest& k) {
       {"k", "-", "reduction factors, one branch each", &k.k},
       {"coefficient", "",
        "which factor k sets: both (K11 = K22 = K23 = K33), k11, k22", &k.coefficient},
-      {"jobs", "", "worker threads (one factor per thread)", &k.jobs},
+      Parameter{"jobs", "", "worker threads (one factor per thread)", &k.jobs}.counting(
+          {1, kMaxJobs}),
   };
   for (auto& b : parameters(k.branch)) p.push_back(std::move(b));
   return p;
@@ -269,22 +268,59 @@ Parameters parameters(KijStudyRequest& k) {
 
 Parameters parameters(AssessmentRequest& a) {
   return {
-      {"mu", "-", "friction coefficient in Nadal's limit (default: the run's)", &a.mu, false},
-      {"flange_angle_deg", "deg",
-       "flange angle in Nadal's limit (default: the largest contact angle of each wheel)",
-       &a.flange_angle_deg, false},
-      {"section_length", "m", "statistics over windows of this length instead of the scene's "
-       "sections", &a.section_length, false},
-      {"f0", "Hz", "instability frequency (default: from the run's spectrum)", &a.f0, false},
-      {"floor_offset", "m", "lateral offset of the vertical floor points (0: centre line only)",
-       &a.floor_offset},
-      {"y_over_q_limit", "-", "(Y/Q) limit of the 2 m mean", &a.y_over_q_limit},
+      Parameter{"mu", "-", "friction coefficient in Nadal's limit (default: the run's)", &a.mu,
+                false}
+          .within({0.0, 2.0, false, true, ""}),
+      Parameter{"flange_angle_deg", "deg",
+                "flange angle in Nadal's limit (default: the largest contact angle of each wheel)",
+                &a.flange_angle_deg, false}
+          .within({0.0, 90.0, true, true, "deg"}),
+      Parameter{"section_length", "m", "statistics over windows of this length instead of the "
+                "scene's sections", &a.section_length, false}
+          .within({0.0, kNoBound, true, true, "m"}),
+      Parameter{"f0", "Hz", "instability frequency (default: from the run's spectrum)", &a.f0,
+                false}
+          .within({0.0, kNoBound, true, true, "Hz"}),
+      Parameter{"floor_offset", "m",
+                "lateral offset of the vertical floor points (0: centre line only)",
+                &a.floor_offset}
+          .within({0.0, kNoBound, false, true, "m"}),
+      Parameter{"y_over_q_limit", "-", "(Y/Q) limit of the 2 m mean", &a.y_over_q_limit}
+          .within({0.0, kNoBound, true, true, ""}),
       {"category", "", "vehicle category: coach, locomotive, power_car, wagon (default: the "
        "vehicle file's)", &a.category, false},
       {"twist_test", "", "assess the wheel unloading dQ/Q0 too", &a.twist_test},
       {"no_twist_test", "", "do not assess dQ/Q0 even when the scene says it is the twist test",
        &a.no_twist_test},
   };
+}
+
+RunOverrides EigenRequest::eigen_study_range() {
+  RunOverrides r;
+  r.speed_min = 1.0;
+  r.speed_max = 150.0;
+  r.points = 150;
+  return r;
+}
+
+Scene eigen_study_scene(const Scene& scene, const EigenRequest& request, Spelling spelling) {
+  Scene s = with_reduction(scene, contact::ReductionFactors::following_k22(request.k11, request.k22));
+  apply_overrides(s, request.range, spelling);
+  return s;
+}
+
+std::string eigen_study_report(const Scene& scene, const EigenRequest& request,
+                               const EigenReport& report) {
+  return fmt::format("ferrodyn critical-speed eigen: {} ({}), K11 = {}, K22 = {}\n", scene.name,
+                     scene.path, request.k11, request.k22) +
+         eigen_modes_report(scene, report, 16);
+}
+
+Parameters parameters(EigenRequest& e) {
+  Parameters p = select_parameters(scenarios::parameters(e.range), {"speed_min", "speed_max", "points"});
+  p.push_back({"k11", "-", "reduction factor on C11", &e.k11});
+  p.push_back({"k22", "-", "reduction factor on C22", &e.k22});
+  return p;
 }
 
 }  // namespace ferro::scenarios::analysis

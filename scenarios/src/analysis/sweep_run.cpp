@@ -6,10 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
+#include "ferro/scenarios/analysis/progress_text.hpp"
 #include "ferro/scenarios/analysis/sweep.hpp"
+#include "ferro/scenarios/run.hpp"
 
 namespace ferro::scenarios::analysis {
 namespace {
@@ -78,18 +81,20 @@ Parameters parameters(SweepRequest& r) {
   Parameters p = {
       {"speed_min", "m/s", "lowest speed", &r.speed_min, false},
       {"speed_max", "m/s", "highest speed", &r.speed_max, false},
-      {"points", "", "speeds between min and max", &r.points},
+      Parameter{"points", "", "speeds between min and max", &r.points}.counting(
+          {1, kMaxEigenPoints}),
       {"k", "-", "reduction factors, one set of speeds each", &r.k},
       {"coefficient", "",
        "which factor k sets: both (K11 = K22 = K23 = K33), k11, k22", &r.coefficient},
   };
   for (auto& s : parameters(r.settle)) p.push_back(std::move(s));
   Parameters run = {
-      {"jobs", "", "worker threads per process", &r.jobs},
-      {"max_new_points", "",
-       "compute at most this many new points per process, then stop (resumable; for "
-       "batch-queue time limits)",
-       &r.max_new_points, false},
+      Parameter{"jobs", "", "worker threads per process", &r.jobs}.counting({1, kMaxJobs}),
+      Parameter{"max_new_points", "",
+                "compute at most this many new points per process, then stop (resumable; for "
+                "batch-queue time limits)",
+                &r.max_new_points, false}
+          .counting({0, std::numeric_limits<int>::max()}),
       {"restart", "", "forget finished points and start over", &r.restart},
   };
   for (auto& q : run) p.push_back(std::move(q));
@@ -105,9 +110,7 @@ std::vector<SweepPoint> sweep_points(const Scene& scene, const SweepRequest& a, 
     throw std::invalid_argument(
         fmt::format("{}: >= 1 (1 only when min = max)", spelled("points", sp)));
   if (a.jobs < 1) throw std::invalid_argument(fmt::format("{}: must be >= 1", spelled("jobs", sp)));
-  const auto factors = study_reductions(
-      a.k, a.coefficient,
-      contact::ReductionFactors::following_k22(a.settle.k11, a.settle.k22), sp);
+  const auto factors = study_reductions(a.k, a.coefficient, a.settle.reduction(), sp);
   std::vector<SweepPoint> points;
   for (const contact::ReductionFactors& r : factors) {
     (void)with_reduction(scene, r);  // validates the factors
@@ -138,6 +141,9 @@ SweepOutcome run_sweep(const Scene& scene, const SweepRequest& a, SweepExecutor&
   const auto finished = journal ? journal->load() : std::map<std::size_t, SweepPointResult>{};
   const auto todo = points_to_run(points, finished, ex, a.max_new_points);
   if (callbacks.on_start) callbacks.on_start(points.size(), finished.size(), todo.size());
+  if (callbacks.progress && ex.rank() == 0) {
+    callbacks.progress(sweep_start_line(points.size(), finished.size(), a.journal, ex.size(), a.jobs));
+  }
   const auto wall0 = std::chrono::steady_clock::now();
   std::size_t done = 0;
   PoolOptions pool;
@@ -147,6 +153,11 @@ SweepOutcome run_sweep(const Scene& scene, const SweepRequest& a, SweepExecutor&
     if (journal) journal->record(r);
     ++done;
     if (callbacks.on_done) callbacks.on_done(r, done);
+    if (callbacks.progress && !callbacks.quiet) {
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      callbacks.progress(sweep_point_line(ex.rank(), done, todo.size(), elapsed, r));
+    }
   };
   const auto resources = build_resources(scene);
   const auto mine = run_pool(
@@ -168,7 +179,10 @@ SweepOutcome run_sweep(const Scene& scene, const SweepRequest& a, SweepExecutor&
   const auto all = merge(finished, gathered, journal.get());
   out.finished = all.size();
   out.complete = !stopped && all.size() == points.size();
-  if (!out.complete) return out;
+  if (!out.complete) {
+    if (callbacks.progress) callbacks.progress(sweep_stopped_line(out, a.journal));
+    return out;
+  }
   for (const auto& [i, r] : all) {
     out.cpu_seconds += r.cpu_seconds;
     out.results.push_back(r);
@@ -178,6 +192,20 @@ SweepOutcome run_sweep(const Scene& scene, const SweepRequest& a, SweepExecutor&
   if (!a.output.empty()) write_sweep(scene, out.wheelset_names, out.results, a.output);
   if (journal) fs::remove_all(a.journal);  // complete: the results hold every point
   return out;
+}
+
+SweepFiles claim_sweep_files(const Scene& scene, const std::string& given, bool overwrite,
+                             bool no_plots, bool writer, SweepRequest& request) {
+  SweepFiles files;
+  files.output = given.empty() ? sibling(scene.output.file, "_sweep.h5") : given;
+  files.journal = files.output + ".points";
+  if (writer) {
+    files.claimed.emplace(ClaimedOutput::given_or(given, files.output, overwrite,
+                                                  scene_inputs(scene), no_plots));
+  }
+  request.output = files.claimed ? files.claimed->write_path() : files.output;
+  request.journal = files.journal;
+  return files;
 }
 
 }  // namespace ferro::scenarios::analysis

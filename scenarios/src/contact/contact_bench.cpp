@@ -393,6 +393,13 @@ ContactBenchResult run_contact_bench(const ContactBenchOptions& opt) {
   return result;
 }
 
+std::string write_contact_bench_csv_in(const ContactBenchResult& result, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const std::string csv = (std::filesystem::path(dir) / "bench_contact.csv").string();
+  write_contact_bench_csv(result, csv);
+  return csv;
+}
+
 void write_contact_bench_csv(const ContactBenchResult& result, const std::string& path) {
   io::TextWriter out(path);
   out.write(

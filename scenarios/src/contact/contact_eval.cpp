@@ -60,7 +60,7 @@ Parameters parameters(EvalInput& in) {
       {"mu", "-", "friction coefficient", &in.mu, false},
       {"xi_x", "-", "longitudinal creepage", &in.xi_x, false},
       {"xi_y", "-", "lateral creepage", &in.xi_y, false},
-      {"spin", "1/m", "spin creepage", &in.phi, false},
+      Parameter{"spin", "1/m", "spin creepage", &in.phi, false}.formerly("phi"),
       {"model", "",
        "kalker_linear, linear_saturated, vermeulen_johnson, shen_hedrick_elkins, chopaya, "
        "polach, fastsim, fastrip, mim, mim_table",

@@ -14,14 +14,16 @@ namespace ferro::scenarios {
 
 Parameters parameters(MimRequest& r) {
   return {
-      {"a", "m", "semi-axis along the rolling direction", &r.a, false},
-      {"b", "m", "lateral semi-axis", &r.b, false},
+      Parameter{"a", "m", "semi-axis along the rolling direction", &r.a, false}.formerly("a_mm",
+                                                                                       1e-3),
+      Parameter{"b", "m", "lateral semi-axis", &r.b, false}.formerly("b_mm", 1e-3),
       {"fn", "N", "normal force", &r.fn, false},
       {"xi_x", "-", "longitudinal creepage", &r.xi_x},
       {"xi_y", "-", "lateral creepage", &r.xi_y},
       {"spin", "1/m", "spin creepage", &r.spin},
       {"mu", "-", "friction coefficient", &r.mu},
-      {"young", "Pa", "Young's modulus of both bodies", &r.young},
+      Parameter{"young", "Pa", "Young's modulus of both bodies", &r.young}.formerly("young_gpa",
+                                                                                     1e9),
       {"poisson", "-", "Poisson's ratio of both bodies", &r.poisson},
       {"elements", "", "elements across the shorter axis", &r.elements},
   };

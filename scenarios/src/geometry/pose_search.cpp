@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -34,27 +33,25 @@ std::string point_csv(const fc::WheelRailPair& pair, const fc::WheelsetPose& pos
       p.on_flange() ? 1 : 0);
 }
 
-// Column -> pose field and the factor to SI (the mm/unit-suffixed names are read as well).
+// Column -> the pose parameter it sets (index into parameters(PoseInput&)) and the factor to SI:
+// a parameter's key, or its former key in other units (y_mm, ...).
 struct Column {
-  double PoseInput::*field = nullptr;
+  std::size_t parameter = kNone;
   double to_si = 1.0;
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
 };
 
 std::vector<Column> pose_columns(const io::CsvReader& reader) {
-  const std::map<std::string, Column> known{{"y", {&PoseInput::y}},
-                                            {"roll", {&PoseInput::roll}},
-                                            {"yaw", {&PoseInput::yaw}},
-                                            {"height", {&PoseInput::height}},
-                                            {"load", {&PoseInput::load}},
-                                            {"y_mm", {&PoseInput::y, 1e-3}},
-                                            {"roll_rad", {&PoseInput::roll}},
-                                            {"yaw_rad", {&PoseInput::yaw}},
-                                            {"height_mm", {&PoseInput::height, 1e-3}},
-                                            {"load_n", {&PoseInput::load}}};
+  PoseInput probe;
+  const Parameters known = parameters(probe);
   std::vector<Column> cols;
   for (const auto& h : reader.header()) {
-    const auto it = known.find(h);
-    cols.push_back(it == known.end() ? Column{} : it->second);
+    Column col;
+    for (std::size_t i = 0; i < known.size(); ++i) {
+      if (known[i].key == h) col = {i, 1.0};
+      if (known[i].former && known[i].former->key == h) col = {i, known[i].former->to_si};
+    }
+    cols.push_back(col);
   }
   if (!reader.has_column("y") && !reader.has_column("y_mm")) {
     throw std::invalid_argument(reader.located(
@@ -99,30 +96,41 @@ Parameters parameters(SearchPairOptions& o) {
   return {
       {"wheel", "", "wheel profile (.prw or two-column mm)", &o.wheel, false},
       {"rail", "", "rail profile (.prr or two-column mm)", &o.rail, false},
-      {"gauge", "m", "track gauge", &o.gauge},
-      {"gauge_depth", "m", "gauge measured below top of rail", &o.gauge_depth},
+      Parameter{"gauge", "m", "track gauge", &o.gauge}.formerly("gauge_mm", 1e-3),
+      Parameter{"gauge_depth", "m", "gauge measured below top of rail", &o.gauge_depth}
+          .formerly("gauge_depth_mm", 1e-3),
       {"inclination", "", "rail inclination applied to the rail file: 1:40, 1:20, 0 or an "
        "angle in rad", &o.inclination},
-      {"flange_back", "m", "flange-back distance", &o.flange_back},
-      {"flange_back_y", "m",
-       "flange-back position in wheel-profile coordinates (default: first point)",
-       &o.flange_back_y, false},
-      {"radius", "m", "nominal wheel radius at the taping line", &o.radius},
-      {"section_step", "m", "wheel section spacing", &o.section_step},
-      {"shear_modulus", "Pa", "for a load", &o.shear_modulus},
+      Parameter{"flange_back", "m", "flange-back distance", &o.flange_back}.formerly(
+          "flange_back_mm", 1e-3),
+      Parameter{"flange_back_y", "m",
+                "flange-back position in wheel-profile coordinates (default: first point)",
+                &o.flange_back_y, false}
+          .formerly("flange_back_y_mm", 1e-3),
+      Parameter{"radius", "m", "nominal wheel radius at the taping line", &o.radius}.formerly(
+          "radius_mm", 1e-3),
+      Parameter{"section_step", "m", "wheel section spacing", &o.section_step}.formerly(
+          "section_step_mm", 1e-3),
+      Parameter{"shear_modulus", "Pa", "for a load", &o.shear_modulus}.formerly(
+          "shear_modulus_mpa", 1e6),
       {"poisson", "-", "for a load", &o.poisson},
   };
 }
 
 Parameters parameters(PoseInput& in) {
   return {
-      {"y", "m", "lateral shift, + to the right", &in.y},
-      {"roll", "rad",
-       "+ lowers the right wheel (0 with neither height nor load: solved for rigid contact)",
-       &in.roll, false},
-      {"yaw", "rad", "+ turns the front to the right", &in.yaw, false},
-      {"height", "m", "axle-centre drop below nominal (+ down)", &in.height, false},
-      {"load", "N", "total vertical load: solve the height (Hertz)", &in.load, false},
+      Parameter{"y", "m", "lateral shift, + to the right", &in.y}.formerly("y_mm", 1e-3),
+      Parameter{"roll", "rad",
+                "+ lowers the right wheel (0 with neither height nor load: solved for rigid "
+                "contact)",
+                &in.roll, false}
+          .formerly("roll_rad"),
+      Parameter{"yaw", "rad", "+ turns the front to the right", &in.yaw, false}.formerly(
+          "yaw_rad"),
+      Parameter{"height", "m", "axle-centre drop below nominal (+ down)", &in.height, false}
+          .formerly("height_mm", 1e-3),
+      Parameter{"load", "N", "total vertical load: solve the height (Hertz)", &in.load, false}
+          .formerly("load_n"),
   };
 }
 
@@ -170,8 +178,11 @@ void search_pose_batch(const fc::WheelRailPair& pair, std::istream& in, const st
   std::ostringstream out;  // one input row's lines at a time
   while (reader.next(cells)) {
     PoseInput pin = defaults;
+    const Parameters fields = parameters(pin);
     for (std::size_t c = 0; c < cells.size(); ++c) {
-      if (cols[c].field) pin.*cols[c].field = reader.number(cells, c) * cols[c].to_si;
+      if (cols[c].parameter == Column::kNone) continue;
+      *std::get<double*>(fields[cols[c].parameter].target) =
+          reader.number(cells, c) * cols[c].to_si;
     }
     const PoseResult r = solve_pose(pair, pin, estar);
     std::string echo;

@@ -26,6 +26,12 @@ struct ClaimedOutput {
   /// `option` names the output in messages ("-o", "output").
   ClaimedOutput(const std::string& path, const char* option, bool overwrite,
                 std::vector<std::string> inputs, bool no_plots);
+  /// The output a verb's -o names (`given`), or when none `fallback` (named "output").
+  [[nodiscard]] static ClaimedOutput given_or(const std::string& given, const std::string& fallback,
+                                              bool overwrite, std::vector<std::string> inputs,
+                                              bool no_plots);
+  /// Commits the file; returns its path.
+  const std::string& commit();
   [[nodiscard]] const std::string& path() const { return file->path(); }
   [[nodiscard]] const std::string& write_path() const { return file->write_path(); }
 };

@@ -118,5 +118,9 @@ void write_contact_bench_reference(const std::string& path,
 /// Writes the rows as CSV (label, us_per_eval, mean, p95, max, mean without / with spin, M_z mean,
 /// largest force).
 void write_contact_bench_csv(const ContactBenchResult& result, const std::string& path);
+/// write_contact_bench_csv into <dir>/bench_contact.csv (the folder made when missing); returns
+/// the file's path.
+[[nodiscard]] std::string write_contact_bench_csv_in(const ContactBenchResult& result,
+                                                     const std::string& dir);
 
 }  // namespace ferro::scenarios

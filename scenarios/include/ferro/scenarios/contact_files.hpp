@@ -3,6 +3,8 @@
 // evaluation, the creep-curve files and the patch-picture file of a contact case. Forces and
 // moment are those of the rail on the wheel; SI units.
 
+#include <istream>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,21 @@ void use_kij_table(EvalInput& input, const std::string& path, const std::vector<
 /// One evaluation as indented JSON: model, patch (semi-axes, load, peak pressure), forces and
 /// moment on the wheel, adhesion fraction, C_ij used, units and convention.
 [[nodiscard]] std::string eval_json(const EvalInput& in, const EvalOutput& out);
+
+/// `contact eval` as a user asks for it: a case, model options (key=value items), a K_ij table
+/// file and its point (axis=value items; empty file: the case's k11..k33).
+struct EvalRequest {
+  EvalInput input;
+  std::vector<std::string> options, kij_at;
+  std::string kij_table;
+};
+/// Solves the request's case and writes its JSON (eval_json) and a newline to `out`; with
+/// `batch`, reads cases as CSV from `in` (named `in_name` in messages) and writes one row per
+/// case (evaluate_contact_batch). The C_ij come from the models' "coefficients" option
+/// (default kalker_table); a mim_table model given no table takes the environment's
+/// (with_environment_options).
+void run_contact_eval(const EvalRequest& request, bool batch, std::istream& in,
+                      const std::string& in_name, std::ostream& out);
 
 /// The files of `contact curve`: <out_dir>/<case>_curves.{csv,h5} (written), the picture's path
 /// <case>_curves.png (not drawn here) and its title (patch size, load, friction).

@@ -11,4 +11,11 @@ namespace ferro::scenarios {
 /// point was resumed, the study's work folder is removed if empty, then the error is rethrown.
 OutputFile& claim_fe_kij_table(const FeKijStudy& study, OutputSet& outputs);
 
+/// What `ferrodyn fe-kij` says before the run: the configurations and those already done in the
+/// work folder (one line).
+[[nodiscard]] std::string fe_kij_start_text(const FeKijStudy& study);
+/// ... and after it: the table written with this run's CPU and wall time, or, when interrupted,
+/// the finished points kept in the work folder for a resume (one line).
+[[nodiscard]] std::string fe_kij_end_text(const FeKijStudy& study, const FeKijReport& report);
+
 }  // namespace ferro::scenarios

@@ -24,10 +24,13 @@ struct MimSolveOutcome {
 [[nodiscard]] MimSolveOutcome solve_mim_files(const MimRequest& request,
                                               const std::string& fields_path, bool overwrite);
 
+/// MimTableSpec::default_spec() built on every hardware thread of the machine.
+[[nodiscard]] contact::MimTableSpec machine_table_spec();
+
 struct MimTableRequest {
   std::string out;       ///< HDF5 table to write (required)
   std::string map_path;  ///< CSV of table-versus-direct errors ("": none)
-  contact::MimTableSpec spec = contact::MimTableSpec::default_spec();
+  contact::MimTableSpec spec = machine_table_spec();
   int map_points = 200;  ///< points of the error map, >= 1
   bool overwrite = false;
 };

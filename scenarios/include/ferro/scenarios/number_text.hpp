@@ -2,12 +2,16 @@
 // Strict reading of numbers given as text (command-line values): one whole finite number, no
 // "nan", "inf", "", "1x"; with the range a value must lie in and the message when it does not.
 
+#include <limits>
 #include <string>
 
 namespace ferro::scenarios {
 
 /// The number in `text`, or NaN when it is not one whole finite number.
 [[nodiscard]] double strict_number(const std::string& text);
+
+/// The end of a NumberRange that has no bound.
+inline constexpr double kNoBound = std::numeric_limits<double>::infinity();
 
 /// A range of finite numbers lo..hi, ends open or closed; an infinite end: no bound on that side.
 struct NumberRange {

@@ -26,4 +26,12 @@ void write_pose_batch(const contact::WheelRailPair& pair, const std::string& in_
                       const std::string& out_path, const PoseInput& defaults, double estar,
                       bool overwrite, std::ostream& standard_output);
 
+/// `geometry search`: the pair of `options` (make_search_pair; E* from its shear modulus and
+/// Poisson ratio); with `batch` empty the contact points of `pose` as JSON (pose_result_json) on
+/// `standard_output`, else write_pose_batch of the CSV file `batch` to `out_path`. Throws
+/// std::invalid_argument when `pose` gives both a height and a load (named as `spelling` says).
+void search_poses(const SearchPairOptions& options, const PoseInput& pose,
+                  const std::string& batch, const std::string& out_path, bool overwrite,
+                  std::ostream& standard_output, Spelling spelling = Spelling::key);
+
 }  // namespace ferro::scenarios

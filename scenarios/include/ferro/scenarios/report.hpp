@@ -17,6 +17,10 @@ namespace ferro::scenarios {
 /// linear mode at the scene's speed.
 [[nodiscard]] std::string run_report(const Scene& scene, const RunSummary& summary);
 
+/// What `ferrodyn validate` prints for a scene that passed check_scene(): its file, name,
+/// schema, model, track, integrator, duration and speed, on one line.
+[[nodiscard]] std::string valid_scene_line(const std::string& path, const Scene& scene);
+
 /// The eigenvalue sweep per speed (at most `max_rows`, evenly strided): the least damped
 /// hunting mode (damping ratio, frequency, shape) and the least damped mode of each other class
 /// apart; the Hopf speed (a hunting mode crossing zero); the least damped modes at the scene's

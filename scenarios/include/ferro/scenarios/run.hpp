@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ferro/scenarios/parameters.hpp"
 #include "ferro/scenarios/scene.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "ferro/vehicle/stability.hpp"
@@ -24,7 +25,7 @@ struct RunOptions {
   /// (cheap: e.g. an atomic load); true stops the run at once.
   std::function<bool()> should_stop;
   std::string stop_reason = "interrupted";      ///< status message prefix when should_stop fired
-  /// Simulated seconds per wall-clock second (0 = as fast as possible). With pace 1 a run
+  /// Simulated seconds per wall-clock second, >= 0 (0 = as fast as possible). With pace 1 a run
   /// advances in real time, so it can be watched live.
   double pace = 0.0;
   /// Called with each sample: time [s] and the values of RunSummary::channels [SI].
@@ -32,6 +33,8 @@ struct RunOptions {
   /// false: no HDF5 (nor CSV) file; the samples reach the caller through on_sample only.
   bool write_output = true;
 };
+/// The options a user sets as parameters (see parameters.hpp): pace.
+[[nodiscard]] Parameters parameters(RunOptions& options);
 
 struct RunSummary {
   vehicle::IntegrationResult::Status status = vehicle::IntegrationResult::Status::kCompleted;
@@ -46,6 +49,7 @@ struct RunSummary {
   std::string csv_file;                       ///< empty when no CSV was asked for
   std::vector<vehicle::SignalInfo> channels;  ///< states then derived signals
   std::size_t state_count = 0;                ///< the first state_count channels are states
+  std::vector<std::string> plots;  ///< signals to draw: output.plots, else every state
   std::vector<double> peak_abs;               ///< max |value| per channel over the run
   std::vector<double> final_values;           ///< per channel at t_reached (last sample)
 };

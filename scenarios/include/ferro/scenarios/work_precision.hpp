@@ -85,8 +85,13 @@ struct WorkPrecisionReport {
   std::optional<std::size_t> best;
 };
 
-/// Runs the study. Throws std::invalid_argument naming the option for a bad integrator entry,
-/// tolerance or state name.
+/// The checks of the options run_work_precision makes before its first run, with the settled
+/// interval [0, settle + t_end] staying on the designed track. Throws std::invalid_argument
+/// naming the option.
+void check_work_precision(const Scene& scene, const WorkPrecisionOptions& options);
+
+/// Runs the study (check_work_precision first). Throws std::invalid_argument naming the option
+/// for a bad integrator entry, tolerance or state name.
 [[nodiscard]] WorkPrecisionReport run_work_precision(const Scene& scene,
                                                      const WorkPrecisionOptions& options);
 

@@ -114,6 +114,11 @@ struct WheelRailSpec {
   /// Geometry "table": HDF5 cache of the multi-point table, read when it was built from the
   /// same profiles, pair and grid, otherwise built and written there; empty: in memory only.
   std::string table_file;
+  /// Geometry "table": its yaw axis (the wheelset's yaw relative to the rails), symmetric from
+  /// -table_yaw_max to table_yaw_max in steps of table_yaw_step, yaw 0 a node [rad]. Both 0: no
+  /// yaw axis, the table answers at any yaw as at yaw 0.
+  double table_yaw_max = 0.0;
+  double table_yaw_step = 0.0;  ///< [rad]
   double track_gauge = 1.435;           ///< [m]
   double flange_back_distance = 1.360;  ///< [m]
   /// Flange-back position in wheel-profile coordinates [m]; NaN: the profile's smallest y

@@ -68,8 +68,10 @@ struct MultiPointTableParams {
 /// corners that differ along one axis, the candidates of one wheel (ordered by wheel-profile
 /// coordinate) are aligned order-preservingly at minimum cost, a match costing the distance in
 /// wheel-profile coordinate and an unmatched candidate kBranchMatch (so two candidates further
-/// apart than 2 kBranchMatch are never one branch); the links are closed transitively over the
-/// cell. A branch present at every corner is multilinearly interpolated; a branch present at
+/// apart than 2 kBranchMatch are never one branch); the links are closed over the cell, the
+/// closest first, leaving out a link that would give a branch two candidates at one corner (the
+/// edges of a cell may disagree where the contact races along the profile, more so across a yaw
+/// axis), so each branch keeps the links it agrees with. A branch present at every corner is multilinearly interpolated; a branch present at
 /// only some corners (born or dying inside the cell) is interpolated from those corners alone
 /// (weights renormalised) and fades in or out with W, the interpolation weight those corners
 /// carry: it gets the load share S(W) = 3 t^2 - 2 t^3, t = (W - 1/4) / (1/2) clamped to [0, 1]

@@ -19,6 +19,8 @@ namespace ferro::scenarios::analysis {
                                             bool all_rows = false);
 /// The ramp, the speed where the envelope decays for good and where its growth turns to decay.
 [[nodiscard]] std::string ramp_report(const RampStudy& study, const RampRequest& request);
+/// The heading printed before the branch is followed: the scene and the reduction factors.
+[[nodiscard]] std::string branch_heading(const Scene& scene, const BranchRequest& request);
 /// The branch's points (amplitudes of each wheelset in mm), the fold and its onset, the Hopf
 /// speed.
 [[nodiscard]] std::string branch_report(const KijRow& row, const std::vector<std::string>& names);

@@ -17,6 +17,7 @@
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/overrides.hpp"
 #include "ferro/scenarios/parameters.hpp"
+#include "ferro/scenarios/run.hpp"
 
 namespace ferro::scenarios::analysis {
 
@@ -31,6 +32,10 @@ struct SettleRequest {
   int periods = 5;                ///< periods the steady amplitude is measured over
   double rel_tol = 2e-3;          ///< relative amplitude change that counts as settled [-]
   double k11 = 1.0, k22 = 1.0;    ///< reduction factors on C11, C22 [-]
+  /// The factors k11, k22 (K23 and K33 following K22).
+  [[nodiscard]] contact::ReductionFactors reduction() const {
+    return contact::ReductionFactors::following_k22(k11, k22);
+  }
 };
 /// The settle options of `scene`'s solver; throws std::invalid_argument naming the bad value.
 [[nodiscard]] SettleOptions settle_options(const Scene& scene, const SettleRequest& request,
@@ -77,6 +82,22 @@ struct BranchRequest {
                                      const contact::ReductionFactors& k, std::vector<std::string>* names,
                                      const std::function<void(const BranchPoint&)>& on_point = {},
                                      Spelling spelling = Spelling::key);
+
+/// Linear eigenvalues against speed with reduction factors (the Hopf speed of the linear
+/// model): its own speed range, whatever the scene's analysis.eigen says.
+struct EigenRequest {
+  RunOverrides range = eigen_study_range();  ///< speed_min, speed_max, points
+  double k11 = 1.0, k22 = 1.0;              ///< reduction factors on C11, C22 [-]
+  /// 1 to 150 m/s, 150 speeds.
+  [[nodiscard]] static RunOverrides eigen_study_range();
+};
+/// `scene` with the request's reduction factors (K23, K33 following K22) and speed range;
+/// run_eigen() of it is the study. Throws std::invalid_argument naming the bad value.
+[[nodiscard]] Scene eigen_study_scene(const Scene& scene, const EigenRequest& request,
+                                      Spelling spelling = Spelling::key);
+/// The heading (scene, factors) and eigen_modes_report() of the study's sweep, 16 rows.
+[[nodiscard]] std::string eigen_study_report(const Scene& scene, const EigenRequest& request,
+                                             const EigenReport& report);
 
 /// The reduction factors of a study: one per value of `k`, set on both (K11 = K22 = K23 = K33),
 /// on k11 only or on k22 only (K23 and K33 following K22) (`coefficient`), the other from `base`.
@@ -126,5 +147,7 @@ struct AssessmentRequest {
 [[nodiscard]] Parameters parameters(BranchRequest& request);
 [[nodiscard]] Parameters parameters(KijStudyRequest& request);
 [[nodiscard]] Parameters parameters(AssessmentRequest& request);
+/// speed_min, speed_max, points, k11, k22.
+[[nodiscard]] Parameters parameters(EigenRequest& request);
 
 }  // namespace ferro::scenarios::analysis

@@ -17,6 +17,7 @@
 #include "ferro/scenarios/analysis/scene_analysis.hpp"
 #include "ferro/scenarios/analysis/studies.hpp"
 #include "ferro/scenarios/analysis/sweep_executor.hpp"
+#include "ferro/scenarios/claimed_output.hpp"
 #include "ferro/scenarios/model_factory.hpp"
 
 namespace ferro::scenarios::analysis {
@@ -121,6 +122,11 @@ struct SweepCallbacks {
   std::function<void(const SweepPointResult&, std::size_t done)> on_done;
   /// Polled before each point; true stops handing out points (finished ones stay recorded).
   std::function<bool()> should_stop;
+  /// Progress text for a terminal (progress_text.hpp): sweep_start_line() on rank 0 before the
+  /// first point, sweep_point_line() after each point of this rank unless `quiet`, and
+  /// sweep_stopped_line() when rank 0 ends before every point is finished.
+  std::function<void(const std::string& text)> progress;
+  bool quiet = false;
 };
 
 struct SweepOutcome {
@@ -140,5 +146,17 @@ struct SweepOutcome {
 [[nodiscard]] SweepOutcome run_sweep(const Scene& scene, const SweepRequest& request,
                                      SweepExecutor& executor, const SweepCallbacks& callbacks = {},
                                      Spelling spelling = Spelling::key);
+
+/// The files of a sweep: the output (`given`, else <output.file stem>_sweep.h5) and its journal
+/// <output>.points. The writing rank claims the output before any point is computed (a path that
+/// would be refused is refused at once; written as <output>.part until commit).
+struct SweepFiles {
+  std::string output, journal;
+  std::optional<ClaimedOutput> claimed;  ///< the writing rank's
+};
+/// Claims the files (on the writing rank) and points `request`'s output and journal at them.
+[[nodiscard]] SweepFiles claim_sweep_files(const Scene& scene, const std::string& given,
+                                           bool overwrite, bool no_plots, bool writer,
+                                           SweepRequest& request);
 
 }  // namespace ferro::scenarios::analysis
