@@ -163,7 +163,7 @@ py::dict bifurcation(const SceneSource& source, const py::kwargs& kw) {
   an::BranchRequest request;
   set_parameters(an::parameters(request), kw);
   std::vector<std::string> names;
-  const auto k = contact::ReductionFactors::following_k22(request.settle.k11, request.settle.k22);
+  const auto k = request.settle.reduction();
   const auto row = released(source.scene.path, [&] {
     return an::run_bifurcation(source.scene, request, k, &names, {}, scenarios::Spelling::key);
   });
