@@ -126,6 +126,10 @@ TEST(StopRequest, a_signal_in_the_first_milliseconds_leaves_an_interrupted_file)
     test::LimitedProcess p({test::ferrodyn_exe(), "run", "tests/scenarios/data/good_minimal.yaml",
                             "--pace", "1", "--no-plots", "-q", "-o", out},
                            {});
+    // The delay counts from the launcher's first instructions, where it blocks the stop
+    // signals: before them no program can protect itself, and on a loaded machine the exec'd
+    // launcher may wait milliseconds for a core.
+    ASSERT_TRUE(p.wait_until_stop_signals_blocked(10.0)) << delay_ms << " ms";
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
     p.signal(SIGTERM);
     EXPECT_EQ(p.wait_for(60.0), 143) << delay_ms << " ms: " << p.output();

@@ -90,6 +90,29 @@ class LimitedProcess {
     return true;
   }
   void signal(int sig) const { kill(pid_, sig); }
+  /// Waits (up to `seconds`) until the program has SIGINT and SIGTERM blocked or caught by a
+  /// handler, as read from /proc/PID/status (SigBlk, SigCgt): from then on a stop signal can no
+  /// longer end it by the default action. False if that did not happen in time or the process
+  /// is gone.
+  [[nodiscard]] bool wait_until_stop_signals_blocked(double seconds) const {
+    const unsigned long long mask = (1ULL << (SIGINT - 1)) | (1ULL << (SIGTERM - 1));
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    const std::string status = "/proc/" + std::to_string(pid_) + "/status";
+    while (std::chrono::steady_clock::now() < until) {
+      FILE* f = std::fopen(status.c_str(), "r");
+      if (f == nullptr) return false;
+      std::array<char, 256> line{};
+      unsigned long long blocked = 0, caught = 0, value = 0;
+      while (std::fgets(line.data(), line.size(), f) != nullptr) {
+        if (std::sscanf(line.data(), "SigBlk: %llx", &value) == 1) blocked = value;
+        if (std::sscanf(line.data(), "SigCgt: %llx", &value) == 1) caught = value;
+      }
+      std::fclose(f);
+      if ((blocked & mask) == mask || (caught & mask) == mask) return true;
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+    return false;
+  }
   /// Reads the rest of the output, waits; returns the exit code (128 + signal when killed).
   int wait() {
     std::string line;

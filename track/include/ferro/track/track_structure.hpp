@@ -54,7 +54,12 @@
 // lateral motion through the ballast's depth); the rail has no longitudinal motion (longitudinal
 // creep forces go to the ground); no pinned-pinned resonance (discrete support) and no
 // frequency dependence of pad and ballast; the static state of the track under its own weight is
-// the reference (displacements are from it).
+// the reference (displacements are from it). The lumping keeps the static receptance exactly but
+// not the resonances: against the same rail continuously or discretely supported by the same
+// seats, the default track's full-track and rail-on-pad receptance peaks lie 17 % higher (130 and
+// 477 Hz against 111 and 408 Hz) and the full-track peak is 35 % higher; the wheel on the track
+// (P2 mode, 58 Hz) is within 0.1 % in frequency and 7 % in damping (tests/track,
+// track_receptance_test.cpp).
 
 #include <limits>
 #include <string>
