@@ -382,9 +382,11 @@ void semi_hertz_solve_from_approach(const NormalProblem& p, double approach,
     ac = b * l * l;                            // A_c (eq. 19)
     kp = ref.peak_pressure / ref.semi_axis_x;  // p0_i / a_i, independent of the load
   };
-  // First estimate: the caller's curvature_y when given (a geometry source's point curvature,
-  // continuous in the pose), else the one of the samples around the minimum.
-  if (p.curvature_y > 0.0 && std::isfinite(p.curvature_y)) b_ref = p.curvature_y;
+  // First estimate: the larger of the caller's curvature_y (a geometry source's point curvature,
+  // continuous in the pose) and the one of the samples around the minimum. The larger, not the
+  // caller's alone: where the point's curvature passes through zero (a nearly conformal point)
+  // the samples' curvature takes over continuously instead of replacing it at B = 0.
+  if (std::isfinite(p.curvature_y)) b_ref = std::max(b_ref, p.curvature_y);
   solve_with(b_ref);
   if (options.curvature == SemiHertzOptions::Curvature::kFit) {
     for (int pass = 0; pass < kApproachFitPasses; ++pass) {

@@ -49,7 +49,7 @@ struct SemiHertzScratch {
 /// minimum is another point of the source, so each point keeps its own basin and a joined run is
 /// split at its barrier). semi_hertz_solve_from_approach() then gives the patches (usually one;
 /// strips, equivalent ellipse, load) at the point's penetration, with A = the point's
-/// curvature_a and its curvature_b as the first estimate of B_ref; each patch carries
+/// curvature_a and its curvature_b as the caller's first estimate of B_ref; each patch carries
 /// approach = penetration. Returns scratch.solution (no patch
 /// when penetration <= 0). No allocation once the scratch buffers have grown. Throws
 /// std::invalid_argument on NaN penetration and where semi_hertz_solve() does (e.g. the basin's

@@ -44,8 +44,9 @@ struct SemiHertzWorkspace {
 /// Semi-Hertz patches for a rigid approach delta = `approach` [m] (>= 0) instead of a load;
 /// problem.normal_force is not read. The reference Hertz ellipse is the one of (A, B_ref) at that
 /// approach, h0 = delta n^2 / (r (1 + lambda)) (eq. 21), and each patch's normal_force is the load
-/// its strips carry. B_ref (curvature = fit): starts from problem.curvature_y when it is > 0
-/// (else from the samples around the minimum), then two passes of a least-squares parabola over
+/// its strips carry. B_ref (curvature = fit): starts from the larger of problem.curvature_y (when
+/// given) and the curvature of the samples around the minimum (so that it stays continuous where
+/// a caller's curvature passes through zero, a nearly conformal point), then two passes of a least-squares parabola over
 /// the lobe at h0 weighted by (h0 - z) / h0, so that B_ref and the load are continuous in the
 /// approach and the gap (the unweighted lobe fit of semi_hertz_solve() jumps as samples enter
 /// the lobe, which an integrator's right-hand side must not do); on a quadratic gap both fits
