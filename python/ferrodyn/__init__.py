@@ -47,6 +47,7 @@ class RunResult:
     names, units, descriptions   per signal, in `data` order; the first `state_count` are states
     status        'completed', 'interrupted' or 'solver_failure'; message says why
     t_reached [s], samples, steps, rhs_evaluations, wall_seconds [s]
+    jacobians, newton_iterations, step_splits   bdf2's counts (0 for the other integrators)
     output_file   the HDF5 file written, or None
     metadata      scene, model, solver and program (as the HDF5 file's attributes)
     result["wheelset_1.y"] is result.signals["wheelset_1.y"]; str(result) is the run's summary.
@@ -61,7 +62,8 @@ class RunResult:
         self.state_count = d["state_count"]
         self.signals = {name: self.data[i] for i, name in enumerate(self.names)}
         for key in ("status", "message", "t_reached", "samples", "steps", "rhs_evaluations",
-                    "wall_seconds", "output_file", "metadata"):
+                    "jacobians", "newton_iterations", "step_splits", "wall_seconds",
+                    "output_file", "metadata"):
             setattr(self, key, d[key])
         self._summary = d["summary"]
 

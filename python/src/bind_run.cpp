@@ -74,6 +74,9 @@ py::dict result_dict(const scenarios::Scene& scene, const scenarios::RunSummary&
   r["samples"] = s.samples;
   r["steps"] = s.steps;
   r["rhs_evaluations"] = s.rhs_evaluations;
+  r["jacobians"] = s.jacobians;
+  r["newton_iterations"] = s.newton_iterations;
+  r["step_splits"] = s.step_splits;
   r["wall_seconds"] = s.wall_seconds;
   r["output_file"] = s.output_file.empty() ? py::object(py::none()) : py::object(py::str(s.output_file));
   r["metadata"] = metadata(scene);

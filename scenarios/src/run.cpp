@@ -367,6 +367,9 @@ vehicle::IntegrationResult integrate_in_blocks(vehicle::Integrator& integrator,
     auto part = integrator.integrate(system, x, times, observer);
     result.steps += part.steps;
     result.rhs_evaluations += part.rhs_evaluations;
+    result.jacobians += part.jacobians;
+    result.newton_iterations += part.newton_iterations;
+    result.step_splits += part.step_splits;
     result.status = part.status;
     result.t_reached = part.t_reached;
     result.message = part.message;
@@ -391,6 +394,9 @@ void record_result(RunSummary& summary, const vehicle::IntegrationResult& result
   summary.t_reached = sink.writer ? sink.writer->last_written_time() : sink.last_sample_time;
   summary.steps = result.steps;
   summary.rhs_evaluations = result.rhs_evaluations;
+  summary.jacobians = result.jacobians;
+  summary.newton_iterations = result.newton_iterations;
+  summary.step_splits = result.step_splits;
   summary.message = result.message;
   if (sink.stopped_by_request ||
       result.status == vehicle::IntegrationResult::Status::kInterrupted) {
@@ -425,6 +431,9 @@ void close_run_file(H5File& file, const RunSummary& summary, OutputSet& outputs)
   file.set_attribute("/", "wall_time_s", summary.wall_seconds);
   file.set_attribute("/", "steps", summary.steps);
   file.set_attribute("/", "rhs_evaluations", summary.rhs_evaluations);
+  file.set_attribute("/", "jacobians", summary.jacobians);
+  file.set_attribute("/", "newton_iterations", summary.newton_iterations);
+  file.set_attribute("/", "step_splits", summary.step_splits);
   set_status(file, summary.status_text, summary.message, summary.t_reached);
   file.close();
   outputs.commit_all();

@@ -41,6 +41,8 @@ def test_run_matches_the_program_bitwise(scenes, tmp_path, scene, args, kwargs):
     assert written.attrs["status"] == "completed"
     assert r.metadata["integrator"] == ref.attrs["integrator"]
     assert r.samples == len(ref.time) and r.steps == ref.attrs["steps"]
+    for key in ("rhs_evaluations", "jacobians", "newton_iterations", "step_splits"):
+        assert getattr(r, key) == ref.attrs[key], key
 
 
 def test_run_without_file_and_dataframe(scenes):

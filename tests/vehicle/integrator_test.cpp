@@ -295,6 +295,13 @@ TEST(FixedStep, bdf2_damps_a_stiff_component_in_one_step) {
   // A first step by implicit Euler from the offset leaves 1 / (1 - h lambda) = 1e-4 of it;
   // BDF2's own error on cos t at h = 0.01 is ~ h^2 / lambda-scaled, far below that.
   EXPECT_LT(max_err, 2e-4);
+  // Linear: Newton with the exact Jacobian converges at its first correction, every step, and
+  // never splits; one right-hand side per iteration, one more per Jacobian column.
+  EXPECT_EQ(r.step_splits, 0);
+  EXPECT_GE(r.newton_iterations, r.steps);
+  EXPECT_LE(r.newton_iterations, 2 * r.steps);
+  EXPECT_GE(r.jacobians, 1);
+  EXPECT_GE(r.rhs_evaluations, r.newton_iterations + r.jacobians);
 }
 
 // x' = -1 for x > 0, +1 for x <= 0: f jumps at 0, where the solution sticks (chatters within
@@ -327,6 +334,9 @@ TEST(FixedStep, bdf2_steps_over_a_discontinuity_of_the_right_hand_side) {
       });
   ASSERT_EQ(r.status, IntegrationResult::Status::kCompleted) << r.message;
   EXPECT_LT(std::abs(last), 1e-2 * s.fixed_step);
+  // Sticking at the jump, no implicit step of the full size has a solution: the steps after
+  // t = 0.25 split, every one of them.
+  EXPECT_GE(r.step_splits, 70);
 }
 
 TEST(FixedStep, odeint_bs3_interpolates_outputs_between_steps_at_the_method_order) {

@@ -292,6 +292,7 @@ IntegrationResult Bdf2::counted(IntegrationResult result) const {
   result.rhs_evaluations = rhs_count_;
   result.jacobians = jacobians_;
   result.newton_iterations = iterations_;
+  result.step_splits = splits_;
   return result;
 }
 

@@ -45,6 +45,9 @@ struct RunSummary {
   double wall_seconds = 0.0;
   long steps = 0;
   long rhs_evaluations = 0;
+  long jacobians = 0;          ///< bdf2's Jacobians; 0 for the other integrators
+  long newton_iterations = 0;  ///< bdf2's Newton iterations; 0 for the other integrators
+  long step_splits = 0;        ///< bdf2's split steps (Newton failures); 0 for the others
   std::string output_file;                    ///< empty when no file was written
   std::string csv_file;                       ///< empty when no CSV was asked for
   std::vector<vehicle::SignalInfo> channels;  ///< states then derived signals

@@ -84,6 +84,9 @@ struct IntegrationResult {
   long rhs_evaluations = 0;   ///< right-hand-side calls (Jacobians' included)
   long jacobians = 0;         ///< Jacobians formed (bdf2; 0 where the package does not say)
   long newton_iterations = 0; ///< Newton iterations (bdf2; 0 where the package does not say)
+  /// Steps split into two implicit-Euler halves because Newton did not converge with a fresh
+  /// Jacobian, each half counted again when it splits (bdf2; 0 for the other integrators).
+  long step_splits = 0;
 };
 
 [[nodiscard]] std::string to_string(IntegrationResult::Status status);
