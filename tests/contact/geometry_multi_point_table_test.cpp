@@ -47,17 +47,21 @@ constexpr double kAngleTol = 0.25;                 // [rad], every point
 
 using ferro::test::a22_pair;
 
+// The table's lateral and roll grid: -4 ... 10 mm by 0.1 mm, +-6 mrad by 1 mrad.
+fc::MultiPointTableParams a22_grid() {
+  fc::MultiPointTableParams tp;
+  tp.lateral_min = -4e-3;
+  tp.lateral_max = 10e-3;
+  tp.lateral_step = 0.1e-3;
+  tp.roll_min = -0.006;
+  tp.roll_max = 0.006;
+  tp.roll_step = 1e-3;
+  return tp;
+}
+
 const fc::MultiPointContactTable& a22_table() {
-  static const fc::MultiPointContactTable t = [] {
-    fc::MultiPointTableParams tp;
-    tp.lateral_min = -4e-3;
-    tp.lateral_max = 10e-3;
-    tp.lateral_step = 0.1e-3;
-    tp.roll_min = -0.006;
-    tp.roll_max = 0.006;
-    tp.roll_step = 1e-3;
-    return fc::MultiPointContactTable::build(*a22_pair(), tp);
-  }();
+  static const fc::MultiPointContactTable t =
+      fc::MultiPointContactTable::build(*a22_pair(), a22_grid());
   return t;
 }
 
@@ -333,13 +337,7 @@ namespace {
 // attack of a leading wheelset in a sharp curve (15.6 mrad in R 150 m).
 const fc::MultiPointContactTable& a22_yaw_table() {
   static const fc::MultiPointContactTable t = [] {
-    fc::MultiPointTableParams tp;
-    tp.lateral_min = -4e-3;
-    tp.lateral_max = 10e-3;
-    tp.lateral_step = 0.1e-3;
-    tp.roll_min = -0.006;
-    tp.roll_max = 0.006;
-    tp.roll_step = 1e-3;
+    fc::MultiPointTableParams tp = a22_grid();
     tp.yaw_min = -0.020;
     tp.yaw_max = 0.020;
     tp.yaw_step = 0.005;
