@@ -136,7 +136,7 @@ py::object run(const SceneSource& source, const py::object& output, const py::ob
   }
   py::dict result = result_dict(scene, summary, std::move(samples));
   watch.raise_if_stopped(result);
-  return std::move(result);
+  return result;
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace ferro::cli {
 [[nodiscard]] std::string python_program();
 
 /// Path of a script shipped in tools/ (e.g. "ferroplot.py"): $FERRO_TOOLS_DIR, beside the
-/// installed program (<prefix>/share/ferrodyn for <prefix>/libexec/ferrodyn/ferrodyn), or the
+/// installed program (<prefix>/share/ferrodyn for <prefix>/libexec/ferrodyn/ferrodyn-program), or the
 /// source tree's tools/. Throws std::runtime_error naming the places looked at when none has it.
 [[nodiscard]] std::string tool_script(const std::string& name);
 

@@ -1,5 +1,5 @@
 /* The `ferrodyn` command: blocks SIGINT and SIGTERM, then runs the program itself
- * (libexec/ferrodyn/ferrodyn beside this file's bin/ folder) with the same arguments.
+ * (libexec/ferrodyn/ferrodyn-program beside this file's bin/ folder) with the same arguments.
  *
  * Why: the program loads about 70 shared libraries before its first instruction runs (tens of
  * milliseconds), and a stop signal arriving meanwhile would end it by the default action, before
@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   char* slash = strrchr(self, '/');
   if (slash != NULL) *slash = '\0';  /* .../bin */
   char program[PATH_MAX];
-  if (snprintf(program, sizeof program, "%s/../libexec/ferrodyn/ferrodyn", self) >=
+  if (snprintf(program, sizeof program, "%s/../libexec/ferrodyn/ferrodyn-program", self) >=
       (int)sizeof program) {
     fprintf(stderr, "ferrodyn: installation path too long\n");
     return 127;

@@ -11,7 +11,7 @@ cmake -S "$source_dir/tests/install/consumer" -B "$scratch/consumer" -G Ninja \
 cmake --build "$scratch/consumer" > "$scratch/build.log"
 "$scratch/consumer/consumer"
 test -x "$scratch/prefix/bin/ferrodyn"
-test -x "$scratch/prefix/libexec/ferrodyn/ferrodyn"
+test -x "$scratch/prefix/libexec/ferrodyn/ferrodyn-program"
 test -f "$scratch/prefix/share/ferrodyn/ferroplot.py"
 "$scratch/prefix/bin/ferrodyn" --version
 # The Python module, when built: installed under the prefix at FERRO_PYTHON_INSTALL_DIR and
