@@ -304,7 +304,7 @@ void apply_wheel_rail(const ModelData& m, const BodyData& body, BodyKinematics& 
     const RailRelativePose rel = pose_relative_to(rail, w.centre, k, body.r0);
     const contact::WheelsetPose pose = to_contact_pose(rel);
     if (left_right != nullptr) record_pose(left_right, rel, one_query ? -1 : side);
-    m.in.geometry->contacts(pose, scratch.points);
+    m.in.geometry->contacts(pose, scratch.points, scratch.geometry);
     PoseRates rates;
     if (damped) rates = pose_rates(rail, rel, k, body.r0);
     for (const contact::WheelRailContact& c : scratch.points) {

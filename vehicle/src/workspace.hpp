@@ -79,6 +79,7 @@ struct PointTotals {
 /// Scratch of the wheel-rail stage.
 struct WheelRailScratch {
   std::vector<contact::WheelRailContact> points;
+  contact::ContactScratch geometry;  ///< the geometry source's buffers
   contact::SemiHertzScratch semi_hertz;
 };
 
