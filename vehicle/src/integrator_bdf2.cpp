@@ -20,8 +20,9 @@
 // points; converged when the weighted RMS norm of the correction (weights 1 / (rtol |y_i| +
 // atol_i), atol_i = atol times the system's tolerance scale of state i) falls below 0.1 (1 - rho)
 // / rho given the observed contraction rho, or below 0.01 when the corrected iterate's residual
-// is already within the tolerance. The system's output states stay out of both tests: linear
-// with a constant Jacobian, Newton solves them exactly for the iterate of the other states. The
+// is already within the tolerance. The system's output states stay out of both tests and out of
+// the iterations: affine in themselves with a constant Jacobian and read by no other state, they
+// are solved once, after the others have converged, from the last residual and correction. The
 // Newton matrix is factored by a sparse LU on the system's Jacobian pattern (output_blocks.hpp),
 // its fill-reducing column ordering found on the first factorisation of each kept factor slot
 // and reused for the run. A Newton that diverges (a correction more than twice the
@@ -173,6 +174,19 @@ class Bdf2 final : public Integrator {
     constexpr double kRdiv = 2.0;
     const Factor& matrix = factor(gamma_h);
     Vector &f = f_, &r = r_, &d = d_;  // the run's work vectors
+    // The iterations correct the other states only; the output states, which feed nothing back
+    // and are affine in themselves, keep the predictor's values and are solved once, from the
+    // last iteration's residual and correction (the block solve's second half): the same
+    // Newton step for them as correcting them at every iteration, at one output solve a step.
+    for (const Eigen::Index i : blocks_->output) d[i] = 0.0;
+    const auto converged = [&] {
+      matrix.lu.solve_outputs(matrix.matrix, minus_r_.data(), d.data());
+      for (const Eigen::Index i : blocks_->output) {
+        if (!std::isfinite(d[i])) return false;
+        y[i] += d[i];
+      }
+      return true;
+    };
     double previous = 0.0, rho = 0.0;
     for (int it = 0; it < 8; ++it) {
       try {
@@ -183,7 +197,7 @@ class Bdf2 final : public Integrator {
       ++iterations_;
       r = y - psi - gamma_h * f;
       minus_r_ = -r;
-      matrix.lu.solve(matrix.matrix, minus_r_.data(), d.data());
+      matrix.lu.solve_dynamic(matrix.matrix, minus_r_.data(), d.data());
       if (!d.allFinite()) return false;
       y += d;
       const double norm = wrms(d, y);
@@ -192,11 +206,11 @@ class Bdf2 final : public Integrator {
       // tolerance: at a discontinuity of f (a contact point's geometry stepping between two table
       // cells) the iterates alternate between two values that the split steps bring within that,
       // while a Jacobian formed across the jump (huge) gives tiny corrections of a wrong iterate.
-      if (norm < 0.01 && wrms(r, y) < 1.0) return true;
+      if (norm < 0.01 && wrms(r, y) < 1.0) return converged();
       if (it > 0) {
         rho = norm / previous;
         if (rho > kRdiv) return false;
-        if (rho < 1.0 && norm * rho / (1.0 - rho) < 0.1) return true;
+        if (rho < 1.0 && norm * rho / (1.0 - rho) < 0.1) return converged();
       }
       if (it >= 4) slow_ = true;  // converging, but slowly: refresh before the next step
       previous = norm;

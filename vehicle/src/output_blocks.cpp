@@ -177,6 +177,11 @@ bool OutputBlockLu::compute(const OutputBlockMatrix& m) {
 }
 
 void OutputBlockLu::solve(const OutputBlockMatrix& m, const double* b, double* x) const {
+  solve_dynamic(m, b, x);
+  solve_outputs(m, b, x);
+}
+
+void OutputBlockLu::solve_dynamic(const OutputBlockMatrix& m, const double* b, double* x) const {
   const OutputBlocks& st = *m.blocks;
   bd_.resize(static_cast<Eigen::Index>(st.dynamic.size()));
   for (std::size_t i = 0; i < st.dynamic.size(); ++i) bd_[static_cast<Eigen::Index>(i)] = b[st.dynamic[i]];
@@ -188,6 +193,10 @@ void OutputBlockLu::solve(const OutputBlockMatrix& m, const double* b, double* x
     xd_.setConstant(bd_.size(), std::numeric_limits<double>::quiet_NaN());
   }
   for (std::size_t i = 0; i < st.dynamic.size(); ++i) x[st.dynamic[i]] = xd_[static_cast<Eigen::Index>(i)];
+}
+
+void OutputBlockLu::solve_outputs(const OutputBlockMatrix& m, const double* b, double* x) const {
+  const OutputBlocks& st = *m.blocks;
   if (st.output.empty()) return;
   // b_o - C x_d, the entries subtracted one by one in their order (columns increasing).
   bo_.resize(static_cast<Eigen::Index>(st.output.size()));

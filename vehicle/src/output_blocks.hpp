@@ -80,6 +80,13 @@ class OutputBlockLu {
   bool compute(const OutputBlockMatrix& m);
   /// x = M^-1 b over the whole state vector (b and x of the matrix's state count, distinct).
   void solve(const OutputBlockMatrix& m, const double* b, double* x) const;
+  /// The first half of solve(): x's dynamic entries (x_d = A^-1 b_d); its output entries are
+  /// not written. A Newton iteration whose convergence test leaves the output states out
+  /// needs no more until it has converged.
+  void solve_dynamic(const OutputBlockMatrix& m, const double* b, double* x) const;
+  /// The second half: x's output entries from b's and the x_d of the last solve_dynamic()
+  /// (x_o = D^-1 (b_o - C x_d)); its dynamic entries are not written.
+  void solve_outputs(const OutputBlockMatrix& m, const double* b, double* x) const;
 
  private:
   using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
