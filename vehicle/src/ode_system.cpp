@@ -16,7 +16,12 @@ std::vector<std::vector<int>> jacobian_column_groups(const std::vector<std::vect
     return groups;
   }
   std::vector<std::vector<char>> used;  // rows touched by each group
-  for (std::size_t j = 0; j < n; ++j) {
+  std::vector<std::size_t> order(n);
+  for (std::size_t j = 0; j < n; ++j) order[j] = j;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return pattern[a].size() > pattern[b].size();
+  });
+  for (const std::size_t j : order) {
     std::size_t g = 0;
     for (; g < groups.size(); ++g) {
       const bool clash = std::any_of(pattern[j].begin(), pattern[j].end(), [&](int i) {
@@ -31,6 +36,7 @@ std::vector<std::vector<int>> jacobian_column_groups(const std::vector<std::vect
     groups[g].push_back(static_cast<int>(j));
     for (int i : pattern[j]) used[g][static_cast<std::size_t>(i)] = 1;
   }
+  for (std::vector<int>& group : groups) std::sort(group.begin(), group.end());
   return groups;
 }
 
