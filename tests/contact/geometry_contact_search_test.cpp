@@ -209,6 +209,34 @@ TEST(geometry_contact_search, yawed_flange_contact_leads_by_closed_form) {
   EXPECT_TRUE(seen_flange);
 }
 
+// Every candidate is a point of both surfaces: where a wheel section's nearest point falls past
+// an end of the rail profile (the flange 9 mm past flange contact and yawed by 15 mrad reaches
+// beyond the gauge face's last point, whose coarse scan estimate still shows a minimum) there is
+// no surface to touch and no candidate. Oracle: a candidate has a rolling radius near r0, finite
+// curvatures and a gap below the "no rail" value of 1 m, over the yaw axis of the sharp-curve
+// scene's table around that pose (its cache refused to load a candidate with A = inf).
+TEST(geometry_contact_search, candidates_lie_on_the_rail_under_yaw_past_flange_contact) {
+  const fc::WheelRailPair pair = a22_pair();
+  int checked = 0;
+  for (const double lateral : {-9.2e-3, -8.7e-3, 8.2e-3, 8.7e-3, -12e-3, 12e-3}) {
+    for (const double roll : {-1.5e-3, 0.0, 1.5e-3}) {
+      for (const double yaw : {-0.025, -0.015, 0.0, 0.015, 0.025}) {
+        const fc::WheelsetPose pose{lateral, 0.0, roll, yaw};
+        for (const fc::Side side : {fc::Side::left, fc::Side::right}) {
+          for (const fc::ContactPoint& p : fc::candidate_points(pair, pose, side)) {
+            ++checked;
+            EXPECT_LT(p.vertical_gap, 0.1) << lateral << " " << roll << " " << yaw;
+            EXPECT_NEAR(p.rolling_radius, 0.46, 0.05) << lateral << " " << roll << " " << yaw;
+            EXPECT_TRUE(std::isfinite(p.curvature_a) && std::isfinite(p.curvature_b))
+                << lateral << " " << roll << " " << yaw;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 180);
+}
+
 TEST(geometry_contact_search, rolling_radius_is_distance_to_axle) {
   const fc::WheelRailPair pair = a22_pair();
   fc::WheelsetPose pose{7.0e-3, 0.0, -0.00639300, 0.0168};

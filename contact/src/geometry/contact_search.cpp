@@ -165,8 +165,8 @@ double refine_extremum(const SideContext& c, double yw, double h, double sense) 
   return yw;
 }
 
-ContactPoint make_point(const SideContext& c, Side side, double yw) {
-  const Section s = section_min(c, yw);
+// The candidate point of the wheel section at yw, whose smallest gap is s (valid).
+ContactPoint make_point(const SideContext& c, Side side, double yw, const Section& s) {
   ContactPoint p;
   p.side = side;
   p.x = s.px;
@@ -321,21 +321,33 @@ std::vector<ContactPoint> candidate_points(const WheelRailPair& pair, const Whee
   // Barrier carried over skipped candidates: its value and scan section.
   double pending = -kFar;
   std::size_t k_pending = 0;
+  // A skipped candidate's barrier and gap estimate carry over to the next one's barrier.
+  const auto skip = [&](const Min& m) {
+    if (std::isfinite(m.barrier) && m.barrier > pending) {
+      pending = m.barrier;
+      k_pending = m.k_barrier;
+    }
+    if (g[m.k] > pending) {
+      pending = g[m.k];
+      k_pending = m.k;
+    }
+  };
   for (const Min& m : mins) {
     if (g[m.k] > max_gap + kEstimateMargin) {
-      if (std::isfinite(m.barrier) && m.barrier > pending) {
-        pending = m.barrier;
-        k_pending = m.k_barrier;
-      }
-      if (g[m.k] > pending) {
-        pending = g[m.k];
-        k_pending = m.k;
-      }
+      skip(m);
       continue;
     }
     const double y0 = wheel.y_min() + h * static_cast<double>(m.k);
     const double yw = refine_extremum(c, y0, h, 1.0);
-    ContactPoint p = make_point(c, side, yw);
+    const Section section = section_min(c, yw);
+    if (!section.valid) {
+      // The section's nearest point lies past an end of the rail profile (a flange reaching
+      // beyond the gauge face's last point under yaw, where the scan's estimate still found a
+      // minimum): no surface to touch there.
+      skip(m);
+      continue;
+    }
+    ContactPoint p = make_point(c, side, yw, section);
     const bool from_pending = pending > m.barrier;
     if (std::isfinite(m.barrier) || from_pending) {
       // The barrier refined to the section-gap maximum near its scan section (the scan's
