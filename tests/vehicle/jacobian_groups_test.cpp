@@ -14,6 +14,7 @@
 #include "ferro/vehicle/ode_system.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 #include "manchester_config.hpp"
+#include "model_helpers.hpp"
 
 namespace ferro::vehicle {
 namespace {
@@ -23,12 +24,7 @@ TEST(JacobianColumnGroups, manchester_vehicle_on_the_discrete_track_reaches_the_
   in.track_structure.kind = track::TrackStructureSpec::Kind::discrete;
   in.config = testing::manchester_vehicle1(9.81);
   WheelRailSpec& wr = in.config.wheel_rail;
-  wr.geometry = "conical";
-  wr.nominal_radius = 0.46;
-  wr.conicity = 0.1;
-  wr.contact_half_distance = 0.75;
-  wr.conical_curvature_a = 1.0 / (2.0 * 0.46);
-  wr.conical_curvature_b = 1.0 / (2.0 * 0.3);
+  testing::use_thesis_cone(wr);
   in.geometry = make_geometry_source(wr, FERRO_DATA_DIR);
   in.speed.initial = 30.0;
   const VehicleModel m(in);

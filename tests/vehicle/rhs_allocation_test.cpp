@@ -19,6 +19,7 @@
 
 #include "ferro/vehicle/vehicle_model.hpp"
 #include "manchester_config.hpp"
+#include "model_helpers.hpp"
 
 namespace {
 std::atomic<long> g_news{0};
@@ -39,16 +40,9 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 namespace ferro::vehicle {
 namespace {
 
-constexpr double kG = 9.81;
+using testing::signal;
 
-double signal(const VehicleModel& m, const std::vector<double>& values, const std::string& name) {
-  const auto info = m.signal_info();
-  for (std::size_t i = 0; i < info.size(); ++i) {
-    if (info[i].name == name) return values[i];
-  }
-  ADD_FAILURE() << "no signal " << name;
-  return NAN;
-}
+constexpr double kG = 9.81;
 
 TEST(VehicleRhsAllocation, table_geometry_on_the_discrete_track_allocates_nothing) {
   VehicleModelInputs in;

@@ -14,6 +14,7 @@
 #include "ferro/track/irregularity.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 #include "manchester_config.hpp"
+#include "model_helpers.hpp"
 
 namespace ferro::vehicle {
 namespace {
@@ -27,12 +28,7 @@ VehicleModelInputs wheelset_on(bool rolled_rails) {
   VehicleModelInputs in;
   in.config = testing::manchester_vehicle1(kG);
   WheelRailSpec& wr = in.config.wheel_rail;
-  wr.geometry = "conical";  // a true cone: the penetrations depend on the lateral shift
-  wr.nominal_radius = 0.46;
-  wr.conicity = 0.1;
-  wr.contact_half_distance = 0.75;
-  wr.conical_curvature_a = 1.0 / (2.0 * 0.46);
-  wr.conical_curvature_b = 1.0 / (2.0 * 0.3);
+  testing::use_thesis_cone(wr);  // a true cone: the penetrations depend on the lateral shift
   in.geometry = make_geometry_source(wr, FERRO_DATA_DIR);
   in.selection.scope = "wheelset";
   auto irr = std::make_shared<track::IrregularitySum>();

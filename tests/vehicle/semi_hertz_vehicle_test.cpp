@@ -17,9 +17,12 @@
 #include "ferro/contact/normal/hertz.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 #include "manchester_config.hpp"
+#include "model_helpers.hpp"
 
 namespace ferro::vehicle {
 namespace {
+
+using testing::signal;
 
 using testing::ManchesterMasses;
 
@@ -51,15 +54,6 @@ VehicleModelInputs manchester(std::shared_ptr<const contact::ContactGeometrySour
   in.geometry = std::move(geometry);
   in.speed.initial = speed;
   return in;
-}
-
-double signal(const VehicleModel& m, const std::vector<double>& values, const std::string& name) {
-  const auto info = m.signal_info();
-  for (std::size_t i = 0; i < info.size(); ++i) {
-    if (info[i].name == name) return values[i];
-  }
-  ADD_FAILURE() << "no signal " << name;
-  return NAN;
 }
 
 }  // namespace

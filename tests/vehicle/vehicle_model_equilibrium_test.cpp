@@ -12,22 +12,16 @@
 #include "ferro/track/kinematics.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 #include "manchester_config.hpp"
+#include "model_helpers.hpp"
 
 namespace ferro::vehicle {
 namespace {
 
+using testing::signal;
+
 using testing::ManchesterMasses;
 
 constexpr double kG = 9.81;
-
-double signal(const VehicleModel& m, const std::vector<double>& values, const std::string& name) {
-  const auto info = m.signal_info();
-  for (std::size_t i = 0; i < info.size(); ++i) {
-    if (info[i].name == name) return values[i];
-  }
-  ADD_FAILURE() << "no signal " << name;
-  return NAN;
-}
 
 std::shared_ptr<const contact::ContactGeometrySource> cone(double gamma) {
   contact::ConicalContactParams g;

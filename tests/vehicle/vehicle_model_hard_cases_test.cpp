@@ -15,6 +15,7 @@
 #include "ferro/track/irregularity.hpp"
 #include "ferro/vehicle/integrator.hpp"
 #include "manchester_config.hpp"
+#include "model_helpers.hpp"
 #include "ferro/vehicle/vehicle_model.hpp"
 
 namespace ferro::vehicle {
@@ -30,12 +31,8 @@ VehicleModelInputs manchester(double speed, const std::string& geometry = "conic
   if (flexible) in.track_structure.kind = track::TrackStructureSpec::Kind::discrete;
   in.config = testing::manchester_vehicle1(kG);
   WheelRailSpec& wr = in.config.wheel_rail;
+  testing::use_thesis_cone(wr);
   wr.geometry = geometry;
-  wr.nominal_radius = 0.46;
-  wr.conicity = 0.1;
-  wr.contact_half_distance = 0.75;
-  wr.conical_curvature_a = 1.0 / (2.0 * 0.46);
-  wr.conical_curvature_b = 1.0 / (2.0 * 0.3);
   wr.wheel_profile = "profiles/MBench_S1002_v3.prw";
   wr.rail_profile = "profiles/MBench_UIC60_v3.prr";
   wr.flange_back_y = -0.070;
