@@ -391,6 +391,39 @@ std::vector<double> H5File::read_array(const std::string& dataset, Dims* dims_ou
   return out;
 }
 
+Dims H5File::dimensions(const std::string& dataset) const {
+  const std::string what = "read dimensions of " + dataset;
+  Id d(check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), what, path_), H5Dclose);
+  Id space(check_id(H5Dget_space(d.get()), what, path_), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  if (rank < 0) fail(what, path_);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  if (rank > 0) check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), what, path_);
+  return Dims(dims.begin(), dims.end());
+}
+
+void H5File::read_rows(const std::string& dataset, std::uint64_t first, std::uint64_t rows,
+                       std::span<double> out) const {
+  const std::string what = fmt::format("read rows {}-{} of {}", first, first + rows, dataset);
+  Id d(check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), what, path_), H5Dclose);
+  Id space(check_id(H5Dget_space(d.get()), what, path_), H5Sclose);
+  hsize_t dims[2] = {0, 0};
+  if (H5Sget_simple_extent_ndims(space.get()) != 2 ||
+      H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 || first + rows > dims[0] ||
+      out.size() != rows * dims[1]) {
+    throw Hdf5Error(fmt::format("HDF5: {} in '{}': not a 2-D dataset holding those rows, or the "
+                                "buffer is not rows x columns",
+                                what, path_));
+  }
+  if (rows == 0) return;
+  const hsize_t start[2] = {first, 0}, count[2] = {rows, dims[1]};
+  check(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr), what,
+        path_);
+  Id memory(check_id(H5Screate_simple(2, count, nullptr), what, path_), H5Sclose);
+  check(H5Dread(d.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, out.data()),
+        what, path_);
+}
+
 std::string H5File::read_text(const std::string& dataset) const {
   const std::string what = "read text " + dataset;
   Id d(check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), what, path_), H5Dclose);

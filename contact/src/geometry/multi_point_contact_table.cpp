@@ -655,7 +655,10 @@ MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path
     throw std::invalid_argument(fmt::format("{}: dataset 'node_offset' has {} values, expected {}",
                                             path, offsets.size(), n_nodes + 1));
   }
-  const std::vector<double> c = read_dataset("candidates");
+  if (!file.exists("candidates")) {
+    throw std::invalid_argument(fmt::format("{}: missing dataset 'candidates'", path));
+  }
+  dims = file.dimensions("candidates");
   if (dims.size() != 2 || dims[1] != static_cast<std::uint64_t>(kFields)) {
     throw std::invalid_argument(
         fmt::format("{}: dataset 'candidates' must be [n x {}]", path, kFields));
@@ -672,18 +675,26 @@ MultiPointContactTable MultiPointContactTable::load_hdf5(const std::string& path
     }
     t.node_offset_[i] = static_cast<std::size_t>(o);
   }
+  // By blocks of rows: the file's rows are not held beside the candidates made of them.
   t.nodes_.resize(dims[0]);
-  for (std::size_t i = 0; i < dims[0]; ++i) {
-    const double* r = c.data() + i * kFields;
-    for (int f = 0; f < kFields; ++f) {
-      if (!std::isfinite(r[f])) {
-        throw std::invalid_argument(fmt::format(
-            "{}: dataset 'candidates' row {} column {} is not finite", path, i, f));
+  constexpr std::size_t kBlockRows = 8192;
+  std::vector<double> block;
+  for (std::size_t first = 0; first < dims[0]; first += kBlockRows) {
+    const std::size_t rows = std::min<std::size_t>(kBlockRows, dims[0] - first);
+    block.resize(rows * kFields);
+    file.read_rows("candidates", first, rows, block);
+    for (std::size_t i = first; i < first + rows; ++i) {
+      const double* r = block.data() + (i - first) * kFields;
+      for (int f = 0; f < kFields; ++f) {
+        if (!std::isfinite(r[f])) {
+          throw std::invalid_argument(fmt::format(
+              "{}: dataset 'candidates' row {} column {} is not finite", path, i, f));
+        }
       }
+      Candidate& s = t.nodes_[i];
+      s.side = r[0] == 1.0 ? Side::right : Side::left;
+      for (std::size_t k = 0; k < kColumns.size(); ++k) s.*kColumns[k] = r[k + 1];
     }
-    Candidate& s = t.nodes_[i];
-    s.side = r[0] == 1.0 ? Side::right : Side::left;
-    for (std::size_t k = 0; k < kColumns.size(); ++k) s.*kColumns[k] = r[k + 1];
   }
   t.finish();
   return t;

@@ -100,6 +100,12 @@ class H5File {
   [[nodiscard]] std::vector<double> read_vector(const std::string& dataset) const {
     return read_array(dataset);
   }
+  /// The dimensions of a dataset.
+  [[nodiscard]] Dims dimensions(const std::string& dataset) const;
+  /// Rows [first, first + rows) of a 2-D numeric dataset as float64 into `out` (rows x the
+  /// dataset's columns, row-major), so that a large table is read by blocks.
+  void read_rows(const std::string& dataset, std::uint64_t first, std::uint64_t rows,
+                 std::span<double> out) const;
   [[nodiscard]] std::string read_text(const std::string& dataset) const;
 
   /// Chunked, unlimited 1-D float64 dataset (empty), with `unit` and `description` attributes.
