@@ -25,17 +25,32 @@ namespace {
 std::atomic<long> g_news{0};
 }  // namespace
 
-// Replacements of the global allocation functions for this test program: counted, then malloc.
-void* operator new(std::size_t n) {
+// Replacements of the global allocation functions for this test program (every form that is not
+// over-aligned, so that whatever one form allocates another may free): counted, then malloc.
+namespace {
+void* counted_malloc(std::size_t n) noexcept {
   g_news.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  return std::malloc(n == 0 ? 1 : n);
+}
+}  // namespace
+// GCC takes free() in a replacement delete for a mismatch with the new it inlines beside it
+// (-Wmismatched-new-delete); these replacements pair malloc with free by construction.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t n) {
+  if (void* p = counted_malloc(n)) return p;
   throw std::bad_alloc();
 }
 void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return counted_malloc(n); }
+void* operator new[](std::size_t n, const std::nothrow_t&) noexcept { return counted_malloc(n); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 
 namespace ferro::vehicle {
 namespace {
