@@ -39,7 +39,9 @@ constexpr std::size_t kFirstWeighted = 2;
 constexpr std::size_t kEndWeighted = 11;
 static_assert(kColumns[kEndWeighted - 1] == &Candidate::curvature_b &&
               kColumns[kEndWeighted] == &Candidate::dgap_dlateral);
-constexpr double kFormatVersion = 2.0;
+// 3: no candidate where a wheel section meets no rail surface (older caches may hold such
+// candidates, A = inf, and are rebuilt).
+constexpr double kFormatVersion = 3.0;
 
 // Load share of a branch whose present corners carry the interpolation weight w in (0, 1]:
 // C1 smoothstep over w in [kFadeStart, 1 - kFadeStart], exactly 1 for a branch present at every
