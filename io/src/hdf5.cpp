@@ -70,6 +70,15 @@ hid_t check_id(hid_t id, const std::string& what, const std::string& file) {
   return id;
 }
 
+// The dimensions of a dataspace.
+std::vector<hsize_t> extent_of(hid_t space, const std::string& what, const std::string& file) {
+  const int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 0) fail(what, file);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  if (rank > 0) check(H5Sget_simple_extent_dims(space, dims.data(), nullptr), what, file);
+  return dims;
+}
+
 // RAII owner of one HDF5 identifier.
 class Id {
  public:
@@ -376,10 +385,7 @@ std::vector<double> H5File::read_array(const std::string& dataset, Dims* dims_ou
   const std::string what = "read dataset " + dataset;
   Id d(check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), what, path_), H5Dclose);
   Id space(check_id(H5Dget_space(d.get()), what, path_), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank < 0) fail(what, path_);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  if (rank > 0) check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), what, path_);
+  const std::vector<hsize_t> dims = extent_of(space.get(), what, path_);
   std::size_t count = 1;
   for (hsize_t n : dims) count *= static_cast<std::size_t>(n);
   std::vector<double> out(count);
@@ -395,10 +401,7 @@ Dims H5File::dimensions(const std::string& dataset) const {
   const std::string what = "read dimensions of " + dataset;
   Id d(check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), what, path_), H5Dclose);
   Id space(check_id(H5Dget_space(d.get()), what, path_), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(space.get());
-  if (rank < 0) fail(what, path_);
-  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-  if (rank > 0) check(H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr), what, path_);
+  const std::vector<hsize_t> dims = extent_of(space.get(), what, path_);
   return Dims(dims.begin(), dims.end());
 }
 
@@ -407,10 +410,8 @@ void H5File::read_rows(const std::string& dataset, std::uint64_t first, std::uin
   const std::string what = fmt::format("read rows {}-{} of {}", first, first + rows, dataset);
   Id d(check_id(H5Dopen2(id_, dataset.c_str(), H5P_DEFAULT), what, path_), H5Dclose);
   Id space(check_id(H5Dget_space(d.get()), what, path_), H5Sclose);
-  hsize_t dims[2] = {0, 0};
-  if (H5Sget_simple_extent_ndims(space.get()) != 2 ||
-      H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 || first + rows > dims[0] ||
-      out.size() != rows * dims[1]) {
+  const std::vector<hsize_t> dims = extent_of(space.get(), what, path_);
+  if (dims.size() != 2 || first + rows > dims[0] || out.size() != rows * dims[1]) {
     throw Hdf5Error(fmt::format("HDF5: {} in '{}': not a 2-D dataset holding those rows, or the "
                                 "buffer is not rows x columns",
                                 what, path_));
